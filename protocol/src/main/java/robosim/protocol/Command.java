@@ -1,0 +1,49 @@
+package robosim.protocol;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+/** A motion command of a robot, as ARIA's direct motion commands. Units: mm, mm/s, degrees, deg/s. */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "cmd")
+@JsonSubTypes({
+        @JsonSubTypes.Type(value = Command.SetVel.class, name = "vel"),
+        @JsonSubTypes.Type(value = Command.SetRotVel.class, name = "rotVel"),
+        @JsonSubTypes.Type(value = Command.SetVel2.class, name = "vel2"),
+        @JsonSubTypes.Type(value = Command.Move.class, name = "move"),
+        @JsonSubTypes.Type(value = Command.SetHeading.class, name = "heading"),
+        @JsonSubTypes.Type(value = Command.SetDeltaHeading.class, name = "deltaHeading"),
+        @JsonSubTypes.Type(value = Command.Stop.class, name = "stop"),
+        @JsonSubTypes.Type(value = Command.SetMaxTransVel.class, name = "maxVel"),
+        @JsonSubTypes.Type(value = Command.SetMaxRotVel.class, name = "maxRotVel"),
+})
+public sealed interface Command {
+    /** @param vel translational velocity, mm/s */
+    record SetVel(double vel) implements Command { }
+
+    /** @param rotVel rotational velocity, deg/s, positive counter-clockwise */
+    record SetRotVel(double rotVel) implements Command { }
+
+    /**
+     * @param left  left wheel velocity, mm/s
+     * @param right right wheel velocity, mm/s
+     */
+    record SetVel2(double left, double right) implements Command { }
+
+    /** @param distance mm to travel from the current pose; negative is backwards */
+    record Move(double distance) implements Command { }
+
+    /** @param heading absolute heading to turn to, degrees */
+    record SetHeading(double heading) implements Command { }
+
+    /** @param delta degrees to turn from the current heading */
+    record SetDeltaHeading(double delta) implements Command { }
+
+    /** Translational and rotational velocity to zero at once. */
+    record Stop() implements Command { }
+
+    /** @param vel new translational limit, mm/s, within the parameter file's maximum */
+    record SetMaxTransVel(double vel) implements Command { }
+
+    /** @param rotVel new rotational limit, deg/s, within the parameter file's maximum */
+    record SetMaxRotVel(double rotVel) implements Command { }
+}

@@ -1,0 +1,23 @@
+package robosim.protocol;
+
+import com.fasterxml.jackson.annotation.JsonSubTypes;
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
+
+/**
+ * Every message that crosses the wire between the Environment and its robots and viewers. One
+ * message is one frame (see {@link FrameReader}); the {@code type} property names the kind.
+ */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
+@JsonSubTypes({
+        @JsonSubTypes.Type(value = RobotHello.class, name = "robotHello"),
+        @JsonSubTypes.Type(value = Welcome.class, name = "welcome"),
+        @JsonSubTypes.Type(value = TimeStep.class, name = "timeStep"),
+        @JsonSubTypes.Type(value = RobotRequests.class, name = "robotRequests"),
+        @JsonSubTypes.Type(value = ViewerHello.class, name = "viewerHello"),
+        @JsonSubTypes.Type(value = WorldDescription.class, name = "world"),
+        @JsonSubTypes.Type(value = ViewerFrame.class, name = "frame"),
+        @JsonSubTypes.Type(value = Bye.class, name = "bye"),
+})
+public sealed interface Message
+        permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, ViewerFrame, Bye {
+}

@@ -1,0 +1,69 @@
+package robosim.protocol;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.exc.InvalidTypeIdException;
+import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+
+/**
+ * Turns messages into frame payloads and back, with Jackson. Smile (Jackson's binary JSON) is the
+ * wire format, chosen by measurement (see docs/BENCHMARKS.md); JSON is kept for debugging and for
+ * the comparison.
+ */
+public final class MessageCodec {
+    /** The payload encodings the codec speaks. */
+    public enum Format { SMILE, JSON }
+
+    private final ObjectMapper mapper;
+
+    /** A codec for the wire format, Smile. */
+    public MessageCodec() {
+        this(Format.SMILE);
+    }
+
+    /** @param format the payload encoding */
+    public MessageCodec(Format format) {
+        ObjectMapper m = format == Format.SMILE ? new SmileMapper() : new ObjectMapper();
+        m.enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
+        m.enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES);
+        this.mapper = m;
+    }
+
+    /**
+     * @param message the message
+     * @return its payload bytes
+     */
+    public byte[] encode(Message message) {
+        try {
+            return mapper.writeValueAsBytes(message);
+        } catch (JsonProcessingException e) {
+            throw new UncheckedIOException("cannot encode " + message.getClass().getSimpleName(), e);
+        }
+    }
+
+    /**
+     * @param payload a frame's payload
+     * @return the message it holds
+     * @throws FrameException if the payload is not a message of a known type
+     */
+    public Message decode(byte[] payload) throws FrameException {
+        try {
+            Message m = mapper.readValue(payload, Message.class);
+            if (m == null) {
+                throw new FrameException("empty message");
+            }
+            return m;
+        } catch (InvalidTypeIdException e) {
+            throw new FrameException("unknown message type '" + e.getTypeId() + "'");
+        } catch (JsonProcessingException e) {
+            throw new FrameException("undecodable frame of " + payload.length + " bytes: "
+                    + e.getOriginalMessage());
+        } catch (IOException e) {
+            throw new FrameException("undecodable frame of " + payload.length + " bytes: " + e.getMessage());
+        }
+    }
+
+}

@@ -1,0 +1,17 @@
+package robosim.protocol.params;
+
+import java.nio.file.Path;
+
+/** A robot parameter file broke a rule; the message names the file, the line and the rule. */
+public final class ParameterFileException extends RuntimeException {
+    private static final long serialVersionUID = 1L;
+
+    /**
+     * @param file the file read
+     * @param line the 1-based line, or 0 when the problem concerns the whole file
+     * @param rule what was wrong
+     */
+    public ParameterFileException(Path file, int line, String rule) {
+        super(line > 0 ? file + ":" + line + ": " + rule : file + ": " + rule);
+    }
+}
