@@ -49,7 +49,10 @@ public final class FrameReader {
         } catch (EOFException e) {
             throw new FrameException("stream ended inside a frame header");
         }
-        if (length <= 0 || length > maxFrame) {
+        if (length == 0) {
+            throw new FrameException("frame of 0 bytes: a frame holds at least 1 byte");
+        }
+        if (length < 0 || length > maxFrame) {
             throw new FrameException("frame of " + Integer.toUnsignedString(length)
                     + " bytes exceeds the limit of " + maxFrame + " bytes");
         }

@@ -57,6 +57,10 @@ public final class MessageCodec {
             }
             return m;
         } catch (InvalidTypeIdException e) {
+            if (e.getTypeId() == null) {
+                throw new FrameException("no message type in frame of " + payload.length + " bytes: "
+                        + e.getOriginalMessage());
+            }
             throw new FrameException("unknown message type '" + e.getTypeId() + "'");
         } catch (JsonProcessingException e) {
             throw new FrameException("undecodable frame of " + payload.length + " bytes: "

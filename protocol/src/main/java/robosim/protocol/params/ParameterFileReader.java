@@ -64,6 +64,7 @@ public final class ParameterFileReader {
         Integer sonarNum = null;
         int sonarNumLine = 0;
         Map<Integer, SonarUnit> sonars = new TreeMap<>();
+        Map<Integer, Integer> sonarLines = new HashMap<>();
         boolean versionSeen = false;
 
         for (int i = 0; i < lines.size(); i++) {
@@ -101,6 +102,7 @@ public final class ParameterFileReader {
                         throw new ParameterFileException(file, lineNo,
                                 "SonarUnit " + unit.index() + " is given twice");
                     }
+                    sonarLines.put(unit.index(), lineNo);
                 }
                 default -> {
                     if (DEFAULTS.containsKey(key)) {
@@ -118,6 +120,13 @@ public final class ParameterFileReader {
             throw new ParameterFileException(file, 0, "no 'ConfigVersion 2.0' line: not an ARIA parameter file");
         }
         int expected = sonarNum == null ? sonars.size() : sonarNum;
+        // a SonarUnit read before SonarNum escaped the index check; apply it now
+        for (int index : sonars.keySet()) {
+            if (sonarNum != null && index >= sonarNum) {
+                throw new ParameterFileException(file, sonarLines.get(index),
+                        "SonarUnit index " + index + " must be less than SonarNum " + sonarNum);
+            }
+        }
         for (int n = 0; n < expected; n++) {
             if (!sonars.containsKey(n)) {
                 throw new ParameterFileException(file, sonarNumLine,

@@ -1,0 +1,36 @@
+package robosim.aria;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import robosim.protocol.params.ParameterFileReader;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * Finds and reads a robot parameter file. A path that exists is read as given; a bare name such as
+ * {@code p3dx} or {@code p3dx.p} is also looked for in {@code testLoadFiles/robots/} under the
+ * RoboSim root (system property {@code robosim.root}, else the working directory).
+ */
+final class RobotParameterFiles {
+    private RobotParameterFiles() {
+    }
+
+    static RobotParameters load(String file) {
+        return ParameterFileReader.read(resolve(file));
+    }
+
+    static Path resolve(String file) {
+        Path given = Paths.get(file);
+        if (Files.isRegularFile(given)) {
+            return given;
+        }
+        String name = file.endsWith(".p") ? file : file + ".p";
+        Path root = Paths.get(System.getProperty("robosim.root", "."));
+        Path shipped = root.resolve("testLoadFiles").resolve("robots").resolve(name);
+        if (Files.isRegularFile(shipped)) {
+            return shipped;
+        }
+        throw new IllegalArgumentException("robot parameter file '" + file + "' not found (looked at "
+                + given.toAbsolutePath() + " and " + shipped.toAbsolutePath() + ")");
+    }
+}

@@ -1,0 +1,157 @@
+package robosim.env.core;
+
+import robosim.protocol.Command;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * The motion modes of a Pioneer's controller (see ARIA-SEMANTICS.md): what translational and
+ * rotational velocity the robot wants this step, given its commands and its pose. The velocities
+ * it gets are then limited by its accelerations in {@link SimRobot}.
+ *
+ * <p>Translation is one of: a velocity, a move by a distance, wheel velocities (which also
+ * decide rotation), or stopped. Rotation is one of: a velocity or holding a heading.
+ */
+final class DriveController {
+    /** The deceleration ARIA's move profile assumes, mm/s²: v = sqrt(2 · 200 · distance to go). */
+    static final double MOVE_PROFILE_DECEL = 200;
+    /** A move ends when less than this is left to go, mm. */
+    static final double MOVE_DONE = 0.5;
+    /** A heading is held when within this, degrees. */
+    static final double HEADING_DONE = 0.05;
+
+    private enum Trans { VEL, MOVE, VEL2 }
+
+    private enum Rot { VEL, HEADING, WHEELS }
+
+    private final RobotParameters params;
+    private double maxVel;
+    private double maxRotVel;
+    private Trans trans = Trans.VEL;
+    private Rot rot = Rot.VEL;
+    private double transVel;
+    private double rotVel;
+    private double left;
+    private double right;
+    private double moveStartX;
+    private double moveStartY;
+    private double moveDistance;
+    private double heading;
+    private boolean stopNow;
+
+    DriveController(RobotParameters params) {
+        this.params = params;
+        this.maxVel = params.maxVelocity();
+        this.maxRotVel = params.maxRVelocity();
+    }
+
+    /** Applies one command; the pose is the robot's pose as the command arrives. */
+    void apply(Command command, double x, double y, double th) {
+        if (command instanceof Command.SetVel c) {
+            trans = Trans.VEL;
+            transVel = c.vel();
+            releaseWheels();
+        } else if (command instanceof Command.SetRotVel c) {
+            rot = Rot.VEL;
+            rotVel = c.rotVel();
+            releaseTranslation();
+        } else if (command instanceof Command.SetVel2 c) {
+            trans = Trans.VEL2;
+            rot = Rot.WHEELS;
+            left = c.left();
+            right = c.right();
+        } else if (command instanceof Command.Move c) {
+            trans = Trans.MOVE;
+            moveStartX = x;
+            moveStartY = y;
+            moveDistance = c.distance();
+            releaseWheels();
+        } else if (command instanceof Command.SetHeading c) {
+            holdHeading(c.heading());
+        } else if (command instanceof Command.SetDeltaHeading c) {
+            holdHeading(th + c.delta());
+        } else if (command instanceof Command.Stop) {
+            stopNow = true;
+            trans = Trans.VEL;
+            rot = Rot.VEL;
+            transVel = 0;
+            rotVel = 0;
+        } else if (command instanceof Command.SetMaxTransVel c) {
+            maxVel = Math.max(0, Math.min(c.vel(), params.maxVelocity()));
+        } else if (command instanceof Command.SetMaxRotVel c) {
+            maxRotVel = Math.max(0, Math.min(c.rotVel(), params.maxRVelocity()));
+        }
+    }
+
+    private void holdHeading(double target) {
+        rot = Rot.HEADING;
+        heading = Angles.fix(target);
+        releaseTranslation();
+    }
+
+    /** Leaving wheel-velocity mode for rotation: translation keeps the wheels' mean speed. */
+    private void releaseTranslation() {
+        if (trans == Trans.VEL2) {
+            trans = Trans.VEL;
+            transVel = (left + right) / 2;
+        }
+    }
+
+    /** Leaving wheel-velocity mode for translation: rotation stops. */
+    private void releaseWheels() {
+        if (rot == Rot.WHEELS) {
+            rot = Rot.VEL;
+            rotVel = 0;
+        }
+    }
+
+    /**
+     * A stop halts the robot at once, bypassing the decelerations, as ARIA's STOP command does.
+     *
+     * @return whether a stop arrived since the last call
+     */
+    boolean takeStop() {
+        boolean s = stopNow;
+        stopNow = false;
+        return s;
+    }
+
+    /** The translational velocity wanted now, mm/s. */
+    double wantedVel(double x, double y, double dt) {
+        double v = switch (trans) {
+            case VEL -> transVel;
+            case VEL2 -> (left + right) / 2;
+            case MOVE -> {
+                double toGo = Math.abs(moveDistance) - Math.hypot(x - moveStartX, y - moveStartY);
+                if (toGo < MOVE_DONE) {
+                    trans = Trans.VEL;
+                    transVel = 0;
+                    yield 0;
+                }
+                double speed = Math.min(Math.sqrt(2 * MOVE_PROFILE_DECEL * toGo), toGo / dt);
+                yield Math.copySign(speed, moveDistance);
+            }
+        };
+        return clamp(v, maxVel);
+    }
+
+    /** The rotational velocity wanted now, deg/s. */
+    double wantedRotVel(double th, double dt, double rotDecel) {
+        double w = switch (rot) {
+            case VEL -> rotVel;
+            case WHEELS -> Math.toDegrees((right - left) * params.diffConvFactor());
+            case HEADING -> {
+                double err = Angles.fix(heading - th);
+                if (Math.abs(err) < HEADING_DONE) {
+                    yield 0;
+                }
+                double speed = Math.min(Math.sqrt(2 * rotDecel * Math.abs(err)), Math.abs(err) / dt);
+                yield Math.copySign(speed, err);
+            }
+        };
+        return clamp(w, maxRotVel);
+    }
+
+    private static double clamp(double v, double limit) {
+        return Math.max(-limit, Math.min(limit, v));
+    }
+}

@@ -1,0 +1,215 @@
+package robosim.env.core;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.locationtech.jts.geom.Polygon;
+import robosim.env.world.Obstacle;
+import robosim.env.world.RobotSpec;
+import robosim.env.world.World;
+import robosim.geometry.BodyShape;
+import robosim.geometry.GeometryClient;
+import robosim.geometry.Pose2D;
+import robosim.protocol.Command;
+import robosim.protocol.RobotState;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * The simulation core: the world, its robots, and one {@link #step} at a time. No sockets,
+ * threads, clocks or randomness; everything comes in as arguments, so a unit test can step it and
+ * two runs with the same commands give the same trajectories.
+ *
+ * <p>Each step: every robot's commands are applied, then the robots move one after another in the
+ * world file's order (each against the others' latest poses, so they can never overlap), then every
+ * robot's sonars are read.
+ */
+public final class Simulation {
+    private final World world;
+    private final List<Polygon> obstacles = new ArrayList<>();
+    private GeometryClient geometry;
+    private final Map<String, SimRobot> robots = new LinkedHashMap<>();
+    private long step;
+
+    /**
+     * @param world the world, with its robots at their start poses
+     */
+    public Simulation(World world) {
+        this.world = world;
+        for (Obstacle o : world.obstacles()) {
+            obstacles.add(GeometryClient.polygon(o.xy()));
+        }
+        rebuild(Map.of());
+        readSensors();
+    }
+
+    /** Rebuilds the geometry with each robot's body from its (possibly replaced) parameters. */
+    private void rebuild(Map<String, RobotParameters> replaced) {
+        Map<String, SimRobot> old = new LinkedHashMap<>(robots);
+        robots.clear();
+        geometry = new GeometryClient(obstacles);
+        for (RobotSpec spec : world.robots()) {
+            SimRobot prev = old.get(spec.name());
+            RobotParameters p = replaced.getOrDefault(spec.name(), prev != null ? prev.params : spec.parameters());
+            BodyShape body = SimRobot.bodyOf(p);
+            int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
+            SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, id, spec.x(), spec.y(), spec.th());
+            r.connected = prev != null && prev.connected;
+            robots.put(spec.name(), r);
+        }
+    }
+
+    /**
+     * Gives a robot the parameters its program sent, before the first step: its body, limits and
+     * sensor poses become the program's own.
+     *
+     * @param name   the robot
+     * @param params its parameters
+     * @throws IllegalStateException    if the run has started
+     * @throws IllegalArgumentException if the robot is unknown or its new body would overlap
+     *                                  something at its start pose
+     */
+    public void useParameters(String name, RobotParameters params) {
+        if (step > 0) {
+            throw new IllegalStateException("robot " + name + "'s parameters cannot change after step 0");
+        }
+        SimRobot r = robot(name);
+        if (r.params.equals(params)) {
+            return;
+        }
+        GeometryClient check = geometry;
+        BodyShape body = SimRobot.bodyOf(params);
+        if (check.overlaps(body, r.pose(), r.bodyId)) {
+            throw new IllegalArgumentException("robot " + name + " with its body of " + params.robotLength()
+                    + " x " + params.robotWidth() + " mm overlaps something at its start pose");
+        }
+        rebuild(Map.of(name, params));
+        readSensors();
+    }
+
+    /**
+     * Advances the world one step.
+     *
+     * @param commands each robot's commands for this step, by name; robots absent keep their commands
+     */
+    public void step(Map<String, List<Command>> commands) {
+        for (SimRobot r : robots.values()) {
+            List<Command> c = commands.get(r.name);
+            if (c != null) {
+                r.apply(c);
+            }
+        }
+        double dt = world.stepMs() / 1000.0;
+        for (SimRobot r : robots.values()) {
+            r.move(geometry, dt);
+        }
+        step++;
+        readSensors();
+    }
+
+    private void readSensors() {
+        for (SimRobot r : robots.values()) {
+            r.readSonar(geometry);
+        }
+    }
+
+    /**
+     * Stops a robot whose program has left, so it stays where it is as an obstacle.
+     *
+     * @param name the robot
+     */
+    public void halt(String name) {
+        robot(name).apply(List.of(new Command.Stop()));
+    }
+
+    /** @return the number of steps taken */
+    public long stepCount() {
+        return step;
+    }
+
+    /** @return simulated time in ms */
+    public long timeMs() {
+        return step * world.stepMs();
+    }
+
+    /** @return the world simulated */
+    public World world() {
+        return world;
+    }
+
+    /** @return the robots' names, in the world file's order */
+    public List<String> robotNames() {
+        return Collections.unmodifiableList(new ArrayList<>(robots.keySet()));
+    }
+
+    /**
+     * @param name a robot
+     * @return what it knows of itself now
+     */
+    public RobotState state(String name) {
+        return robot(name).state(step, timeMs());
+    }
+
+    /**
+     * @param name a robot
+     * @return its true pose, distance travelled and collisions
+     */
+    public RobotSummary summary(String name) {
+        SimRobot r = robot(name);
+        return new RobotSummary(r.name, r.x(), r.y(), r.th(), r.distance(), r.collisions(), r.stalled());
+    }
+
+    /**
+     * Marks a robot's program as connected or not, for viewers.
+     *
+     * @param name      the robot
+     * @param connected whether its program is connected
+     */
+    public void setConnected(String name, boolean connected) {
+        robot(name).connected = connected;
+    }
+
+    /** @return the moving parts of the world now, for viewers */
+    public ViewerFrame frame() {
+        List<ViewerFrame.RobotView> views = new ArrayList<>();
+        for (SimRobot r : robots.values()) {
+            views.add(new ViewerFrame.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected, r.sonar()));
+        }
+        return new ViewerFrame(step, timeMs(), views);
+    }
+
+    /** @return the static world, for viewers */
+    public WorldDescription description() {
+        List<WorldDescription.Obstacle> obs = new ArrayList<>();
+        for (Obstacle o : world.obstacles()) {
+            obs.add(new WorldDescription.Obstacle(o.xy(), o.height()));
+        }
+        List<WorldDescription.RobotInfo> infos = new ArrayList<>();
+        for (SimRobot r : robots.values()) {
+            infos.add(new WorldDescription.RobotInfo(r.name, r.type, r.params));
+        }
+        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos);
+    }
+
+    /**
+     * Whether a robot's body, where it stands, overlaps an obstacle or another robot.
+     *
+     * @param name the robot
+     * @return true if it does
+     */
+    public boolean overlapsAnything(String name) {
+        SimRobot r = robot(name);
+        return geometry.overlaps(r.body, r.pose(), r.bodyId);
+    }
+
+    private SimRobot robot(String name) {
+        SimRobot r = robots.get(name);
+        if (r == null) {
+            throw new IllegalArgumentException("no robot named '" + name + "' in world " + world.name());
+        }
+        return r;
+    }
+}

@@ -1,0 +1,19 @@
+package robosim.env.net;
+
+import java.util.List;
+import robosim.env.core.RobotSummary;
+
+/**
+ * How a run ended.
+ *
+ * @param steps     steps simulated
+ * @param timeMs    simulated time, ms
+ * @param endReason why it ended
+ * @param robots    every robot at the end, in the world file's order
+ */
+public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots) {
+    /** Copies the list so the record stays immutable. */
+    public RunReport {
+        robots = List.copyOf(robots);
+    }
+}

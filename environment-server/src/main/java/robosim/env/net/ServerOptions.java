@@ -1,0 +1,62 @@
+package robosim.env.net;
+
+/**
+ * How an {@link EnvironmentServer} runs.
+ *
+ * @param bindAddress      address to listen on, normally 127.0.0.1
+ * @param robotPort        port for robots, 0 for any free one
+ * @param viewerPort       port for viewers, 0 for any free one
+ * @param maxSteps         stop after this many steps; 0 runs until every robot has left
+ * @param realtime         pace steps at the world's step length instead of as fast as possible
+ * @param stepTimeoutMs    how long to wait for a robot's requests before disconnecting it
+ * @param connectTimeoutMs how long to wait for the world's robots (and viewers) to connect
+ * @param waitViewers      viewers to wait for before the first step
+ * @param maxFrame         largest frame accepted, bytes
+ */
+public record ServerOptions(String bindAddress, int robotPort, int viewerPort, long maxSteps, boolean realtime,
+                            long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame) {
+
+    /** Checks every value; a bad one is named with the rule it breaks. */
+    public ServerOptions {
+        port("robotPort", robotPort);
+        port("viewerPort", viewerPort);
+        atLeast("maxSteps", maxSteps, 0);
+        atLeast("stepTimeoutMs", stepTimeoutMs, 1);
+        atLeast("connectTimeoutMs", connectTimeoutMs, 1);
+        atLeast("waitViewers", waitViewers, 0);
+        atLeast("maxFrame", maxFrame, 64);
+    }
+
+    /**
+     * Defaults for tests and tools: loopback, any free ports, as fast as possible.
+     *
+     * @return the options
+     */
+    public static ServerOptions loopback() {
+        return new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 60_000, 0, 4 << 20);
+    }
+
+    /** @param steps the step limit @return a copy with it */
+    public ServerOptions withMaxSteps(long steps) {
+        return new ServerOptions(bindAddress, robotPort, viewerPort, steps, realtime, stepTimeoutMs,
+                connectTimeoutMs, waitViewers, maxFrame);
+    }
+
+    /** @param viewers viewers to wait for @return a copy with it */
+    public ServerOptions withWaitViewers(int viewers) {
+        return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
+                connectTimeoutMs, viewers, maxFrame);
+    }
+
+    private static void port(String name, int value) {
+        if (value < 0 || value > 65535) {
+            throw new IllegalArgumentException(value + " was supplied for " + name + ": a port is 0 to 65535");
+        }
+    }
+
+    private static void atLeast(String name, long value, long min) {
+        if (value < min) {
+            throw new IllegalArgumentException(value + " was supplied for " + name + ": it must be at least " + min);
+        }
+    }
+}

@@ -1,0 +1,226 @@
+package robosim.env.net;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.logging.Logger;
+import robosim.env.core.Simulation;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.Message;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.Welcome;
+
+/**
+ * The protocol's rules for each peer, applied by the step loop: who may say what and when. A robot
+ * says hello once, with a name the world knows and no other program is using, before the first
+ * step; then sends exactly one set of requests for each step the Environment opens. A viewer says
+ * hello and then only listens. Anything else closes that peer, with a log line naming it and the
+ * rule.
+ */
+final class SessionRules {
+    private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
+
+    private final Simulation sim;
+    private final Map<String, Connection> robots = new LinkedHashMap<>();
+    private final List<Connection> viewers = new ArrayList<>();
+    private final Set<String> waiting = new LinkedHashSet<>();
+    private long openStep;
+    private Map<String, List<Command>> commands;
+
+    SessionRules(Simulation sim) {
+        this.sim = sim;
+    }
+
+    boolean allConnected() {
+        return robots.size() == sim.robotNames().size();
+    }
+
+    List<String> missing() {
+        List<String> m = new ArrayList<>(sim.robotNames());
+        m.removeAll(robots.keySet());
+        return m;
+    }
+
+    int viewerCount() {
+        return viewers.size();
+    }
+
+    Map<String, Connection> connectedRobots() {
+        return robots;
+    }
+
+    Set<String> waitingFor() {
+        return waiting;
+    }
+
+    void openStep(long step, Map<String, List<Command>> into) {
+        openStep = step;
+        commands = into;
+        waiting.clear();
+        waiting.addAll(robots.keySet());
+    }
+
+    void closeStep() {
+        openStep = 0;
+        commands = null;
+        waiting.clear();
+    }
+
+    void broadcastFrame(ViewerFrame frame) {
+        viewers.removeIf(Connection::isClosed);
+        for (Connection v : viewers) {
+            v.send(frame);
+        }
+    }
+
+    void handle(ServerEvent event) {
+        if (event instanceof ServerEvent.Received r) {
+            if (r.from().kind == Connection.Kind.ROBOT) {
+                fromRobot(r.from(), r.message());
+            } else {
+                fromViewer(r.from(), r.message());
+            }
+        } else if (event instanceof ServerEvent.Closed c) {
+            closed(c.from(), c.reason());
+        }
+    }
+
+    private void fromRobot(Connection c, Message m) {
+        if (c.isClosed()) {
+            return;
+        }
+        if (c.name() == null) {
+            if (m instanceof RobotHello hello) {
+                hello(c, hello);
+            } else {
+                c.close("expected robotHello as its first message, got " + typeOf(m));
+            }
+        } else if (m instanceof RobotRequests req) {
+            requests(c, req);
+        } else if (m instanceof Bye bye) {
+            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            drop(c.name(), null);
+        } else {
+            c.close("sent " + typeOf(m) + " during step " + openStep + "; a robot sends only robotRequests");
+        }
+    }
+
+    private void hello(Connection c, RobotHello hello) {
+        String refusal = refusal(hello);
+        if (refusal == null) {
+            try {
+                sim.useParameters(hello.name(), hello.parameters());
+            } catch (IllegalArgumentException e) {
+                refusal = e.getMessage();
+            }
+        }
+        if (refusal != null) {
+            LOG.warning("refusing robot " + hello.name() + ": " + refusal);
+            c.sendAndClose(new Bye("refused: " + refusal));
+            return;
+        }
+        c.setName(hello.name());
+        robots.put(hello.name(), c);
+        sim.setConnected(hello.name(), true);
+        c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
+        LOG.info(() -> "robot " + hello.name() + " connected");
+    }
+
+    private String refusal(RobotHello hello) {
+        if (hello.name() == null || !sim.robotNames().contains(hello.name())) {
+            return "world " + sim.world().name() + " has no robot named '" + hello.name() + "'";
+        }
+        String declared = sim.world().robots().stream().filter(r -> r.name().equals(hello.name()))
+                .findFirst().orElseThrow().type();
+        if (!declared.equalsIgnoreCase(hello.robotType())) {
+            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + hello.robotType();
+        }
+        if (robots.containsKey(hello.name())) {
+            return "robot " + hello.name() + " is already connected";
+        }
+        if (sim.stepCount() > 0 || openStep > 0) {
+            return "the run has started";
+        }
+        if (hello.parameters() == null) {
+            return "robot " + hello.name() + " sent no parameters";
+        }
+        return null;
+    }
+
+    private void requests(Connection c, RobotRequests req) {
+        if (req.step() != openStep || !waiting.contains(c.name())) {
+            String open = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+                    : waiting.contains(c.name()) ? "while step " + openStep + " is open"
+                    : "after it had already sent its requests for step " + openStep;
+            c.close("robot " + c.name() + " sent requests for step " + req.step() + " " + open);
+            drop(c.name(), null);
+            return;
+        }
+        commands.put(c.name(), req.commands());
+        waiting.remove(c.name());
+    }
+
+    private void fromViewer(Connection c, Message m) {
+        if (c.isClosed()) {
+            return;
+        }
+        if (c.name() == null && m instanceof ViewerHello hello) {
+            c.setName(hello.name());
+            viewers.add(c);
+            c.send(sim.description());
+            c.send(sim.frame());
+            LOG.info(() -> "viewer " + hello.name() + " attached at step " + sim.stepCount());
+        } else {
+            c.close("sent " + typeOf(m) + "; a viewer sends only viewerHello, once");
+        }
+    }
+
+    private void closed(Connection c, String reason) {
+        if (c.kind == Connection.Kind.VIEWER) {
+            viewers.remove(c);
+            if (!"it disconnected".equals(reason)) {
+                c.close(reason);
+            }
+            return;
+        }
+        String name = c.name();
+        if (name != null && robots.get(name) == c) {
+            drop(name, "it disconnected".equals(reason) ? null : reason);
+            if ("it disconnected".equals(reason)) {
+                LOG.info(() -> "robot " + name + " disconnected at step " + sim.stepCount());
+            }
+        } else if (!"it disconnected".equals(reason)) {
+            c.close(reason);
+        }
+    }
+
+    /**
+     * Takes a robot out of the run: its connection is closed and its body stays where it stopped.
+     *
+     * @param reason logged with the robot's name, or null for an orderly leave
+     */
+    void drop(String name, String reason) {
+        Connection c = robots.remove(name);
+        waiting.remove(name);
+        sim.halt(name);
+        sim.setConnected(name, false);
+        if (c != null) {
+            if (reason != null) {
+                c.close(reason);
+            } else {
+                c.sendAndClose(new Bye("goodbye"));
+            }
+        }
+    }
+
+    private static String typeOf(Message m) {
+        return m.getClass().getSimpleName();
+    }
+}

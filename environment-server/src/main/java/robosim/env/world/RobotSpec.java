@@ -1,0 +1,34 @@
+package robosim.env.world;
+
+import java.nio.file.Path;
+import robosim.geometry.BodyShape;
+import robosim.geometry.Pose2D;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * A robot that must connect before the run starts, with its start pose and the parameters read
+ * from its parameter file (which give it its size).
+ *
+ * @param name          unique within the world; the robot connects under this name
+ * @param type          the robot API it is written against; {@code pioneer} for now
+ * @param x             start x of the centre of rotation, mm
+ * @param y             start y of the centre of rotation, mm
+ * @param th            start heading, degrees, counter-clockwise from +x
+ * @param parameterFile the robot parameter file, resolved against the world file's directory
+ * @param parameters    what the parameter file says
+ * @param line          the 1-based line of its {@code <robot>} element in the world file
+ */
+public record RobotSpec(String name, String type, double x, double y, double th,
+                        Path parameterFile, RobotParameters parameters, int line) {
+
+    /** @return the robot's body: the rectangle its parameter file gives */
+    public BodyShape body() {
+        return BodyShape.rectangle(parameters.robotLengthFront(), parameters.robotLengthRear(),
+                parameters.robotWidth());
+    }
+
+    /** @return the start pose, with the heading in radians as {@link Pose2D} has it */
+    public Pose2D pose() {
+        return new Pose2D(x, y, Math.toRadians(th));
+    }
+}

@@ -1,0 +1,63 @@
+package robosim.env.world;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Reads a world file (see {@code docs/WORLD-FORMAT.md}) into a {@link World}, checking every
+ * rule of the format. The first broken rule stops reading with a {@link WorldFileException} that
+ * names the file, the line of the offending element and the rule.
+ */
+public final class WorldReader {
+    /** Step length of a world without a {@code stepMs} attribute, ms. */
+    public static final int DEFAULT_STEP_MS = 100;
+
+    private WorldReader() {
+    }
+
+    /**
+     * Reads and checks a world file, and the robot parameter files it names.
+     *
+     * @param file the world file
+     * @return the world
+     * @throws WorldFileException if the file cannot be read or breaks a rule of the format
+     */
+    public static World read(Path file) {
+        WorldElement root = ElementReader.read(file);
+        Attributes attributes = new Attributes(file);
+        String name = attributes.text(root, "name", root.name);
+        double width = attributes.positive(root, "width", root.width);
+        double height = attributes.positive(root, "height", root.height);
+        int stepMs = attributes.wholeNumber(root, "stepMs", root.stepMs, DEFAULT_STEP_MS, 1, 10_000);
+        boolean boundary = attributes.bool(root, "boundary", root.boundary, false);
+
+        List<Obstacle> obstacles = new ArrayList<>();
+        List<String> obstacleNames = new ArrayList<>();
+        if (boundary) {
+            for (Obstacle wall : ObstacleFactory.boundary(width, height, root.line())) {
+                obstacles.add(wall);
+                obstacleNames.add("a boundary wall");
+            }
+        }
+        ObstacleFactory shapes = new ObstacleFactory(attributes);
+        List<RobotElement> robotElements = new ArrayList<>();
+        for (Element child : root.children) {
+            if (child instanceof WallElement wall) {
+                obstacles.add(shapes.wall(wall));
+                obstacleNames.add("the wall at line " + wall.line());
+            } else if (child instanceof PolygonElement polygon) {
+                obstacles.add(shapes.polygon(polygon));
+                obstacleNames.add("the polygon at line " + polygon.line());
+            } else {
+                robotElements.add((RobotElement) child);
+            }
+        }
+        RobotPlacer placer = new RobotPlacer(attributes, width, height, obstacles, obstacleNames);
+        List<RobotSpec> robots = new ArrayList<>();
+        for (RobotElement robot : robotElements) {
+            robots.add(placer.place(robot));
+        }
+        return new World(name, file, width, height, stepMs, obstacles, robots);
+    }
+}

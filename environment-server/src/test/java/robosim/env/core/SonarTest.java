@@ -1,0 +1,74 @@
+package robosim.env.core;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import robosim.protocol.Command;
+
+class SonarTest {
+    @Test
+    void frontSonarsMeasureFromTheirTransducerToTheNearestPointInTheirCone() {
+        // wall face at x = 3000, robot centre at x = 1000 facing it
+        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
+                Worlds.robot("r", 1000, 5000, 0)));
+        int[] sonar = sim.state("r").sonar();
+        // sonars 3 and 4 sit 166 mm ahead at ±10°; their cones (±15°) contain the wall's normal
+        assertEquals(2000 - 166, sonar[3]);
+        assertEquals(2000 - 166, sonar[4]);
+        // sonar 2 at 148 mm, 30°: the cone's nearest edge is at 15°, so (2000 - 148) / cos 15°
+        assertEquals(Math.round((2000 - 148) / Math.cos(Math.toRadians(15))), sonar[2]);
+        // rear sonars see nothing within 5000 mm except the world has no walls behind: maximum
+        assertEquals(5000, sonar[11]);
+    }
+
+    @Test
+    void echoesNearerThanTheMinimumReadTheMinimum() {
+        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(1250, 0, 1350, 10000)),
+                Worlds.robot("r", 1000, 5000, 0)));
+        assertEquals(SimRobot.SONAR_MIN_RANGE, sim.state("r").sonar()[3]);
+    }
+
+    @Test
+    void rearSonarsSeeAWallShrinkWhileDrivingBackwards() {
+        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(0, 0, 100, 10000)),
+                Worlds.robot("r", 2000, 5000, 0)));
+        int before = sim.state("r").sonar()[11];
+        sim.step(Map.of("r", List.of(new Command.SetVel(-400))));
+        for (int i = 0; i < 20; i++) {
+            sim.step(Map.of());
+        }
+        int after = sim.state("r").sonar()[11];
+        assertEquals(2000 - 100 - 255, before, 1);
+        assertEquals(Math.round(sim.state("r").x() - 100 - 255), after, 1);
+    }
+
+    @Test
+    void theSameCommandsGiveTheSameTrajectory() {
+        int[][] a = trajectory();
+        int[][] b = trajectory();
+        for (int i = 0; i < a.length; i++) {
+            assertArrayEquals(a[i], b[i], "step " + i);
+        }
+    }
+
+    private static int[][] trajectory() {
+        Simulation sim = new Simulation(Worlds.world(6000, 6000, List.of(Worlds.box(2500, 2500, 3500, 3500)),
+                Worlds.robot("a", 1000, 1000, 30), Worlds.robot("b", 5000, 5000, -150)));
+        int[][] out = new int[200][];
+        for (int i = 0; i < 200; i++) {
+            Map<String, List<Command>> cmds = i % 40 == 0
+                    ? Map.of("a", List.of(new Command.SetVel(400), new Command.SetRotVel(i % 80 == 0 ? 10 : -10)),
+                    "b", List.of(new Command.Move(800)))
+                    : Map.of();
+            sim.step(cmds);
+            var s = sim.state("a");
+            var t = sim.state("b");
+            out[i] = new int[] {(int) Math.round(s.x() * 1000), (int) Math.round(s.y() * 1000),
+                    (int) Math.round(t.x() * 1000), (int) Math.round(t.y() * 1000), s.sonar()[3], t.sonar()[4]};
+        }
+        return out;
+    }
+}

@@ -1,0 +1,193 @@
+package robosim.hw;
+
+import java.io.IOException;
+import java.util.logging.Logger;
+import robosim.protocol.Command;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotState;
+import robosim.protocol.Welcome;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * What every Robot-Object shares, whatever its API (ARIA's Pioneer, the Nomadic Scout): its name,
+ * its link to the Environment, the latest state the Environment reported, its request queue, and
+ * waiting in simulated time.
+ *
+ * <p>The thread that connects, and every thread that waits with {@link #sleepSimulated}, is part of
+ * the robot's code: each step the robot's requests are sent once all of them have yielded, which
+ * keeps runs deterministic.
+ */
+public abstract class AbstractRobot {
+    private static final Logger LOG = Logger.getLogger(AbstractRobot.class.getName());
+    private static final InheritableThreadLocal<AbstractRobot> CURRENT = new InheritableThreadLocal<>();
+
+    private final String name;
+    private final String host;
+    private final int port;
+    private final String robotType;
+    private final RobotParameters parameters;
+    private final StepGate gate = new StepGate();
+    private volatile RobotState state;
+    private volatile int stepMs = 100;
+    private HardwareSimulator hardware;
+    private volatile String connectionError;
+
+    /**
+     * @param name       the robot's name in the world
+     * @param host       the Environment's host
+     * @param port       the Environment's robot port
+     * @param robotType  the robot's type, for example {@code pioneer}
+     * @param parameters the robot's parameters, sent to the Environment
+     */
+    protected AbstractRobot(String name, String host, int port, String robotType, RobotParameters parameters) {
+        if (port <= 0 || port > 65535) {
+            throw new IllegalArgumentException(port + " was supplied for port: a port is 1 to 65535");
+        }
+        this.name = name;
+        this.host = host;
+        this.port = port;
+        this.robotType = robotType;
+        this.parameters = parameters;
+    }
+
+    /**
+     * The robot the calling thread belongs to: the one it (or the thread that started it) connected.
+     *
+     * @return the robot, or null for a thread outside any robot's code
+     */
+    public static AbstractRobot current() {
+        return CURRENT.get();
+    }
+
+    /**
+     * Connects to the Environment and waits for its welcome; the calling thread becomes part of the
+     * robot's code.
+     *
+     * @param options timeouts
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    protected void connect(HardwareOptions options) throws IOException {
+        hardware = new HardwareSimulator(new RobotHello(name, robotType, parameters), gate,
+                r -> onResponse(r), options);
+        Welcome w = hardware.connect(host, port);
+        stepMs = w.stepMs();
+        state = w.state();
+        welcomed(w.state());
+        gate.join(Thread.currentThread());
+        CURRENT.set(this);
+        hardware.start();
+    }
+
+    /**
+     * Called once when the Environment has welcomed the robot, before the first step.
+     *
+     * @param initial the robot's state before the first step
+     */
+    protected void welcomed(RobotState initial) {
+    }
+
+    private void onResponse(RobotSensorResponse r) {
+        state = r.state();
+        responded(r);
+    }
+
+    /**
+     * Called on the hardware thread as each step's response arrives, while the robot's code is
+     * yielded; subclasses update what their getters read.
+     *
+     * @param response the step's response
+     */
+    protected void responded(RobotSensorResponse response) {
+    }
+
+    /** @param reason why connecting failed, for the robot's program to read */
+    protected void setConnectionError(String reason) {
+        connectionError = reason;
+        LOG.warning(() -> "robot " + name + " could not connect: " + reason);
+    }
+
+    /** @return why the last connection attempt failed, or null */
+    public String getConnectionError() {
+        return connectionError;
+    }
+
+    /** Leaves the run. */
+    public void disconnect() {
+        if (hardware != null && isConnected()) {
+            hardware.disconnect("the robot's program disconnected");
+        }
+    }
+
+    /** @return whether the robot is connected to the Environment */
+    public boolean isConnected() {
+        return hardware != null && !gate.isClosed();
+    }
+
+    /**
+     * Queues a motion command for the current step.
+     *
+     * @param command the command
+     */
+    protected void request(Command command) {
+        if (hardware != null) {
+            hardware.request(new RobotRequest(command));
+        }
+    }
+
+    /**
+     * Yields the calling thread for {@code ms} of simulated time, at least one step.
+     *
+     * @param ms simulated milliseconds
+     */
+    public void sleepSimulated(long ms) {
+        if (!isConnected()) {
+            return;
+        }
+        long wake = gate.timeMs() + Math.max(ms, 1);
+        try {
+            gate.await(t -> t >= wake);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** @return the latest state the Environment reported */
+    protected RobotState state() {
+        return state;
+    }
+
+    /** @return the robot's name */
+    public String getName() {
+        return name;
+    }
+
+    /** @return the robot's parameters */
+    public RobotParameters getParameters() {
+        return parameters;
+    }
+
+    /** @return the step length, simulated ms */
+    public int getStepMs() {
+        return stepMs;
+    }
+
+    /** @return simulated time of the latest state, ms */
+    public long getSimTimeMs() {
+        return gate.timeMs();
+    }
+
+    /** @return the step of the latest state */
+    public long getStep() {
+        return gate.step();
+    }
+
+    /** @return the Environment's host */
+    public String getHost() {
+        return host;
+    }
+
+    /** @return the Environment's robot port */
+    public int getPort() {
+        return port;
+    }
+}

@@ -1,0 +1,187 @@
+package robosim.hw;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.Consumer;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.Message;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.TimeStep;
+import robosim.protocol.Welcome;
+
+/**
+ * A robot's link to the Environment, one thread per robot. Each step it receives the time step and
+ * the responses, hands them to the Robot-Object through the {@link StepGate}, waits until the
+ * robot's code has yielded, then drains the {@code robotRequestQueue} and sends those requests as
+ * the robot's requests for the step.
+ */
+public final class HardwareSimulator {
+    private static final Logger LOG = Logger.getLogger(HardwareSimulator.class.getName());
+
+    private final RobotHello hello;
+    private final StepGate gate;
+    private final Consumer<RobotSensorResponse> responses;
+    private final Queue<RobotRequest> robotRequestQueue = new ConcurrentLinkedQueue<>();
+    private final MessageCodec codec = new MessageCodec();
+    private final HardwareOptions options;
+    private Socket socket;
+    private FrameWriter writer;
+    private FrameReader reader;
+    private Thread thread;
+    private volatile String endReason;
+
+    /**
+     * @param hello     the robot's name, type and parameters
+     * @param gate      where the robot's code yields
+     * @param responses receives each step's response, inside the gate's lock
+     * @param options   timeouts
+     */
+    public HardwareSimulator(RobotHello hello, StepGate gate, Consumer<RobotSensorResponse> responses,
+                             HardwareOptions options) {
+        this.hello = hello;
+        this.gate = gate;
+        this.responses = responses;
+        this.options = options;
+    }
+
+    /**
+     * Connects, says hello and waits (bounded) for the Environment's welcome.
+     *
+     * @param host the Environment's host
+     * @param port its robot port
+     * @return the welcome, with the robot's state before the first step
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    public Welcome connect(String host, int port) throws IOException {
+        socket = new Socket();
+        try {
+            socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
+            socket.setTcpNoDelay(true);
+            socket.setSoTimeout((int) options.connectTimeoutMs());
+            reader = new FrameReader(socket.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
+            writer = new FrameWriter(socket.getOutputStream(), codec);
+            writer.write(hello);
+            Message first = reader.read();
+            if (first instanceof Welcome w) {
+                socket.setSoTimeout((int) options.stepReadTimeoutMs());
+                return w;
+            }
+            throw new IOException(first instanceof Bye bye ? "the Environment at " + host + ":" + port + " "
+                    + bye.reason() : "the Environment at " + host + ":" + port + " answered " + describe(first));
+        } catch (IOException e) {
+            socket.close();
+            throw e;
+        }
+    }
+
+    /** Starts the robot's hardware thread; call after {@link #connect}. */
+    public void start() {
+        thread = new Thread(this::run, "hw-" + hello.name());
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** @param request a request of the robot's code, sent with the current step's requests */
+    public void request(RobotRequest request) {
+        robotRequestQueue.add(request);
+    }
+
+    /** @return why the connection ended, or null while connected */
+    public String endReason() {
+        return endReason;
+    }
+
+    /**
+     * Leaves the run: says bye and closes.
+     *
+     * @param reason for the Environment's log
+     */
+    public void disconnect(String reason) {
+        try {
+            writer.write(new Bye(reason));
+        } catch (IOException e) {
+            LOG.log(Level.FINE, "bye not sent", e);
+        }
+        end("disconnected: " + reason);
+    }
+
+    private void run() {
+        String reason = "the Environment closed the connection";
+        try {
+            Message m;
+            while ((m = reader.read()) != null) {
+                if (m instanceof TimeStep ts) {
+                    if (!step(ts)) {
+                        reason = "the robot's code has ended";
+                        writer.write(new Bye(reason));
+                        break;
+                    }
+                } else if (m instanceof Bye bye) {
+                    reason = "the Environment said " + bye.reason();
+                    break;
+                } else {
+                    reason = "the Environment sent " + describe(m);
+                    break;
+                }
+            }
+        } catch (SocketTimeoutException e) {
+            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
+        } catch (IOException e) {
+            reason = endReason != null ? endReason : e.getMessage();
+        } catch (InterruptedException e) {
+            reason = "interrupted";
+            Thread.currentThread().interrupt();
+        }
+        end(reason);
+    }
+
+    private boolean step(TimeStep ts) throws IOException, InterruptedException {
+        RobotSensorResponse r = new RobotSensorResponse(ts.state());
+        gate.advance(ts.state().step(), ts.state().timeMs(), () -> responses.accept(r));
+        int alive;
+        while ((alive = gate.awaitYield(options.yieldWarningMs())) < 0) {
+            LOG.warning(() -> "robot " + hello.name() + "'s code has not yielded for step " + ts.step()
+                    + " after " + options.yieldWarningMs() + " ms; it should wait with ArUtil.sleep or a blocking call");
+        }
+        if (alive == 0 || gate.isClosed()) {
+            return false;
+        }
+        List<Command> commands = new ArrayList<>();
+        RobotRequest req;
+        while ((req = robotRequestQueue.poll()) != null) {
+            commands.add(req.command());
+        }
+        writer.write(new RobotRequests(ts.step(), commands));
+        return true;
+    }
+
+    private void end(String reason) {
+        if (endReason == null) {
+            endReason = reason;
+            LOG.fine(() -> "robot " + hello.name() + ": " + reason);
+        }
+        gate.close();
+        try {
+            socket.close();
+        } catch (IOException e) {
+            LOG.log(Level.FINE, "closing", e);
+        }
+    }
+
+    private static String describe(Message m) {
+        return m == null ? "nothing (the connection closed)" : "an unexpected " + m.getClass().getSimpleName();
+    }
+}

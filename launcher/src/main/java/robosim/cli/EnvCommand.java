@@ -1,0 +1,100 @@
+package robosim.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+import robosim.env.core.RobotSummary;
+import robosim.env.core.Simulation;
+import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.env.world.World;
+import robosim.env.world.WorldFileException;
+import robosim.env.world.WorldReader;
+
+/** {@code robosim env}: loads a world, waits for its robots, runs the lockstep steps. */
+@Command(name = "env", mixinStandardHelpOptions = true,
+        description = "Run the Environment: load WORLD, wait for the robots it names, run, print each robot's end.")
+final class EnvCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "WORLD", description = "the world file (XML)")
+    Path world;
+
+    @Option(names = "--port", defaultValue = "5000", description = "port for robots (0: any free port); default ${DEFAULT-VALUE}")
+    int port;
+
+    @Option(names = "--viewer-port", defaultValue = "3000", description = "port for viewers (0: any free port); default ${DEFAULT-VALUE}")
+    int viewerPort;
+
+    @Option(names = "--bind", defaultValue = "127.0.0.1", description = "address to listen on; default ${DEFAULT-VALUE}")
+    String bind;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed of the run's randomness; default ${DEFAULT-VALUE}")
+    long seed;
+
+    @Option(names = "--steps", defaultValue = "0", description = "steps to run; 0 runs until every robot has disconnected")
+    long steps;
+
+    @Option(names = "--realtime", description = "pace steps at the world's step length instead of as fast as possible")
+    boolean realtime;
+
+    @Option(names = "--step-timeout", defaultValue = "10000", description = "ms to wait for a robot's requests before dropping it; default ${DEFAULT-VALUE}")
+    long stepTimeoutMs;
+
+    @Option(names = "--connect-timeout", defaultValue = "600", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
+    long connectTimeoutS;
+
+    @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
+    int waitViewers;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        World w;
+        try {
+            w = WorldReader.read(world);
+        } catch (WorldFileException e) {
+            err.println("robosim env: " + e.getMessage());
+            return 1;
+        }
+        ServerOptions options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
+                connectTimeoutS * 1000, waitViewers, 4 << 20);
+        Simulation sim = new Simulation(w);
+        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
+            server.bind();
+            out.printf(Locale.ROOT, "Seed: %d%n", seed);
+            out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,
+                    server.robotPort(), bind, server.viewerPort());
+            out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
+            out.flush();
+            RunReport report;
+            try {
+                report = server.run();
+            } catch (IllegalStateException e) {
+                err.println("robosim env: " + e.getMessage());
+                return 1;
+            }
+            printReport(out, report);
+        }
+        return 0;
+    }
+
+    static void printReport(PrintWriter out, RunReport report) {
+        out.printf(Locale.ROOT, "Run ended after %d steps (%.1f s simulated): %s%n", report.steps(),
+                report.timeMs() / 1000.0, report.endReason());
+        for (RobotSummary r : report.robots()) {
+            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d%n",
+                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions());
+        }
+        out.flush();
+    }
+}

@@ -1,0 +1,84 @@
+package robosim.cli;
+
+import java.io.File;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code robosim robot}: runs a robot program in this JVM, as the original's
+ * {@code java <robotApplication> robotName localhost portNumber}.
+ */
+@Command(name = "robot", mixinStandardHelpOptions = true,
+        description = "Run a robot program: CLASS's main(NAME, HOST, PORT, ARGS...).")
+final class RobotCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "CLASS", description = "the robot program's class, with a static main(String[])")
+    String className;
+
+    @Parameters(index = "1", paramLabel = "NAME", description = "the robot's name in the world")
+    String name;
+
+    @Parameters(index = "2", paramLabel = "HOST", description = "the Environment's host")
+    String host;
+
+    @Parameters(index = "3", paramLabel = "PORT", description = "the Environment's robot port")
+    int port;
+
+    @Parameters(index = "4..*", paramLabel = "ARGS", description = "more arguments for the program")
+    List<String> rest = new ArrayList<>();
+
+    @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH",
+            description = "where the program's classes are, besides RoboSim's (directories or jars, ':'-separated)")
+    String classpath;
+
+    @Override
+    public Integer call() throws Exception {
+        if (port <= 0 || port > 65535) {
+            spec.commandLine().getErr().println("robosim robot: " + port + " was supplied for PORT: a port is 1 to 65535");
+            return 2;
+        }
+        ClassLoader loader = getClass().getClassLoader();
+        if (classpath != null) {
+            List<URL> urls = new ArrayList<>();
+            for (String p : classpath.split(File.pathSeparator)) {
+                urls.add(new File(p).toURI().toURL());
+            }
+            loader = new URLClassLoader(urls.toArray(new URL[0]), loader);
+        }
+        Method main;
+        try {
+            main = Class.forName(className, true, loader).getMethod("main", String[].class);
+        } catch (ClassNotFoundException | NoSuchMethodException e) {
+            spec.commandLine().getErr().println("robosim robot: no class " + className
+                    + " with a public static main(String[]) on the classpath" + (classpath == null ? " (see --classpath)" : ""));
+            return 1;
+        }
+        if (!Modifier.isStatic(main.getModifiers())) {
+            spec.commandLine().getErr().println("robosim robot: " + className + ".main is not static");
+            return 1;
+        }
+        List<String> args = new ArrayList<>(List.of(name, host, Integer.toString(port)));
+        args.addAll(rest);
+        Thread.currentThread().setContextClassLoader(loader);
+        try {
+            main.invoke(null, (Object) args.toArray(new String[0]));
+        } catch (InvocationTargetException e) {
+            spec.commandLine().getErr().println("robosim robot: robot " + name + "'s program failed: " + e.getCause());
+            return 1;
+        }
+        return 0;
+    }
+}

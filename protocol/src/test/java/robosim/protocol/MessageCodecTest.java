@@ -1,0 +1,272 @@
+package robosim.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robosim.protocol.RecordAssert.assertDeepEquals;
+
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Set;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.EnumSource;
+import org.opentest4j.AssertionFailedError;
+import robosim.protocol.MessageCodec.Format;
+
+class MessageCodecTest {
+
+    private static Message roundTrip(Format format, Message message) throws FrameException {
+        MessageCodec codec = new MessageCodec(format);
+        return codec.decode(codec.encode(message));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void robotHelloRoundTripsWithItsParameters(Format format) throws FrameException {
+        RobotHello hello = Messages.robotHello();
+
+        assertEquals(hello, roundTrip(format, hello));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void welcomeRoundTripsWithItsState(Format format) throws FrameException {
+        Welcome welcome = Messages.welcome();
+
+        assertDeepEquals(welcome, roundTrip(format, welcome));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void timeStepRoundTripsTheStateAndItsSonarArray(Format format) throws FrameException {
+        TimeStep step = Messages.timeStep();
+
+        TimeStep decoded = (TimeStep) roundTrip(format, step);
+
+        assertDeepEquals(step, decoded);
+        assertArrayEquals(new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400,
+                4301, 650, 640}, decoded.state().sonar());
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void robotRequestsRoundTripEveryCommandSubtypeInOrder(Format format) throws FrameException {
+        RobotRequests requests = Messages.robotRequests();
+
+        assertEquals(requests, roundTrip(format, requests));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void robotRequestsWithNoCommandsRoundTrip(Format format) throws FrameException {
+        RobotRequests yielded = new RobotRequests(7, List.of());
+
+        assertEquals(yielded, roundTrip(format, yielded));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void viewerHelloRoundTrips(Format format) throws FrameException {
+        ViewerHello hello = Messages.viewerHello();
+
+        assertEquals(hello, roundTrip(format, hello));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void worldDescriptionRoundTripsObstaclesAndRobots(Format format) throws FrameException {
+        WorldDescription world = Messages.worldDescription();
+
+        assertDeepEquals(world, roundTrip(format, world));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void viewerFrameRoundTripsEveryRobotView(Format format) throws FrameException {
+        ViewerFrame frame = Messages.viewerFrame();
+
+        assertDeepEquals(frame, roundTrip(format, frame));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void byeRoundTrips(Format format) throws FrameException {
+        Bye bye = Messages.bye();
+
+        assertEquals(bye, roundTrip(format, bye));
+    }
+
+    @Test
+    void fixturesHoldOneMessageOfEveryType() {
+        Set<Class<?>> covered = Messages.all().stream().map(Object::getClass).collect(Collectors.toSet());
+
+        assertEquals(Set.of(Message.class.getPermittedSubclasses()), covered);
+    }
+
+    @Test
+    void fixtureRequestsHoldEveryCommandSubtype() {
+        Set<Class<?>> covered = Messages.robotRequests().commands().stream().map(Object::getClass)
+                .collect(Collectors.toSet());
+
+        assertEquals(Set.of(Command.class.getPermittedSubclasses()), covered);
+    }
+
+    @Test
+    void deepComparisonSeesAChangedSonarReading() {
+        RobotState s = Messages.state();
+        int[] sonar = s.sonar().clone();
+        sonar[15] = 641;
+        RobotState other = new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(),
+                s.leftVel(), s.rightVel(), s.stalled(), sonar, s.collisions());
+
+        assertThrows(AssertionFailedError.class,
+                () -> assertDeepEquals(new TimeStep(1, 2, s), new TimeStep(1, 2, other)));
+    }
+
+    @Test
+    void defaultCodecWritesSmile() {
+        byte[] payload = new MessageCodec().encode(Messages.bye());
+
+        // Smile's header: ':' ')' '\n'
+        assertArrayEquals(new byte[] {0x3A, 0x29, 0x0A}, Arrays.copyOf(payload, 3));
+    }
+
+    @Test
+    void defaultCodecWritesTheSameBytesAsSmile() {
+        TimeStep step = Messages.timeStep();
+
+        assertArrayEquals(new MessageCodec(Format.SMILE).encode(step), new MessageCodec().encode(step));
+    }
+
+    @Test
+    void smileIsSmallerThanJsonForATimeStep() {
+        TimeStep step = Messages.timeStep();
+
+        int smile = new MessageCodec(Format.SMILE).encode(step).length;
+        int json = new MessageCodec(Format.JSON).encode(step).length;
+
+        assertTrue(smile < json, "smile " + smile + " bytes, json " + json + " bytes");
+    }
+
+    @Test
+    void jsonCodecWritesReadableJson() {
+        byte[] payload = new MessageCodec(Format.JSON).encode(new Bye("done"));
+
+        assertEquals("{\"type\":\"bye\",\"reason\":\"done\"}", new String(payload, StandardCharsets.UTF_8));
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "RobotHello, robotHello",
+        "Welcome, welcome",
+        "TimeStep, timeStep",
+        "RobotRequests, robotRequests",
+        "ViewerHello, viewerHello",
+        "WorldDescription, world",
+        "ViewerFrame, frame",
+        "Bye, bye",
+    })
+    void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
+        Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))
+                .findFirst().orElseThrow();
+
+        String json = new String(new MessageCodec(Format.JSON).encode(message), StandardCharsets.UTF_8);
+
+        assertTrue(json.startsWith("{\"type\":\"" + wireName + "\""), json);
+    }
+
+    @Test
+    void commandsCarryTheirWireNames() {
+        String json = new String(new MessageCodec(Format.JSON).encode(Messages.robotRequests()),
+                StandardCharsets.UTF_8);
+
+        assertEquals("{\"type\":\"robotRequests\",\"step\":42,\"commands\":["
+                + "{\"cmd\":\"vel\",\"vel\":300.5},"
+                + "{\"cmd\":\"rotVel\",\"rotVel\":-15.25},"
+                + "{\"cmd\":\"vel2\",\"left\":120.0,\"right\":180.0},"
+                + "{\"cmd\":\"move\",\"distance\":-750.0},"
+                + "{\"cmd\":\"heading\",\"heading\":135.0},"
+                + "{\"cmd\":\"deltaHeading\",\"delta\":-45.5},"
+                + "{\"cmd\":\"stop\"},"
+                + "{\"cmd\":\"maxVel\",\"vel\":900.0},"
+                + "{\"cmd\":\"maxRotVel\",\"rotVel\":90.0}]}", json);
+    }
+
+    @Test
+    void jsonDecodesAHandWrittenMessage() throws FrameException {
+        byte[] payload = "{\"type\":\"robotRequests\",\"step\":5,\"commands\":[{\"cmd\":\"vel\",\"vel\":200}]}"
+                .getBytes(StandardCharsets.UTF_8);
+
+        assertEquals(new RobotRequests(5, List.of(new Command.SetVel(200))),
+                new MessageCodec(Format.JSON).decode(payload));
+    }
+
+    @Test
+    void garbagePayloadIsUndecodable() {
+        byte[] garbage = {1, 2, 3, 4, 5};
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec().decode(garbage));
+
+        assertTrue(e.getMessage().startsWith("undecodable frame of 5 bytes"), e.getMessage());
+    }
+
+    @Test
+    void unknownMessageTypeIsNamed() {
+        byte[] payload = "{\"type\":\"x\"}".getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertEquals("unknown message type 'x'", e.getMessage());
+    }
+
+    @Test
+    void unknownCommandTypeIsNamed() {
+        byte[] payload = "{\"type\":\"robotRequests\",\"step\":5,\"commands\":[{\"cmd\":\"fly\"}]}"
+                .getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertEquals("unknown message type 'fly'", e.getMessage());
+    }
+
+    @Test
+    void missingTypeIsNotReportedAsUnknownTypeNull() {
+        byte[] payload = "{\"reason\":\"done\"}".getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertTrue(e.getMessage().startsWith("no message type in frame of 17 bytes: "), e.getMessage());
+    }
+
+    @Test
+    void unknownPropertyIsRejected() {
+        byte[] payload = "{\"type\":\"bye\",\"reason\":\"done\",\"extra\":1}".getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertTrue(e.getMessage().startsWith("undecodable frame of 40 bytes: Unrecognized field \"extra\""),
+                e.getMessage());
+    }
+
+    @Test
+    void nullForAPrimitiveIsRejected() {
+        byte[] payload = "{\"type\":\"welcome\",\"name\":\"r\",\"stepMs\":null,\"state\":null}"
+                .getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertTrue(e.getMessage().startsWith("undecodable"), e.getMessage());
+    }
+
+    @Test
+    void jsonNullPayloadIsRejected() {
+        byte[] payload = "null".getBytes(StandardCharsets.UTF_8);
+
+        assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+    }
+}

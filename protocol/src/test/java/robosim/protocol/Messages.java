@@ -1,0 +1,97 @@
+package robosim.protocol;
+
+import java.util.List;
+import robosim.protocol.params.RobotParameters;
+import robosim.protocol.params.SonarUnit;
+
+/**
+ * Literal messages for the codec and frame tests. Every field holds a value that differs from its
+ * type's default, so a field lost on the wire shows up as a difference.
+ */
+final class Messages {
+    private Messages() {
+    }
+
+    /** The Pioneer 3 DX of ARIA-SEMANTICS.md, field by field. */
+    static RobotParameters p3dx() {
+        return new RobotParameters("Pioneer", "p3dx", 250, 425, 210, 301, 2200, 500, 300, 300, 100, 100,
+                0.0056, 5000, List.of(
+                        new SonarUnit(0, 69, 136, 90),
+                        new SonarUnit(1, 114, 119, 50),
+                        new SonarUnit(2, 148, 78, 30),
+                        new SonarUnit(3, 166, 27, 10),
+                        new SonarUnit(4, 166, -27, -10),
+                        new SonarUnit(5, 148, -78, -30),
+                        new SonarUnit(6, 114, -119, -50),
+                        new SonarUnit(7, 69, -136, -90),
+                        new SonarUnit(8, -157, -136, -90),
+                        new SonarUnit(9, -203, -119, -130),
+                        new SonarUnit(10, -237, -78, -150),
+                        new SonarUnit(11, -255, -27, -170),
+                        new SonarUnit(12, -255, 27, 170),
+                        new SonarUnit(13, -237, 78, 150),
+                        new SonarUnit(14, -203, 119, 130),
+                        new SonarUnit(15, -157, 136, 90)));
+    }
+
+    /** A state whose time does not fit in an int, with a reading in every one of 16 sonars. */
+    static RobotState state() {
+        return new RobotState(41, 3_000_000_123L, 1234.5, -678.25, 179.5, 350.0, -12.5, 337.5, 362.5, true,
+                new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400, 4301, 650, 640},
+                3);
+    }
+
+    static RobotHello robotHello() {
+        return new RobotHello("robot1", "pioneer", p3dx());
+    }
+
+    static Welcome welcome() {
+        return new Welcome("robot1", 100, state());
+    }
+
+    static TimeStep timeStep() {
+        return new TimeStep(42, 3_000_000_223L, state());
+    }
+
+    /** Requests holding one command of every subtype, in a fixed order. */
+    static RobotRequests robotRequests() {
+        return new RobotRequests(42, List.of(
+                new Command.SetVel(300.5),
+                new Command.SetRotVel(-15.25),
+                new Command.SetVel2(120, 180),
+                new Command.Move(-750),
+                new Command.SetHeading(135),
+                new Command.SetDeltaHeading(-45.5),
+                new Command.Stop(),
+                new Command.SetMaxTransVel(900),
+                new Command.SetMaxRotVel(90)));
+    }
+
+    static ViewerHello viewerHello() {
+        return new ViewerHello("viewer-Ω");
+    }
+
+    static WorldDescription worldDescription() {
+        return new WorldDescription("arena", 20000, 15000, 100,
+                List.of(new WorldDescription.Obstacle(new double[] {0, 0, 20000, 0, 20000, 10, 0, 10}, 500),
+                        new WorldDescription.Obstacle(new double[] {4000.5, 3000, 5000, 3000, 4500, 3866.25}, 250)),
+                List.of(new WorldDescription.RobotInfo("robot1", "pioneer", p3dx())));
+    }
+
+    static ViewerFrame viewerFrame() {
+        return new ViewerFrame(42, 4200, List.of(
+                new ViewerFrame.RobotView("robot1", 1234.5, -678.25, 179.5, true, true,
+                        new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999}),
+                new ViewerFrame.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101})));
+    }
+
+    static Bye bye() {
+        return new Bye("done");
+    }
+
+    /** One message of every type. */
+    static List<Message> all() {
+        return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
+                viewerFrame(), bye());
+    }
+}

@@ -1,0 +1,19 @@
+package robosim.viewer;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+
+/**
+ * Receives the images a {@link ViewerClient} renders: a PNG directory, a window, a video encoder.
+ */
+@FunctionalInterface
+public interface FrameSink {
+    /**
+     * Takes one rendered frame. The image is the sink's to keep; the client does not reuse it.
+     *
+     * @param step  the simulation step the image shows
+     * @param image the rendered frame
+     * @throws IOException if the sink cannot store the frame; the client then stops
+     */
+    void accept(long step, BufferedImage image) throws IOException;
+}

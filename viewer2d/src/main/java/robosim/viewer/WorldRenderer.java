@@ -1,0 +1,199 @@
+package robosim.viewer;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.Obstacle;
+import robosim.protocol.WorldDescription.RobotInfo;
+
+/**
+ * Draws one frame of the world: background, border, obstacles, robots, optional sonar rays and
+ * names, and a caption with the step and the simulated time. Pure drawing: no I/O, no sockets, no
+ * clocks, no state between calls, so one renderer may serve several threads, and the window,
+ * recorder and replay views can share it.
+ *
+ * <p>World coordinates are mm with +y up and headings in degrees counter-clockwise from +x; the
+ * {@link ViewTransform} flips them into the image.
+ */
+public final class WorldRenderer {
+    /** The colour of free space. */
+    public static final Color BACKGROUND = new Color(248, 248, 244);
+    /** The fill of walls and obstacles. */
+    public static final Color OBSTACLE = new Color(64, 64, 64);
+    /** The colour of the world's border. */
+    public static final Color BORDER = Color.BLACK;
+
+    private static final Color OUTLINE = new Color(20, 20, 20);
+    private static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
+    private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
+
+    private final RobotPainter robots = new RobotPainter();
+
+    /** A renderer; it holds no state, so one can be shared. */
+    public WorldRenderer() {
+    }
+
+    /**
+     * Draws a frame into a new image as wide as the options say and as high as the world's aspect
+     * ratio makes it.
+     *
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param options the image width and what to show
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image
+     * @throws IllegalArgumentException if the world's size is not positive or the image would be
+     *                                  too tall (see {@link ViewTransform#fit})
+     */
+    public BufferedImage render(WorldDescription world, ViewerFrame frame, RenderOptions options) {
+        ViewTransform view = ViewTransform.fit(world, options.width());
+        BufferedImage image = new BufferedImage(view.width(), view.height(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            draw(g, view, world, frame, options);
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
+    /**
+     * Draws a frame onto any surface, such as a window's component or an image. Only the
+     * rectangle from (0, 0) to the transform's width and height is drawn; the options' width is
+     * ignored in favour of the transform's. The graphics' settings are left as they were.
+     *
+     * @param target  where to draw
+     * @param view    the mapping from world mm to pixels
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param options what to show
+     */
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, ViewerFrame frame,
+                     RenderOptions options) {
+        Graphics2D g = (Graphics2D) target.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+            g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
+            drawWorld(g, view, world);
+            if (frame != null) {
+                drawRobots(g, view, world, frame, options);
+                drawCaption(g, view, caption(frame));
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /**
+     * The caption drawn on a frame, for example {@code "step 120  t=12.0 s"}.
+     *
+     * @param frame the frame
+     * @return its step and simulated time
+     */
+    public static String caption(ViewerFrame frame) {
+        return String.format(Locale.ROOT, "step %d  t=%.1f s", frame.step(), frame.timeMs() / 1000.0);
+    }
+
+    private static void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
+        g.setColor(BACKGROUND);
+        g.fill(new Rectangle2D.Double(0, 0, view.width(), view.height()));
+        g.setColor(OBSTACLE);
+        for (Obstacle obstacle : world.obstacles()) {
+            Path2D polygon = polygon(view, obstacle.xy());
+            if (polygon != null) {
+                g.fill(polygon);
+            }
+        }
+        // A 2 px stroke centred 1 px inside the edge covers exactly the outermost two pixels.
+        g.setColor(BORDER);
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Rectangle2D.Double(1, 1, view.width() - 2.0, view.height() - 2.0));
+    }
+
+    /** @return the ring as a closed pixel path, or {@code null} if it has fewer than 3 points */
+    private static Path2D polygon(ViewTransform view, double[] xy) {
+        if (xy == null || xy.length < 6) {
+            return null;
+        }
+        Path2D.Double path = new Path2D.Double();
+        path.moveTo(view.px(xy[0]), view.py(xy[1]));
+        for (int i = 2; i + 1 < xy.length; i += 2) {
+            path.lineTo(view.px(xy[i]), view.py(xy[i + 1]));
+        }
+        path.closePath();
+        return path;
+    }
+
+    private void drawRobots(Graphics2D g, ViewTransform view, WorldDescription world, ViewerFrame frame,
+                            RenderOptions options) {
+        Map<String, Integer> indexByName = new HashMap<>();
+        List<RobotInfo> infos = world.robots();
+        for (int i = 0; i < infos.size(); i++) {
+            indexByName.putIfAbsent(infos.get(i).name(), i);
+        }
+        List<RobotView> views = frame.robots();
+        // A robot the world does not list still gets a colour of its own, after the listed ones.
+        int[] colourIndex = new int[views.size()];
+        RobotInfo[] info = new RobotInfo[views.size()];
+        for (int i = 0; i < views.size(); i++) {
+            Integer known = indexByName.get(views.get(i).name());
+            colourIndex[i] = known != null ? known : infos.size() + i;
+            info[i] = known != null ? infos.get(known) : null;
+        }
+        if (options.showSonar()) {
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawSonar(g, view, views.get(i), info[i], rayColour(views.get(i), colourIndex[i]));
+            }
+        }
+        for (int i = 0; i < views.size(); i++) {
+            RobotView robot = views.get(i);
+            Color fill = robot.connected() ? RobotPalette.colour(colourIndex[i]) : RobotPalette.DISCONNECTED;
+            Color outline = robot.stalled() ? RobotPalette.STALLED
+                    : robot.connected() ? OUTLINE : DISCONNECTED_OUTLINE;
+            robots.drawBody(g, view, robot, info[i], fill, outline);
+        }
+        if (options.showNames()) {
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view)));
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawName(g, view, views.get(i), info[i],
+                        views.get(i).connected() ? OUTLINE : DISCONNECTED_OUTLINE);
+            }
+        }
+    }
+
+    private static Color rayColour(RobotView robot, int colourIndex) {
+        Color c = robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
+        return new Color(c.getRed(), c.getGreen(), c.getBlue(), 170);
+    }
+
+    private static void drawCaption(Graphics2D g, ViewTransform view, String text) {
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view)));
+        FontMetrics metrics = g.getFontMetrics();
+        int pad = 4;
+        int boxWidth = metrics.stringWidth(text) + 2 * pad;
+        int boxHeight = metrics.getHeight() + 2 * pad;
+        g.setColor(CAPTION_BACKDROP);
+        g.fill(new Rectangle2D.Double(3, 3, boxWidth, boxHeight));
+        g.setColor(OUTLINE);
+        g.drawString(text, 3 + pad, 3 + pad + metrics.getAscent());
+    }
+
+    /** Text grows with the image but stays readable on small ones. */
+    private static int fontSize(ViewTransform view) {
+        return Math.max(10, Math.min(24, view.width() / 70));
+    }
+}

@@ -1,0 +1,47 @@
+package robosim.viewer;
+
+import java.util.List;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.Obstacle;
+import robosim.protocol.WorldDescription.RobotInfo;
+import robosim.protocol.params.RobotParameters;
+import robosim.protocol.params.SonarUnit;
+
+/**
+ * A literal world shared by the tests: 4000 x 2000 mm, one 500 mm square obstacle from (1000, 500)
+ * to (1500, 1000), and one robot "r1", 400 mm long (200 ahead, 200 behind) and 380 mm wide, with
+ * sonar 0 at its nose looking forward and sonar 1 on its left side looking left. Drawn 800 px wide,
+ * 1 px is 5 mm and the image is 800 x 400.
+ */
+final class Fixtures {
+    static final int WIDTH_PX = 800;
+
+    private Fixtures() {
+    }
+
+    static RobotParameters params() {
+        return new RobotParameters("Pioneer", "test", 250, 380, 200, 200, 1000, 300, 300, 300, 100, 100,
+                0.006, 5000, List.of(new SonarUnit(0, 200, 0, 0), new SonarUnit(1, 0, 190, 90)));
+    }
+
+    static WorldDescription world() {
+        Obstacle square = new Obstacle(new double[] {1000, 500, 1500, 500, 1500, 1000, 1000, 1000}, 500);
+        return new WorldDescription("fixture", 4000, 2000, 100, List.of(square),
+                List.of(new RobotInfo("r1", "Pioneer", params())));
+    }
+
+    static RobotView robot(double x, double y, double th, boolean stalled, boolean connected) {
+        return new RobotView("r1", x, y, th, stalled, connected, new int[] {500, 300});
+    }
+
+    /** The robot at (3000, 600) heading along +x, moving freely; its centre is pixel (600, 280). */
+    static RobotView robotAtRest() {
+        return robot(3000, 600, 0, false, true);
+    }
+
+    static ViewerFrame frame(long step, RobotView... robots) {
+        return new ViewerFrame(step, step * 100, List.of(robots));
+    }
+}
