@@ -50,8 +50,9 @@ final class ElementReader {
              FromXmlParser p = (FromXmlParser) MAPPER.getFactory().createParser(in)) {
             XMLStreamReader root = p.getStaxReader();
             if (!root.isStartElement() || !ROOT.equals(root.getLocalName())) {
-                throw new WorldFileException(file, root.getLocation().getLineNumber(), "the root element is <"
-                        + root.getLocalName() + ">, expected <" + ROOT + ">");
+                String found = root.isStartElement() ? "<" + root.getLocalName() + ">" : "missing";
+                throw new WorldFileException(file, root.getLocation().getLineNumber(),
+                        "the root element is " + found + ", expected <" + ROOT + ">");
             }
             return MAPPER.readValue(p, WorldElement.class);
         } catch (XmlProblem problem) {

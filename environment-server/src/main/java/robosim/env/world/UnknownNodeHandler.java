@@ -16,8 +16,8 @@ final class UnknownNodeHandler extends DeserializationProblemHandler {
         String tag = bean instanceof Element e ? e.tag() : XmlNodes.enclosingTag(p);
         int line = XmlNodes.line(p);
         if (name.isEmpty()) {
-            throw new XmlProblem(line, "unexpected text in <" + tag + ">: " + tag + " takes only attributes"
-                    + (tag.equals("world") ? " and elements" : ""));
+            throw new XmlProblem(line, "unexpected text in <" + tag + ">: <" + tag + "> takes only attributes"
+                    + (tag.equals("world") ? " and child elements" : ""));
         }
         if (XmlNodes.isAttribute(p)) {
             throw new XmlProblem(line, "unknown attribute " + name + " on <" + tag + ">");

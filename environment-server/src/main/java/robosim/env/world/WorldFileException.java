@@ -9,8 +9,11 @@ import java.nio.file.Path;
 public final class WorldFileException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
+    /** The world file; transient because {@link Path} is not serializable. */
     private final transient Path file;
+    /** The 1-based line of the offending element, or 0. */
     private final int line;
+    /** The rule that was broken. */
     private final String rule;
 
     /**

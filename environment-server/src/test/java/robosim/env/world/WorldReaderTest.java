@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -49,6 +50,16 @@ class WorldReaderTest {
         World world = WorldReader.read(WorldFixtures.root().resolve("testLoadFiles/environment/cluttered-room.xml"));
         assertEquals("p3at", world.robots().get(2).parameters().subclass());
         assertEquals("p3dx", world.robots().get(0).parameters().subclass());
+    }
+
+    @Test
+    void exampleInTheFormatDocumentLoads() throws IOException {
+        String doc = Files.readString(WorldFixtures.root().resolve("docs/WORLD-FORMAT.md"));
+        int start = doc.indexOf("```xml\n") + "```xml\n".length();
+        World world = fixtures.read("example.xml", doc.substring(start, doc.indexOf("```", start)));
+        assertEquals("small-maze", world.name());
+        assertEquals(6, world.obstacles().size());
+        assertEquals(2, world.robots().size());
     }
 
     @Test

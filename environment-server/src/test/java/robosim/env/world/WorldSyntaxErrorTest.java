@@ -134,6 +134,16 @@ class WorldSyntaxErrorTest {
                 """, 3, "missing required attribute x2 on <wall>");
     }
 
+    @Test
+    void emptyElementIsMissingItsAttributesOnItsOwnLine() {
+        fixtures.fails("bare.xml", """
+                <world name="bare" width="6000" height="6000">
+
+                  <wall/>
+                </world>
+                """, 3, "missing required attribute x1 on <wall>");
+    }
+
     @ParameterizedTest
     @CsvSource({"name", "width", "height"})
     void worldNeedsNameAndSize(String attribute) {

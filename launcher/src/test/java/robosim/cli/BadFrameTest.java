@@ -1,0 +1,139 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import robosim.aria.ArRobot;
+import robosim.env.core.RobotSummary;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.examples.wander.Wander;
+import robosim.protocol.Bye;
+import robosim.protocol.Message;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.TimeStep;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.Welcome;
+import robosim.protocol.params.ParameterFileReader;
+
+/**
+ * A peer that breaks the protocol mid-run is closed with one log line naming it and the reason;
+ * the Environment stays up and the other robot finishes its run.
+ */
+@Timeout(value = 2, unit = TimeUnit.MINUTES)
+class BadFrameTest {
+    private static final int STEPS = 60;
+
+    /** Runs r1 as a wander robot in this JVM and r2 as a raw peer that misbehaves after hello. */
+    private static void misbehaveAsR2(Consumer<RawPeer> misbehave, String expectedReason) throws Exception {
+        try (LogCapture log = new LogCapture("robosim.env.net");
+             Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS))) {
+            Thread r1 = new Thread(() -> {
+                ArRobot robot = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
+                if (robot.blockingConnect()) {
+                    new Wander(robot).run();
+                }
+            });
+            r1.setDaemon(true);
+            r1.start();
+            try (RawPeer r2 = new RawPeer(h.server.robotPort())) {
+                r2.send(new RobotHello("r2", "pioneer", ParameterFileReader.read(
+                        Harness.root().resolve("testLoadFiles/robots/p3dx.p"))));
+                assertInstanceOf(Welcome.class, r2.read());
+                TimeStep first = (TimeStep) r2.read();
+                r2.send(new RobotRequests(first.step(), List.of()));
+                assertInstanceOf(TimeStep.class, r2.read());
+                misbehave.accept(r2);
+                assertTrue(r2.closedByPeer(), "the Environment closed r2's connection");
+            }
+            RunReport report = h.await();
+            assertEquals("step limit " + STEPS + " reached", report.endReason(), "the run went on");
+            RobotSummary r1Summary = report.robots().get(0);
+            assertTrue(r1Summary.distance() > 100, "r1 kept driving: " + r1Summary);
+            List<String> about = log.warnings().stream().filter(w -> w.contains("robot r2")).toList();
+            assertEquals(1, about.size(), "one log line for r2: " + log.warnings());
+            assertTrue(about.get(0).contains(expectedReason), about.get(0));
+            r1.join(10_000);
+        }
+    }
+
+    @Test
+    void garbageFrameClosesOnlyThatRobot() throws Exception {
+        misbehaveAsR2(r2 -> send(r2, new byte[] {0, 0, 0, 8, 'g', 'a', 'r', 'b', 'a', 'g', 'e', '!'}),
+                "undecodable frame of 8 bytes");
+    }
+
+    @Test
+    void oversizedFrameClosesOnlyThatRobot() throws Exception {
+        misbehaveAsR2(r2 -> send(r2, new byte[] {0x7f, (byte) 0xff, (byte) 0xff, (byte) 0xff}),
+                "frame of 2147483647 bytes exceeds the limit of 4194304 bytes");
+    }
+
+    @Test
+    void requestsForAStepThatIsNotOpenCloseThatRobot() throws Exception {
+        misbehaveAsR2(r2 -> send(r2, new RobotRequests(99, List.of())), "sent requests for step 99 while step 2 is open");
+    }
+
+    @Test
+    void aMessageOfAnUnknownTypeClosesThatRobot() throws Exception {
+        byte[] json = new com.fasterxml.jackson.dataformat.smile.databind.SmileMapper()
+                .writeValueAsBytes(java.util.Map.of("type", "teleport"));
+        byte[] frame = new byte[4 + json.length];
+        frame[3] = (byte) json.length;
+        System.arraycopy(json, 0, frame, 4, json.length);
+        misbehaveAsR2(r2 -> send(r2, frame), "unknown message type 'teleport'");
+    }
+
+    @Test
+    void anUnknownRobotNameIsRefusedWithAReason() throws Exception {
+        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(1));
+             RawPeer peer = new RawPeer(h.server.robotPort())) {
+            peer.send(new RobotHello("r9", "pioneer", ParameterFileReader.read(
+                    Harness.root().resolve("testLoadFiles/robots/p3dx.p"))));
+            Message m = peer.read();
+            assertInstanceOf(Bye.class, m);
+            assertTrue(((Bye) m).reason().contains("has no robot named 'r9'"), ((Bye) m).reason());
+            assertTrue(peer.closedByPeer());
+        }
+    }
+
+    @Test
+    void aViewerThatSendsGarbageIsClosedAndTheRunGoesOn() throws Exception {
+        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS));
+             RawPeer viewer = new RawPeer(h.server.viewerPort())) {
+            viewer.send(new ViewerHello("bad"));
+            viewer.sendRaw(new byte[] {0, 0, 0, 3, 1, 2, 3});
+            assertTrue(viewer.closedByPeer());
+            for (String name : List.of("r1", "r2")) {
+                Thread t = new Thread(() -> {
+                    ArRobot robot = new ArRobot(name, "127.0.0.1", h.server.robotPort(), "p3dx");
+                    if (robot.blockingConnect()) {
+                        new Wander(robot).run();
+                    }
+                });
+                t.setDaemon(true);
+                t.start();
+            }
+            assertEquals("step limit " + STEPS + " reached", h.await().endReason());
+        }
+    }
+
+    private static void send(RawPeer peer, Object what) {
+        try {
+            if (what instanceof byte[] bytes) {
+                peer.sendRaw(bytes);
+            } else {
+                peer.send((Message) what);
+            }
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+}

@@ -1,0 +1,39 @@
+package robosim.cli;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+
+/** Keeps the warnings a logger tree publishes during a test. */
+final class LogCapture extends Handler implements AutoCloseable {
+    private final Logger logger;
+    private final List<String> warnings = new ArrayList<>();
+
+    LogCapture(String name) {
+        logger = Logger.getLogger(name);
+        logger.addHandler(this);
+    }
+
+    @Override
+    public synchronized void publish(LogRecord r) {
+        if (r.getLevel().intValue() >= Level.WARNING.intValue()) {
+            warnings.add(r.getMessage());
+        }
+    }
+
+    synchronized List<String> warnings() {
+        return new ArrayList<>(warnings);
+    }
+
+    @Override
+    public void flush() {
+    }
+
+    @Override
+    public void close() {
+        logger.removeHandler(this);
+    }
+}
