@@ -269,6 +269,31 @@ public final class GeometryClient {
         return best;
     }
 
+    /**
+     * Gathers the edges of obstacles and bodies within {@code radius} of a point, for many range
+     * queries from sensors near it.
+     *
+     * @param x        centre x, mm
+     * @param y        centre y, mm
+     * @param radius   mm; must cover every sensor's position plus its maximum range
+     * @param ignoreId a body left out (the sensors' own), or -1
+     * @return the gathered edges
+     */
+    public Surroundings around(double x, double y, double radius, int ignoreId) {
+        Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
+        List<Segment> found = new ArrayList<>();
+        for (Object o : segmentIndex.query(env)) {
+            found.add((Segment) o);
+        }
+        for (int i = 0; i < bodies.size(); i++) {
+            Body b = bodies.get(i);
+            if (i != ignoreId && b.envelope.intersects(env)) {
+                found.addAll(java.util.Arrays.asList(b.segments));
+            }
+        }
+        return new Surroundings(found);
+    }
+
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {
         Envelope env = new Envelope(x, x, y, y);
         env.expandToInclude(x + range * Math.cos(th - half), y + range * Math.sin(th - half));

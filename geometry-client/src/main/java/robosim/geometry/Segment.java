@@ -3,6 +3,12 @@ package robosim.geometry;
 /** A straight edge of an obstacle or body, in world mm. */
 record Segment(double x1, double y1, double x2, double y2) {
 
+    /** @return whether this segment's bounding box lies farther than {@code range} from a point */
+    boolean farFrom(double x, double y, double range) {
+        return Math.min(x1, x2) - x > range || x - Math.max(x1, x2) > range
+                || Math.min(y1, y2) - y > range || y - Math.max(y1, y2) > range;
+    }
+
     /**
      * Distance along a ray to this segment.
      *
@@ -63,6 +69,8 @@ record Segment(double x1, double y1, double x2, double y2) {
         double len2 = ex * ex + ey * ey;
         double t = len2 == 0 ? lo : -(ax * ex + ay * ey) / len2;
         t = Math.max(lo, Math.min(hi, t));
-        return Math.hypot(ax + t * ex, ay + t * ey);
+        double px = ax + t * ex;
+        double py = ay + t * ey;
+        return Math.sqrt(px * px + py * py);
     }
 }

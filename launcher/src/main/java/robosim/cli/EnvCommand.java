@@ -1,5 +1,6 @@
 package robosim.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -66,11 +67,22 @@ final class EnvCommand implements Callable<Integer> {
             err.println("robosim env: " + e.getMessage());
             return 1;
         }
-        ServerOptions options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
-                connectTimeoutS * 1000, waitViewers, 4 << 20);
+        ServerOptions options;
+        try {
+            options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
+                    connectTimeoutS * 1000, waitViewers, 4 << 20);
+        } catch (IllegalArgumentException e) {
+            err.println("robosim env: " + e.getMessage());
+            return 2;
+        }
         Simulation sim = new Simulation(w);
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
-            server.bind();
+            try {
+                server.bind();
+            } catch (IOException e) {
+                err.println("robosim env: cannot listen on " + bind + " ports " + port + " and " + viewerPort + ": " + e.getMessage());
+                return 1;
+            }
             out.printf(Locale.ROOT, "Seed: %d%n", seed);
             out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,
                     server.robotPort(), bind, server.viewerPort());

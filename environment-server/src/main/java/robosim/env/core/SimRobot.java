@@ -4,6 +4,7 @@ import java.util.List;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
+import robosim.geometry.Surroundings;
 import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
@@ -109,9 +110,10 @@ final class SimRobot {
     void readSonar(GeometryClient geometry) {
         Pose2D p = pose();
         double max = params.sonarMaxRange();
+        Surroundings near = geometry.around(x, y, max + body.radius(), bodyId);
         for (SonarUnit s : params.sonarUnits()) {
-            double r = geometry.coneRange(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
-                    p.th() + Math.toRadians(s.th()), SONAR_HALF_ANGLE, max, bodyId);
+            double r = near.cone(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
+                    p.th() + Math.toRadians(s.th()), SONAR_HALF_ANGLE, max);
             sonar[s.index()] = (int) Math.round(Math.max(SONAR_MIN_RANGE, r));
         }
     }

@@ -1,66 +1,59 @@
 package robosim.env.net;
 
 import java.io.IOException;
-import java.net.Socket;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.LinkedBlockingQueue;
+import java.nio.ByteBuffer;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.nio.channels.SocketChannel;
+import java.util.ArrayDeque;
+import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import robosim.protocol.Bye;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
+import robosim.protocol.FrameDecoder;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 
 /**
- * One peer of the Environment, robot or viewer: a reader thread that turns frames into
- * {@link ServerEvent}s on the server's queue, and a writer thread that drains an outgoing queue, so
- * that a slow or stuck peer never blocks the step loop.
+ * One peer of the Environment, robot or viewer, on a non-blocking channel served by the step
+ * loop's selector: frames in through a {@link FrameDecoder}, frames out through a queue that is
+ * written as the peer can take it. A peer that lets too much pile up is closed, so a slow or stuck
+ * peer never blocks the run.
  */
 final class Connection {
     private static final Logger LOG = Logger.getLogger(Connection.class.getName());
-    private static final Message CLOSE = new Bye("close");
 
     enum Kind { ROBOT, VIEWER }
 
     final Kind kind;
-    private final Socket socket;
-    private final BlockingQueue<ServerEvent> events;
-    private final BlockingQueue<Message> outgoing = new LinkedBlockingQueue<>();
-    private final FrameReader reader;
-    private final FrameWriter writer;
-    private final int maxQueued;
-    private volatile String name;
-    private volatile boolean closed;
-    private final CountDownLatch writerDone = new CountDownLatch(1);
+    private final SocketChannel channel;
+    private final SelectionKey key;
+    private final FrameDecoder decoder;
+    private final MessageCodec codec;
+    private final ArrayDeque<ByteBuffer> outgoing = new ArrayDeque<>();
+    private final long maxQueuedBytes;
+    private final String address;
+    private long queuedBytes;
+    private String name;
+    private boolean closed;
+    private boolean closeWhenFlushed;
 
-    Connection(Kind kind, Socket socket, BlockingQueue<ServerEvent> events, MessageCodec codec, int maxFrame,
-               int maxQueued) throws IOException {
+    Connection(Kind kind, SocketChannel channel, Selector selector, MessageCodec codec, int maxFrame,
+               long maxQueuedBytes) throws IOException {
         this.kind = kind;
-        this.socket = socket;
-        this.events = events;
-        this.maxQueued = maxQueued;
-        socket.setTcpNoDelay(true);
-        this.reader = new FrameReader(socket.getInputStream(), codec, maxFrame);
-        this.writer = new FrameWriter(socket.getOutputStream(), codec);
-    }
-
-    void start() {
-        String peer = socket.getRemoteSocketAddress().toString();
-        Thread r = new Thread(this::readLoop, "env-read-" + peer);
-        Thread w = new Thread(this::writeLoop, "env-write-" + peer);
-        r.setDaemon(true);
-        w.setDaemon(true);
-        r.start();
-        w.start();
+        this.channel = channel;
+        this.codec = codec;
+        this.decoder = new FrameDecoder(codec, maxFrame);
+        this.maxQueuedBytes = maxQueuedBytes;
+        this.address = String.valueOf(channel.getRemoteAddress());
+        channel.configureBlocking(false);
+        channel.socket().setTcpNoDelay(true);
+        this.key = channel.register(selector, SelectionKey.OP_READ, this);
     }
 
     /** @return the robot's or viewer's name once it has said hello, else its address */
     String peer() {
-        String n = name;
-        return n != null ? kind.name().toLowerCase() + " " + n : kind.name().toLowerCase() + " at " + socket.getRemoteSocketAddress();
+        String k = kind.name().toLowerCase();
+        return name != null ? k + " " + name : k + " at " + address;
     }
 
     void setName(String name) {
@@ -75,23 +68,79 @@ final class Connection {
         return closed;
     }
 
-    /** Queues a message; a peer that lets too many pile up is closed. */
+    /** @return whether everything queued has been written */
+    boolean flushed() {
+        return outgoing.isEmpty();
+    }
+
+    /**
+     * Reads what has arrived.
+     *
+     * @param buffer scratch space shared by all connections
+     * @return the messages completed, or null at the end of the stream
+     * @throws IOException if reading fails or a frame breaks the rules
+     */
+    List<Message> read(ByteBuffer buffer) throws IOException {
+        buffer.clear();
+        int n = channel.read(buffer);
+        if (n < 0) {
+            if (decoder.midFrame()) {
+                throw new IOException("the stream ended inside a frame");
+            }
+            return null;
+        }
+        buffer.flip();
+        return decoder.decode(buffer);
+    }
+
+    /** Queues a message and writes what the peer can take now. */
     void send(Message m) {
-        if (closed) {
+        if (closed || closeWhenFlushed) {
             return;
         }
-        if (outgoing.size() >= maxQueued) {
-            close("it fell " + maxQueued + " messages behind");
+        ByteBuffer frame = FrameDecoder.frame(codec, m);
+        queuedBytes += frame.remaining();
+        outgoing.add(frame);
+        if (queuedBytes > maxQueuedBytes) {
+            close("it fell " + queuedBytes + " bytes behind (the limit is " + maxQueuedBytes + ")");
             return;
         }
-        outgoing.add(m);
+        try {
+            writable();
+        } catch (IOException e) {
+            close("write failed: " + e.getMessage());
+        }
     }
 
     /** Sends a last message, then closes once it is written. */
     void sendAndClose(Message m) {
-        if (!closed) {
-            outgoing.add(m);
-            outgoing.add(CLOSE);
+        send(m);
+        closeWhenFlushed = true;
+        if (outgoing.isEmpty()) {
+            shut();
+        }
+    }
+
+    /**
+     * Writes queued frames until the peer can take no more.
+     *
+     * @throws IOException if writing fails
+     */
+    void writable() throws IOException {
+        while (!outgoing.isEmpty()) {
+            ByteBuffer b = outgoing.peek();
+            int n = channel.write(b);
+            queuedBytes -= n;
+            if (b.hasRemaining()) {
+                key.interestOps(SelectionKey.OP_READ | SelectionKey.OP_WRITE);
+                return;
+            }
+            outgoing.poll();
+        }
+        if (closeWhenFlushed) {
+            shut();
+        } else if (key.isValid()) {
+            key.interestOps(SelectionKey.OP_READ);
         }
     }
 
@@ -100,66 +149,22 @@ final class Connection {
         if (closed) {
             return;
         }
-        closed = true;
         LOG.warning(() -> "closing " + peer() + ": " + reason);
         shut();
     }
 
-    private void shut() {
+    /** Closes without a word: an orderly end. */
+    void shut() {
+        if (closed) {
+            return;
+        }
         closed = true;
         outgoing.clear();
-        outgoing.add(CLOSE);
+        key.cancel();
         try {
-            socket.close();
+            channel.close();
         } catch (IOException e) {
-            LOG.log(Level.FINE, "closing socket", e);
-        }
-    }
-
-    /** Waits, bounded, until everything queued has been written. */
-    void awaitWritten(long timeoutMs) {
-        try {
-            writerDone.await(timeoutMs, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
-
-    private void readLoop() {
-        String reason = "it disconnected";
-        try {
-            Message m;
-            while ((m = reader.read()) != null) {
-                events.add(new ServerEvent.Received(this, m));
-            }
-        } catch (IOException e) {
-            reason = closed ? "closed" : e.getMessage();
-        }
-        events.add(new ServerEvent.Closed(this, reason));
-    }
-
-    private void writeLoop() {
-        try {
-            while (true) {
-                Message m = outgoing.take();
-                if (m == CLOSE) {
-                    break;
-                }
-                writer.write(m);
-            }
-        } catch (IOException e) {
-            if (!closed) {
-                events.add(new ServerEvent.Closed(this, "write failed: " + e.getMessage()));
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        closed = true;
-        writerDone.countDown();
-        try {
-            socket.shutdownOutput();
-        } catch (IOException e) {
-            LOG.log(Level.FINE, "shutting output", e);
+            LOG.log(Level.FINE, "closing " + peer(), e);
         }
     }
 }

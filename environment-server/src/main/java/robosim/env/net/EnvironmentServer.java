@@ -1,25 +1,28 @@
 package robosim.env.net;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
+import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
+import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
+import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.TimeStep;
 
@@ -27,23 +30,26 @@ import robosim.protocol.TimeStep;
  * The Environment on the network: accepts robots and viewers, waits for every robot the world
  * names, then drives lockstep steps: it sends each robot its time step and state, waits (up to the
  * step deadline) for every robot's requests for that step, advances the {@link Simulation}, and
- * sends the new frame to the viewers. One thread, the step loop, changes all state; a peer that
+ * sends the new frame to the viewers.
+ *
+ * <p>One thread does it all: the step loop serves every connection through one selector between
+ * steps, so no thread handoff stands between a robot's requests and the next step. A peer that
  * breaks the protocol is closed with one log line and the run goes on for the others.
  */
 public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
-    private static final int MAX_QUEUED_ROBOT = 64;
-    private static final int MAX_QUEUED_VIEWER = 100_000;
+    private static final long MAX_QUEUED_ROBOT = 1 << 20;
+    private static final long MAX_QUEUED_VIEWER = 256L << 20;
 
     private final Simulation sim;
     private final ServerOptions options;
     private final MessageCodec codec = new MessageCodec();
-    private final BlockingQueue<ServerEvent> events = new LinkedBlockingQueue<>();
-    private final List<Connection> all = new CopyOnWriteArrayList<>();
     private final SessionRules rules;
-    private ServerSocket robotSocket;
-    private ServerSocket viewerSocket;
-    private volatile boolean closing;
+    private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
+    private final List<Connection> all = new ArrayList<>();
+    private Selector selector;
+    private ServerSocketChannel robotChannel;
+    private ServerSocketChannel viewerChannel;
 
     /**
      * @param sim     the simulation to drive
@@ -62,78 +68,65 @@ public final class EnvironmentServer implements AutoCloseable {
      */
     public void bind() throws IOException {
         InetAddress addr = InetAddress.getByName(options.bindAddress());
-        robotSocket = new ServerSocket(options.robotPort(), 50, addr);
-        viewerSocket = new ServerSocket(options.viewerPort(), 50, addr);
-        accept(robotSocket, Connection.Kind.ROBOT);
-        accept(viewerSocket, Connection.Kind.VIEWER);
+        selector = Selector.open();
+        robotChannel = listen(new InetSocketAddress(addr, options.robotPort()), Connection.Kind.ROBOT);
+        viewerChannel = listen(new InetSocketAddress(addr, options.viewerPort()), Connection.Kind.VIEWER);
+    }
+
+    private ServerSocketChannel listen(InetSocketAddress at, Connection.Kind kind) throws IOException {
+        ServerSocketChannel ch = ServerSocketChannel.open();
+        ch.bind(at, 128);
+        ch.configureBlocking(false);
+        ch.register(selector, SelectionKey.OP_ACCEPT, kind);
+        return ch;
     }
 
     /** @return the port robots connect to */
     public int robotPort() {
-        return robotSocket.getLocalPort();
+        return robotChannel.socket().getLocalPort();
     }
 
     /** @return the port viewers connect to */
     public int viewerPort() {
-        return viewerSocket.getLocalPort();
-    }
-
-    private void accept(ServerSocket server, Connection.Kind kind) {
-        Thread t = new Thread(() -> {
-            while (!closing) {
-                try {
-                    Socket s = server.accept();
-                    int queued = kind == Connection.Kind.ROBOT ? MAX_QUEUED_ROBOT : MAX_QUEUED_VIEWER;
-                    Connection c = new Connection(kind, s, events, codec, options.maxFrame(), queued);
-                    all.add(c);
-                    c.start();
-                } catch (IOException e) {
-                    if (!closing) {
-                        LOG.warning("accepting " + kind.name().toLowerCase() + " connections failed: " + e.getMessage());
-                    }
-                    return;
-                }
-            }
-        }, "env-accept-" + kind.name().toLowerCase());
-        t.setDaemon(true);
-        t.start();
+        return viewerChannel.socket().getLocalPort();
     }
 
     /**
      * Waits for the world's robots, runs, and reports.
      *
      * @return how the run ended
-     * @throws InterruptedException if interrupted
+     * @throws InterruptedException  if interrupted
      * @throws IllegalStateException if the robots do not all connect in time
      */
     public RunReport run() throws InterruptedException {
         awaitRobots();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
+        long started = System.nanoTime();
         String reason = loop();
+        long wall = System.nanoTime() - started;
         for (Connection c : all) {
             c.sendAndClose(new Bye("done: " + reason));
         }
-        for (Connection c : all) {
-            c.awaitWritten(2000);
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(2);
+        while (all.stream().anyMatch(c -> !c.isClosed()) && System.nanoTime() < deadline) {
+            pump(deadline);
         }
         List<RobotSummary> summaries = new ArrayList<>();
         for (String name : sim.robotNames()) {
             summaries.add(sim.summary(name));
         }
-        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries);
+        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall);
     }
 
     private void awaitRobots() throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
-            long left = deadline - System.nanoTime();
-            ServerEvent e = left > 0 ? events.poll(left, TimeUnit.NANOSECONDS) : null;
-            if (e == null) {
+            if (System.nanoTime() >= deadline) {
                 throw new IllegalStateException("robots " + rules.missing() + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
                         + options.connectTimeoutMs() + " ms");
             }
-            rules.handle(e);
+            pump(deadline);
         }
     }
 
@@ -150,9 +143,8 @@ public final class EnvironmentServer implements AutoCloseable {
             long current = sim.stepCount() + 1;
             if (options.realtime()) {
                 long due = start + TimeUnit.MILLISECONDS.toNanos((current - 1) * stepMs);
-                long wait = due - System.nanoTime();
-                if (wait > 0) {
-                    TimeUnit.NANOSECONDS.sleep(wait);
+                while (System.nanoTime() < due) {
+                    pump(due);
                 }
             }
             Map<String, List<Command>> commands = collect(current);
@@ -162,17 +154,14 @@ public final class EnvironmentServer implements AutoCloseable {
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
-        Map<String, Connection> robots = new LinkedHashMap<>(rules.connectedRobots());
-        for (Map.Entry<String, Connection> r : robots.entrySet()) {
-            r.getValue().send(new TimeStep(current, sim.timeMs(), sim.state(r.getKey())));
-        }
         Map<String, List<Command>> commands = new HashMap<>();
         rules.openStep(current, commands);
+        for (Map.Entry<String, Connection> r : new ArrayList<>(rules.connectedRobots().entrySet())) {
+            r.getValue().send(new TimeStep(current, sim.timeMs(), sim.state(r.getKey())));
+        }
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
-        while (rules.waitingFor().size() > 0) {
-            long left = deadline - System.nanoTime();
-            ServerEvent e = left > 0 ? events.poll(left, TimeUnit.NANOSECONDS) : null;
-            if (e == null) {
+        while (!rules.waitingFor().isEmpty()) {
+            if (System.nanoTime() >= deadline) {
                 Set<String> late = new LinkedHashSet<>(rules.waitingFor());
                 for (String name : late) {
                     rules.drop(name, "it did not send its requests for step " + current + " within "
@@ -180,27 +169,86 @@ public final class EnvironmentServer implements AutoCloseable {
                 }
                 break;
             }
-            rules.handle(e);
+            pump(deadline);
         }
         rules.closeStep();
         return commands;
     }
 
+    /** Serves every ready connection once, waiting until something is ready or the deadline. */
+    private void pump(long deadlineNanos) throws InterruptedException {
+        long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadlineNanos - System.nanoTime()));
+        try {
+            selector.select(waitMs);
+        } catch (IOException e) {
+            throw new UncheckedIOException("the selector failed", e);
+        }
+        if (Thread.interrupted()) {
+            throw new InterruptedException();
+        }
+        Iterator<SelectionKey> it = selector.selectedKeys().iterator();
+        while (it.hasNext()) {
+            SelectionKey key = it.next();
+            it.remove();
+            if (!key.isValid()) {
+                continue;
+            }
+            if (key.isAcceptable()) {
+                accept((ServerSocketChannel) key.channel(), (Connection.Kind) key.attachment());
+            } else {
+                serve((Connection) key.attachment(), key);
+            }
+        }
+    }
+
+    private void accept(ServerSocketChannel server, Connection.Kind kind) {
+        try {
+            SocketChannel ch = server.accept();
+            if (ch != null) {
+                long limit = kind == Connection.Kind.ROBOT ? MAX_QUEUED_ROBOT : MAX_QUEUED_VIEWER;
+                all.add(new Connection(kind, ch, selector, codec, options.maxFrame(), limit));
+            }
+        } catch (IOException e) {
+            LOG.warning("accepting a " + kind.name().toLowerCase() + " connection failed: " + e.getMessage());
+        }
+    }
+
+    private void serve(Connection c, SelectionKey key) {
+        try {
+            if (key.isWritable()) {
+                c.writable();
+            }
+            if (key.isValid() && key.isReadable()) {
+                List<Message> messages = c.read(readBuffer);
+                if (messages == null) {
+                    rules.handle(new ServerEvent.Closed(c, SessionRules.DISCONNECTED));
+                    c.shut();
+                    return;
+                }
+                for (Message m : messages) {
+                    rules.handle(new ServerEvent.Received(c, m));
+                }
+            }
+        } catch (IOException e) {
+            rules.handle(new ServerEvent.Closed(c, e.getMessage()));
+            c.close(e.getMessage());
+        }
+    }
+
     /** Stops listening and closes every connection. */
     @Override
     public void close() {
-        closing = true;
-        for (ServerSocket s : new ServerSocket[] {robotSocket, viewerSocket}) {
-            if (s != null) {
+        for (Connection c : all) {
+            c.shut();
+        }
+        for (java.io.Closeable ch : new java.io.Closeable[] {robotChannel, viewerChannel, selector}) {
+            if (ch != null) {
                 try {
-                    s.close();
+                    ch.close();
                 } catch (IOException e) {
-                    LOG.fine("closing listener: " + e.getMessage());
+                    LOG.fine("closing: " + e.getMessage());
                 }
             }
-        }
-        for (Connection c : all) {
-            c.sendAndClose(new Bye("environment closing"));
         }
     }
 }

@@ -10,8 +10,9 @@ import robosim.env.core.RobotSummary;
  * @param timeMs    simulated time, ms
  * @param endReason why it ended
  * @param robots    every robot at the end, in the world file's order
+ * @param wallNanos wall-clock time the steps took, from the first step to the end (for benchmarks)
  */
-public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots) {
+public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos) {
     /** Copies the list so the record stays immutable. */
     public RunReport {
         robots = List.copyOf(robots);

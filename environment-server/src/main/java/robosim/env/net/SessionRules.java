@@ -26,6 +26,8 @@ import robosim.protocol.Welcome;
  */
 final class SessionRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
+    /** The reason given when a peer ends its connection cleanly. */
+    static final String DISCONNECTED = "it disconnected";
 
     private final Simulation sim;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
@@ -106,6 +108,7 @@ final class SessionRules {
             requests(c, req);
         } else if (m instanceof Bye bye) {
             LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            c.shut();
             drop(c.name(), null);
         } else {
             c.close("sent " + typeOf(m) + " during step " + openStep + "; a robot sends only robotRequests");
@@ -183,20 +186,23 @@ final class SessionRules {
     }
 
     private void closed(Connection c, String reason) {
+        if (DISCONNECTED.equals(reason)) {
+            c.shut();
+        }
         if (c.kind == Connection.Kind.VIEWER) {
             viewers.remove(c);
-            if (!"it disconnected".equals(reason)) {
+            if (!DISCONNECTED.equals(reason)) {
                 c.close(reason);
             }
             return;
         }
         String name = c.name();
         if (name != null && robots.get(name) == c) {
-            drop(name, "it disconnected".equals(reason) ? null : reason);
-            if ("it disconnected".equals(reason)) {
+            drop(name, DISCONNECTED.equals(reason) ? null : reason);
+            if (DISCONNECTED.equals(reason)) {
                 LOG.info(() -> "robot " + name + " disconnected at step " + sim.stepCount());
             }
-        } else if (!"it disconnected".equals(reason)) {
+        } else if (!DISCONNECTED.equals(reason)) {
             c.close(reason);
         }
     }

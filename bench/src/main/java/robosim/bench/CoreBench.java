@@ -1,0 +1,53 @@
+package robosim.bench;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import robosim.env.core.Simulation;
+import robosim.env.world.WorldReader;
+import robosim.protocol.Command;
+import robosim.protocol.RobotState;
+
+/**
+ * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
+ * {@link BenchRobots}, without TCP or threads. The gap to {@link StepRateBench} is what the wire
+ * and the lockstep handoffs cost.
+ */
+public final class CoreBench {
+    private CoreBench() {
+    }
+
+    /**
+     * @param robots    robots in the grid
+     * @param steps     steps to run
+     * @param dir       where to write the world
+     * @param robotFile the p3dx parameter file
+     * @return the figures
+     * @throws IOException if the world cannot be written
+     */
+    public static StepRateBench.Result run(int robots, long steps, Path dir, Path robotFile) throws IOException {
+        Simulation sim = new Simulation(WorldReader.read(GridWorld.write(robots, dir, robotFile)));
+        List<String> names = sim.robotNames();
+        long t0 = System.nanoTime();
+        for (long s = 0; s < steps; s++) {
+            Map<String, List<Command>> commands = new HashMap<>();
+            for (String name : names) {
+                RobotState st = sim.state(name);
+                int nearest = Integer.MAX_VALUE;
+                int index = 0;
+                for (int i = 0; i < st.sonar().length; i++) {
+                    if (st.sonar()[i] < nearest) {
+                        nearest = st.sonar()[i];
+                        index = i;
+                    }
+                }
+                boolean blocked = nearest < 600 && index <= 7;
+                commands.put(name, List.of(new Command.SetVel(blocked ? 0 : 300), new Command.SetRotVel(blocked ? 30 : 0)));
+            }
+            sim.step(commands);
+        }
+        return new StepRateBench.Result(robots, steps, (System.nanoTime() - t0) / 1e9);
+    }
+}

@@ -1,0 +1,134 @@
+package robosim.geometry;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The GeometryClient is pure geometry: no I/O (java.io, java.nio.file, java.net) and no drawing
+ * (java.awt), so it can be used by the Environment, the viewer and tests alike.
+ */
+@Timeout(value = 30, unit = TimeUnit.SECONDS)
+class ImportRulesTest {
+    private static final String MAIN = "src/main";
+
+    static Stream<Arguments> rules() {
+        return Stream.of(
+                Arguments.of("the network (java.net)", "\\bjava\\.net\\."),
+                Arguments.of("I/O (java.io)", "\\bjava\\.io\\."),
+                Arguments.of("files (java.nio.file)", "\\bjava\\.nio\\.file\\b"),
+                Arguments.of("channels (java.nio.channels)", "\\bjava\\.nio\\.channels\\b"),
+                Arguments.of("AWT (java.awt)", "\\bjava\\.awt\\b"),
+                Arguments.of("Swing (javax.swing)", "\\bjavax\\.swing\\b"));
+    }
+
+    @ParameterizedTest(name = "geometry-client does not use {0}")
+    @MethodSource("rules")
+    void geometryClientDoesNotUse(String what, String regex) throws IOException {
+        Pattern forbidden = Pattern.compile(regex);
+        List<String> offences = new ArrayList<>();
+        for (Path file : mainSources()) {
+            offences.addAll(offences(file, Files.readString(file), forbidden));
+        }
+        assertEquals(List.of(), offences, "geometry-client must not use " + what);
+    }
+
+    @Test
+    void theScanFindsTheMainSources() throws IOException {
+        List<Path> files = mainSources();
+        assertTrue(files.stream().anyMatch(f -> f.endsWith("GeometryClient.java")), "scanned " + files);
+    }
+
+    @Test
+    void theRulesCatchAForbiddenImportAndIgnoreComments() {
+        String source = """
+                package robosim.geometry;
+                // java.net.Socket is mentioned in a comment only
+                /* System.nanoTime() in a block comment */
+                import java.net.Socket;
+                class Bad { long t = System . nanoTime(); String s = "java.awt.Color"; }
+                """;
+        assertEquals(List.of("Bad.java:4: import java.net.Socket;"),
+                offences(Path.of("Bad.java"), source, Pattern.compile("\\bjava\\.net\\.")));
+        assertEquals(List.of("Bad.java:5: class Bad { long t = System . nanoTime(); String s = \"java.awt.Color\"; }"),
+                offences(Path.of("Bad.java"), source, Pattern.compile("\\bSystem\\s*\\.\\s*nanoTime\\b")));
+        assertEquals(List.of(), offences(Path.of("Bad.java"), source, Pattern.compile("\\bjava\\.awt\\b")),
+                "a string literal is not a use");
+    }
+
+    private static List<Path> mainSources() throws IOException {
+        Path dir = moduleDir().resolve(MAIN);
+        assertTrue(Files.isDirectory(dir), "no main sources at " + dir.toAbsolutePath());
+        try (Stream<Path> files = Files.walk(dir)) {
+            return files.filter(f -> f.toString().endsWith(".java")).sorted().toList();
+        }
+    }
+
+    /** The module directory: surefire's working directory, or its child when run from the root. */
+    private static Path moduleDir() {
+        Path cwd = Path.of("").toAbsolutePath();
+        return Files.isDirectory(cwd.resolve(MAIN)) ? cwd : cwd.resolve("geometry-client");
+    }
+
+    /** Lines of {@code source} whose code (comments and string literals removed) matches. */
+    static List<String> offences(Path file, String source, Pattern forbidden) {
+        String[] code = stripCommentsAndStrings(source).split("\n", -1);
+        String[] original = source.split("\n", -1);
+        List<String> found = new ArrayList<>();
+        for (int i = 0; i < code.length; i++) {
+            if (forbidden.matcher(code[i]).find()) {
+                found.add(file.getFileName() + ":" + (i + 1) + ": " + original[i].strip());
+            }
+        }
+        return found;
+    }
+
+    /** Blanks comments, string and char literals, keeping every newline so lines still match. */
+    static String stripCommentsAndStrings(String s) {
+        StringBuilder out = new StringBuilder(s.length());
+        int i = 0;
+        while (i < s.length()) {
+            char c = s.charAt(i);
+            if (s.startsWith("//", i)) {
+                while (i < s.length() && s.charAt(i) != '\n') {
+                    i++;
+                }
+            } else if (s.startsWith("/*", i)) {
+                int end = s.indexOf("*/", i + 2);
+                end = end < 0 ? s.length() : end + 2;
+                out.append(s.substring(i, end).replaceAll("[^\n]", " "));
+                i = end;
+            } else if (s.startsWith("\"\"\"", i)) {
+                int end = s.indexOf("\"\"\"", i + 3);
+                end = end < 0 ? s.length() : end + 3;
+                out.append(s.substring(i, end).replaceAll("[^\n]", " "));
+                i = end;
+            } else if (c == '"' || c == '\'') {
+                int j = i + 1;
+                while (j < s.length() && s.charAt(j) != c && s.charAt(j) != '\n') {
+                    j += s.charAt(j) == '\\' ? 2 : 1;
+                }
+                j = Math.min(j + 1, s.length());
+                out.append(" ".repeat(j - i));
+                i = j;
+            } else {
+                out.append(c);
+                i++;
+            }
+        }
+        return out.toString();
+    }
+}

@@ -1,0 +1,274 @@
+package robosim.hw;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.Message;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.RobotState;
+import robosim.protocol.TimeStep;
+import robosim.protocol.Welcome;
+
+/**
+ * The hand-over of simulated time between a robot's code and its hardware thread: who wakes on
+ * which step, when a step's requests may be sent, and that those requests never depend on thread
+ * timing.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class StepGateTest {
+    private static final long WAIT_MS = 5_000;
+
+    private final StepGate gate = new StepGate();
+    private final List<Thread> threads = new ArrayList<>();
+
+    @AfterEach
+    void stopThreads() throws InterruptedException {
+        gate.close();
+        for (Thread t : threads) {
+            t.interrupt();
+            t.join(WAIT_MS);
+            assertFalse(t.isAlive(), t.getName() + " has stopped");
+        }
+    }
+
+    private Thread start(String name, ThrowingRunnable body) {
+        Thread t = new Thread(() -> {
+            try {
+                body.run();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        }, name);
+        t.setDaemon(true);
+        threads.add(t);
+        t.start();
+        return t;
+    }
+
+    /** Waits (bounded) until {@code t} is blocked in {@code Object.wait}. */
+    private static void awaitWaiting(Thread t) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
+        while (t.getState() != Thread.State.WAITING && t.getState() != Thread.State.TIMED_WAITING) {
+            assertTrue(System.nanoTime() < deadline, t.getName() + " never started waiting: " + t.getState());
+            Thread.sleep(2);
+        }
+    }
+
+    @Test
+    void aWaiterForTime200SleepsThroughTime100AndWakesAtTime200() throws Exception {
+        CountDownLatch woke = new CountDownLatch(1);
+        AtomicLong wokeAt = new AtomicLong(-1);
+        Thread t = start("waiter", () -> {
+            gate.await(time -> time >= 200);
+            wokeAt.set(gate.timeMs());
+            woke.countDown();
+        });
+        awaitWaiting(t);
+
+        gate.advance(1, 100, () -> { });
+        assertFalse(woke.await(200, TimeUnit.MILLISECONDS), "time 100 does not satisfy time >= 200");
+
+        gate.advance(2, 200, () -> { });
+        assertTrue(woke.await(WAIT_MS, TimeUnit.MILLISECONDS), "time 200 wakes it");
+        assertEquals(200, wokeAt.get());
+    }
+
+    @Test
+    void awaitYieldWaitsForAJoinedThreadThatHasNotYetYielded() throws Exception {
+        CountDownLatch joined = new CountDownLatch(2);
+        CountDownLatch mayYield = new CountDownLatch(1);
+        start("yields-at-once", () -> {
+            gate.join(Thread.currentThread());
+            joined.countDown();
+            gate.await(time -> false);
+        });
+        start("yields-later", () -> {
+            gate.join(Thread.currentThread());
+            joined.countDown();
+            assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
+            gate.await(time -> false);
+        });
+        assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
+
+        assertEquals(-1, gate.awaitYield(150), "one participant is still running: the wait times out");
+
+        CompletableFuture<Integer> yielded = CompletableFuture.supplyAsync(() -> {
+            try {
+                return gate.awaitYield(WAIT_MS);
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        Thread.sleep(150);
+        assertFalse(yielded.isDone(), "awaitYield returned while a participant was still running");
+        mayYield.countDown();
+        assertEquals(2, yielded.get(WAIT_MS, TimeUnit.MILLISECONDS), "both participants have yielded");
+    }
+
+    @Test
+    void aParticipantThatDiesIsDroppedAndTheOthersYieldsSuffice() throws Exception {
+        CountDownLatch waiting = new CountDownLatch(1);
+        start("yields", () -> {
+            gate.join(Thread.currentThread());
+            waiting.countDown();
+            gate.await(time -> false);
+        });
+        Thread dies = start("dies", () -> gate.join(Thread.currentThread()));
+        assertTrue(waiting.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        dies.join(WAIT_MS);
+        assertFalse(dies.isAlive());
+
+        assertEquals(1, gate.awaitYield(WAIT_MS), "the dead participant no longer counts");
+    }
+
+    @Test
+    void awaitYieldReturnsZeroWhenEveryParticipantHasDied() throws Exception {
+        Thread dies = start("dies", () -> gate.join(Thread.currentThread()));
+        dies.join(WAIT_MS);
+        assertFalse(dies.isAlive());
+
+        assertEquals(0, gate.awaitYield(WAIT_MS));
+    }
+
+    @Test
+    void closeReleasesAWaitingThread() throws Exception {
+        CountDownLatch released = new CountDownLatch(1);
+        Thread t = start("waiter", () -> {
+            gate.await(time -> false);
+            released.countDown();
+        });
+        awaitWaiting(t);
+        assertFalse(gate.isClosed());
+
+        gate.close();
+        assertTrue(released.await(WAIT_MS, TimeUnit.MILLISECONDS), "close wakes the waiter");
+        assertTrue(gate.isClosed());
+    }
+
+    @Test
+    void theUpdateRunsBeforeTheWaitersWake() throws Exception {
+        AtomicReference<String> state = new AtomicReference<>("old");
+        AtomicReference<String> seen = new AtomicReference<>();
+        AtomicLong seenStep = new AtomicLong(-1);
+        CountDownLatch woke = new CountDownLatch(1);
+        Thread t = start("waiter", () -> {
+            gate.await(time -> time >= 100);
+            seen.set(state.get());
+            seenStep.set(gate.step());
+            woke.countDown();
+        });
+        awaitWaiting(t);
+
+        gate.advance(1, 100, () -> {
+            try {
+                Thread.sleep(100); // a slow update: a waiter woken early would see "old"
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            state.set("new");
+        });
+        assertTrue(woke.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        assertEquals("new", seen.get());
+        assertEquals(1, seenStep.get());
+    }
+
+    /**
+     * A robot thread that makes batch k of requests after waking at simulated time k × 100 ms must
+     * see batch k sent as its requests for step k + 1 (the step whose TimeStep carried time k × 100),
+     * in order, however long it dawdles between requests and before it yields.
+     */
+    @ParameterizedTest
+    @ValueSource(longs = {1, 2, 3})
+    void eachStepCarriesExactlyTheRequestsMadeBeforeTheYieldWhateverTheJitter(long seed) throws Exception {
+        final int steps = 12;
+        Random jitter = new Random(seed);
+        MessageCodec codec = new MessageCodec();
+        try (ServerSocket listener = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            listener.setSoTimeout((int) WAIT_MS);
+            HardwareSimulator hw = new HardwareSimulator(new RobotHello("r1", "pioneer", null), gate,
+                    r -> { }, new HardwareOptions(WAIT_MS, 10_000, 5_000));
+            AtomicReference<Throwable> robotFailure = new AtomicReference<>();
+            Thread robot = start("robot-r1", () -> {
+                try {
+                    hw.connect("127.0.0.1", listener.getLocalPort());
+                    gate.join(Thread.currentThread());
+                    hw.start();
+                    for (int k = 0; !gate.isClosed(); k++) {
+                        for (Command c : batch(k)) {
+                            Thread.sleep(jitter.nextInt(12));
+                            hw.request(new RobotRequest(c));
+                        }
+                        Thread.sleep(jitter.nextInt(12));
+                        long wake = (k + 1) * 100L;
+                        gate.await(time -> time >= wake);
+                    }
+                } catch (Throwable e) {
+                    robotFailure.set(e);
+                }
+            });
+
+            try (Socket env = listener.accept()) {
+                env.setSoTimeout((int) WAIT_MS);
+                FrameReader in = new FrameReader(env.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
+                FrameWriter out = new FrameWriter(env.getOutputStream(), codec);
+                assertInstanceOf(RobotHello.class, in.read());
+                out.write(new Welcome("r1", 100, state(0)));
+                for (int n = 1; n <= steps; n++) {
+                    out.write(new TimeStep(n, (n - 1) * 100L, state(n - 1)));
+                    Message m = in.read();
+                    RobotRequests requests = assertInstanceOf(RobotRequests.class, m, "step " + n);
+                    assertEquals(n, requests.step());
+                    assertEquals(batch(n - 1), requests.commands(), "the requests for step " + n);
+                }
+                out.write(new Bye("done"));
+            }
+            robot.join(WAIT_MS);
+            assertFalse(robot.isAlive(), "the robot's code returns once the connection ends");
+            assertEquals(null, robotFailure.get());
+        }
+    }
+
+    /** Batch k: k % 4 requests (so some steps have none), each naming its batch and place. */
+    private static List<Command> batch(int k) {
+        List<Command> commands = new ArrayList<>();
+        for (int i = 0; i < k % 4; i++) {
+            commands.add(new Command.SetVel(k * 1000 + i));
+        }
+        return commands;
+    }
+
+    private static RobotState state(long step) {
+        return new RobotState(step, step * 100, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+    }
+
+    @FunctionalInterface
+    private interface ThrowingRunnable {
+        void run() throws Exception;
+    }
+}

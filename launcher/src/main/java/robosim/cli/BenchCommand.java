@@ -1,0 +1,67 @@
+package robosim.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+import robosim.bench.CodecBench;
+import robosim.bench.CoreBench;
+import robosim.bench.StepRateBench;
+
+/** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Measure steps per second in the grid world (Environment in this JVM, robots in one client JVM, over TCP) and the wire formats.")
+final class BenchCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N[,N...]",
+            description = "robot counts to measure; default ${DEFAULT-VALUE}")
+    List<Integer> robots;
+
+    @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = "steps per measurement; default ${DEFAULT-VALUE}")
+    long steps;
+
+    @Option(names = "--out", defaultValue = "out/bench", paramLabel = "DIR", description = "where worlds and client logs go; default ${DEFAULT-VALUE}")
+    Path out;
+
+    @Option(names = "--skip-codec", description = "do not measure the wire formats")
+    boolean skipCodec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter o = spec.commandLine().getOut();
+        for (int n : robots) {
+            if (n < 1 || n > 400) {
+                spec.commandLine().getErr().println("robosim bench: " + n + " was supplied for --robots: counts are 1 to 400");
+                return 2;
+            }
+        }
+        if (steps < 10) {
+            spec.commandLine().getErr().println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
+            return 2;
+        }
+        Path root = Path.of(System.getProperty("robosim.root", "."));
+        Path p3dx = root.resolve("testLoadFiles/robots/p3dx.p");
+        Files.createDirectories(out);
+        o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s%n", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"), System.getProperty("os.arch"));
+        if (!skipCodec) {
+            CodecBench.print(o, CodecBench.run(20_000));
+        }
+        for (int n : robots) {
+            StepRateBench.Result core = CoreBench.run(n, steps, out, p3dx);
+            StepRateBench.Result tcp = StepRateBench.run(n, steps, out, p3dx);
+            o.printf(Locale.ROOT, "core only (no TCP, one thread): ");
+            StepRateBench.print(o, core);
+            StepRateBench.print(o, tcp);
+        }
+        return 0;
+    }
+}

@@ -1,0 +1,90 @@
+package robosim.protocol;
+
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Decodes length-prefixed frames (see {@link FrameReader}) from buffers that arrive in pieces, for
+ * non-blocking I/O. Frames may be split anywhere; a length over the limit is rejected as soon as
+ * its header is complete, before anything is allocated.
+ */
+public final class FrameDecoder {
+    private final MessageCodec codec;
+    private final int maxFrame;
+    private final ByteBuffer header = ByteBuffer.allocate(4);
+    private byte[] payload;
+    private int filled;
+
+    /**
+     * @param codec    decodes payloads
+     * @param maxFrame the largest payload accepted, in bytes
+     */
+    public FrameDecoder(MessageCodec codec, int maxFrame) {
+        if (maxFrame <= 0) {
+            throw new IllegalArgumentException(maxFrame + " was supplied for maxFrame: it must be greater than 0");
+        }
+        this.codec = codec;
+        this.maxFrame = maxFrame;
+    }
+
+    /**
+     * Consumes every byte of {@code in} and returns the messages completed by them.
+     *
+     * @param in bytes just received, ready to read
+     * @return the complete messages, in order; empty if none completed
+     * @throws FrameException if a frame is oversized, empty or undecodable
+     */
+    public List<Message> decode(ByteBuffer in) throws FrameException {
+        List<Message> out = new ArrayList<>(1);
+        while (in.hasRemaining()) {
+            if (payload == null) {
+                while (header.hasRemaining() && in.hasRemaining()) {
+                    header.put(in.get());
+                }
+                if (header.hasRemaining()) {
+                    break;
+                }
+                int length = header.getInt(0);
+                header.clear();
+                if (length == 0) {
+                    throw new FrameException("frame of 0 bytes: a frame holds at least 1 byte");
+                }
+                if (length < 0 || length > maxFrame) {
+                    throw new FrameException("frame of " + Integer.toUnsignedString(length)
+                            + " bytes exceeds the limit of " + maxFrame + " bytes");
+                }
+                payload = new byte[length];
+                filled = 0;
+            }
+            int n = Math.min(in.remaining(), payload.length - filled);
+            in.get(payload, filled, n);
+            filled += n;
+            if (filled == payload.length) {
+                byte[] done = payload;
+                payload = null;
+                out.add(codec.decode(done));
+            }
+        }
+        return out;
+    }
+
+    /** @return whether a frame has been started and not finished */
+    public boolean midFrame() {
+        return payload != null || header.position() > 0;
+    }
+
+    /**
+     * Encodes one message as a whole frame.
+     *
+     * @param codec   encodes the payload
+     * @param message the message
+     * @return the frame, ready to write
+     */
+    public static ByteBuffer frame(MessageCodec codec, Message message) {
+        byte[] p = codec.encode(message);
+        ByteBuffer b = ByteBuffer.allocate(4 + p.length);
+        b.putInt(p.length).put(p).flip();
+        return b;
+    }
+}
