@@ -80,7 +80,8 @@ final class EnvCommand implements Callable<Integer> {
             try {
                 server.bind();
             } catch (IOException e) {
-                err.println("robosim env: cannot listen on " + bind + " ports " + port + " and " + viewerPort + ": " + e.getMessage());
+                err.println("robosim env: cannot listen on " + bind + " ports " + port + " and " + viewerPort + ": "
+                        + e.getMessage());
                 return 1;
             }
             out.printf(Locale.ROOT, "Seed: %d%n", seed);

@@ -1,0 +1,158 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
+import picocli.CommandLine;
+
+/**
+ * The launcher's command line, executed in this JVM with captured writers: help, exit codes 0/1/2,
+ * and one-line errors that name the argument, never a stack trace.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class CommandLineTest {
+    @TempDir
+    Path dir;
+
+    /** What one execution printed and returned. */
+    private record Run(int exit, String out, String err) {
+        /** Fails if standard error holds a stack trace. */
+        void assertNoStackTrace() {
+            assertFalse(err.contains("\tat ") || err.contains("Exception"), "a one-line error, not a stack trace:\n" + err);
+        }
+    }
+
+    private static Run execute(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cl = Main.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        int exit = cl.execute(args);
+        return new Run(exit, out.toString(), err.toString());
+    }
+
+    private static String emptyRoom() {
+        return Harness.root().resolve("testLoadFiles/environment/empty-room.xml").toString();
+    }
+
+    @Test
+    void helpOfTheTopCommandListsTheSubcommands() {
+        Run r = execute("--help");
+        assertEquals(0, r.exit(), r.err());
+        assertTrue(r.out().startsWith("Usage: robosim "), r.out());
+        for (String sub : new String[] {"env", "robot", "viewer", "demo"}) {
+            assertTrue(r.out().contains("  " + sub + " "), "lists " + sub + ":\n" + r.out());
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"env", "robot", "viewer", "demo"})
+    void helpOfEachSubcommandPrintsItsUsage(String sub) {
+        Run r = execute(sub, "--help");
+        assertEquals(0, r.exit(), r.err());
+        assertTrue(r.out().startsWith("Usage: robosim " + sub), r.out());
+        assertTrue(r.out().contains("--help"), r.out());
+        assertEquals("", r.err());
+    }
+
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "env                      | WORLD",
+            "robot                    | CLASS",
+            "robot Cls r1 127.0.0.1   | PORT",
+            "viewer                   | --png-dir"})
+    void aMissingRequiredArgumentExitsWith2AndNamesIt(String args, String missing) {
+        Run r = execute(args.split(" "));
+        assertEquals(2, r.exit(), r.err());
+        assertTrue(r.err().contains("Missing required") && r.err().contains(missing), r.err());
+    }
+
+    @Test
+    void envWithANonexistentWorldFileExitsWith1AndNamesTheFile() {
+        Path missing = dir.resolve("no-such-world.xml");
+        Run r = execute("env", missing.toString());
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().startsWith("robosim env: ") && r.err().contains(missing.toString()), r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void envWithADirectoryForTheWorldFileExitsWith1AndNamesIt() {
+        Run r = execute("env", dir.toString());
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().startsWith("robosim env: ") && r.err().contains(dir.toString()), r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void envWithARobotOutsideTheWorldExitsWith1AndNamesFileAndLine() throws Exception {
+        Path p3dx = Harness.root().resolve("testLoadFiles/robots/p3dx.p").toAbsolutePath();
+        Path world = dir.resolve("outside.xml");
+        Files.writeString(world, """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <world name="outside" width="6000" height="6000" boundary="true">
+                  <robot name="r1" type="pioneer" x="1500" y="1500" params="%s"/>
+                  <robot name="r2" type="pioneer" x="9000" y="1000" params="%s"/>
+                </world>
+                """.formatted(p3dx, p3dx));
+        Run r = execute("env", world.toString());
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().contains(world + ":4: "), "names file:line of r2:\n" + r.err());
+        assertTrue(r.err().contains("outside the world"), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @ParameterizedTest
+    @CsvSource({"--port, -5, robotPort", "--port, 70000, robotPort", "--viewer-port, -1, viewerPort",
+            "--connect-timeout, 0, connectTimeoutMs", "--step-timeout, 0, stepTimeoutMs"})
+    void envWithAnInvalidOptionExitsWith2AndSaysWhy(String option, String value, String named) {
+        Run r = execute("env", option, value, emptyRoom());
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim env: " + value + " was supplied for " + named, r.err().strip().replaceAll(":[^:]*$", ""),
+                r.err());
+        assertEquals(1, r.err().strip().lines().count(), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void envOnAPortInUseExitsWith1AndSaysWhy() throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            Run r = execute("env", "--port", Integer.toString(taken.getLocalPort()), "--viewer-port", "0", emptyRoom());
+            assertEquals(1, r.exit(), r.err());
+            assertTrue(r.err().startsWith("robosim env: cannot listen on 127.0.0.1 ports " + taken.getLocalPort()), r.err());
+            r.assertNoStackTrace();
+        }
+    }
+
+    @Test
+    void robotWithAClassThatDoesNotExistExitsWith1AndSaysSo() {
+        Run r = execute("robot", "no.such.RobotProgram", "r1", "127.0.0.1", "5000");
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().startsWith("robosim robot: no class no.such.RobotProgram"), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @Test
+    void robotWithPort70000ExitsWith2AndNamesTheRule() {
+        Run r = execute("robot", "no.such.RobotProgram", "r1", "127.0.0.1", "70000");
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim robot: 70000 was supplied for PORT: a port is 1 to 65535", r.err().strip());
+    }
+}
