@@ -1,6 +1,7 @@
 package robosim.hw;
 
 import java.io.IOException;
+import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
@@ -30,6 +31,7 @@ import robosim.protocol.Welcome;
  */
 public final class HardwareSimulator {
     private static final Logger LOG = Logger.getLogger(HardwareSimulator.class.getName());
+    private static final long RETRY_MS = 200;
 
     private final RobotHello hello;
     private final StepGate gate;
@@ -66,9 +68,28 @@ public final class HardwareSimulator {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     public Welcome connect(String host, int port) throws IOException {
-        socket = new Socket();
+        long deadline = System.currentTimeMillis() + options.connectTimeoutMs();
+        while (true) {
+            socket = new Socket();
+            try {
+                socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
+                break;
+            } catch (ConnectException e) {
+                // the Environment may still be starting: try again until the connect timeout
+                socket.close();
+                if (System.currentTimeMillis() + RETRY_MS > deadline) {
+                    throw new ConnectException("no Environment at " + host + ":" + port + " within "
+                            + options.connectTimeoutMs() + " ms (" + e.getMessage() + ")");
+                }
+                try {
+                    Thread.sleep(RETRY_MS);
+                } catch (InterruptedException ie) {
+                    Thread.currentThread().interrupt();
+                    throw new IOException("interrupted while connecting", ie);
+                }
+            }
+        }
         try {
-            socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
             socket.setTcpNoDelay(true);
             socket.setSoTimeout((int) options.connectTimeoutMs());
             reader = new FrameReader(socket.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
