@@ -291,7 +291,7 @@ public final class GeometryClient {
                 found.addAll(java.util.Arrays.asList(b.segments));
             }
         }
-        return new Surroundings(found);
+        return new Surroundings(x, y, found);
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {

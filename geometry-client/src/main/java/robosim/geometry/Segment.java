@@ -3,10 +3,15 @@ package robosim.geometry;
 /** A straight edge of an obstacle or body, in world mm. */
 record Segment(double x1, double y1, double x2, double y2) {
 
-    /** @return whether this segment's bounding box lies farther than {@code range} from a point */
-    boolean farFrom(double x, double y, double range) {
-        return Math.min(x1, x2) - x > range || x - Math.max(x1, x2) > range
-                || Math.min(y1, y2) - y > range || y - Math.max(y1, y2) > range;
+    /** @return the distance from a point to the nearest point of this segment */
+    double distanceTo(double x, double y) {
+        double ex = x2 - x1;
+        double ey = y2 - y1;
+        double len2 = ex * ex + ey * ey;
+        double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((x - x1) * ex + (y - y1) * ey) / len2));
+        double px = x1 + t * ex - x;
+        double py = y1 + t * ey - y;
+        return Math.sqrt(px * px + py * py);
     }
 
     /**

@@ -9,10 +9,30 @@ import java.util.List;
  * the gathered radius.
  */
 public final class Surroundings {
+    private final double cx;
+    private final double cy;
     private final Segment[] segments;
+    /** Each segment's distance from the centre, ascending, in the order of {@link #segments}. */
+    private final double[] nearest;
 
-    Surroundings(List<Segment> segments) {
-        this.segments = segments.toArray(new Segment[0]);
+    /** Sorts the edges by their distance from the centre, so a query can stop early. */
+    Surroundings(double cx, double cy, List<Segment> found) {
+        this.cx = cx;
+        this.cy = cy;
+        int n = found.size();
+        double[] d = new double[n];
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            d[i] = found.get(i).distanceTo(cx, cy);
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (a, b) -> Double.compare(d[a], d[b]));
+        segments = new Segment[n];
+        nearest = new double[n];
+        for (int i = 0; i < n; i++) {
+            segments[i] = found.get(order[i]);
+            nearest[i] = d[order[i]];
+        }
     }
 
     /** @return the number of edges gathered */
@@ -55,11 +75,13 @@ public final class Surroundings {
         double lx = Math.cos(th + halfAngle);
         double ly = Math.sin(th + halfAngle);
         double best = maxRange;
-        for (Segment s : segments) {
-            if (s.farFrom(x, y, best)) {
-                continue;
+        double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+        for (int i = 0; i < segments.length; i++) {
+            // no edge farther from the centre can be nearer the apex than this one
+            if (nearest[i] - offset > best) {
+                break;
             }
-            best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
+            best = Math.min(best, segments[i].wedgeDistance(x, y, rx, ry, lx, ly));
         }
         return best;
     }

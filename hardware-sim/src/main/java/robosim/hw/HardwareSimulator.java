@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -24,14 +25,35 @@ import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
 
 /**
- * A robot's link to the Environment, one thread per robot. Each step it receives the time step and
- * the responses, hands them to the Robot-Object through the {@link StepGate}, waits until the
- * robot's code has yielded, then drains the {@code robotRequestQueue} and sends those requests as
- * the robot's requests for the step.
+ * A robot's link to the Environment, one thread per robot. Each step its thread receives the time
+ * step and the responses and hands them to the Robot-Object through the {@link StepGate}; once the
+ * robot's code has yielded, the {@code robotRequestQueue} is drained and sent as the robot's
+ * requests for the step (by the last robot thread to yield, so no thread wakes just to send). One
+ * watchdog thread per JVM sends for robots whose code ended without yielding, and warns about code
+ * that does not yield.
  */
 public final class HardwareSimulator {
     private static final Logger LOG = Logger.getLogger(HardwareSimulator.class.getName());
     private static final long RETRY_MS = 200;
+    private static final long WATCH_MS = 50;
+    private static final List<HardwareSimulator> WATCHED = new CopyOnWriteArrayList<>();
+
+    static {
+        Thread watchdog = new Thread(() -> {
+            while (true) {
+                for (HardwareSimulator hw : WATCHED) {
+                    hw.watch();
+                }
+                try {
+                    Thread.sleep(WATCH_MS);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "hw-watchdog");
+        watchdog.setDaemon(true);
+        watchdog.start();
+    }
 
     private final RobotHello hello;
     private final StepGate gate;
@@ -44,6 +66,8 @@ public final class HardwareSimulator {
     private FrameReader reader;
     private Thread thread;
     private volatile String endReason;
+    private volatile long openStep;
+    private long warnedStep = -1;
 
     /**
      * @param hello     the robot's name, type and parameters
@@ -57,6 +81,7 @@ public final class HardwareSimulator {
         this.gate = gate;
         this.responses = responses;
         this.options = options;
+        gate.onAllYielded(this::sendRequests);
     }
 
     /**
@@ -110,6 +135,7 @@ public final class HardwareSimulator {
 
     /** Starts the robot's hardware thread; call after {@link #connect}. */
     public void start() {
+        WATCHED.add(this);
         thread = new Thread(this::run, "hw-" + hello.name());
         thread.setDaemon(true);
         thread.start();
@@ -145,10 +171,10 @@ public final class HardwareSimulator {
             Message m;
             while ((m = reader.read()) != null) {
                 if (m instanceof TimeStep ts) {
-                    if (!step(ts)) {
-                        reason = "the robot's code has ended";
-                        writer.write(new Bye(reason));
-                        break;
+                    openStep = ts.step();
+                    RobotSensorResponse r = new RobotSensorResponse(ts.state());
+                    if (gate.advance(ts.state().step(), ts.state().timeMs(), () -> responses.accept(r))) {
+                        sendRequests();
                     }
                 } else if (m instanceof Bye bye) {
                     reason = "the Environment said " + bye.reason();
@@ -162,34 +188,50 @@ public final class HardwareSimulator {
             reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
         } catch (IOException e) {
             reason = endReason != null ? endReason : e.getMessage();
-        } catch (InterruptedException e) {
-            reason = "interrupted";
-            Thread.currentThread().interrupt();
         }
         end(reason);
     }
 
-    private boolean step(TimeStep ts) throws IOException, InterruptedException {
-        RobotSensorResponse r = new RobotSensorResponse(ts.state());
-        gate.advance(ts.state().step(), ts.state().timeMs(), () -> responses.accept(r));
-        int alive;
-        while ((alive = gate.awaitYield(options.yieldWarningMs())) < 0) {
-            LOG.warning(() -> "robot " + hello.name() + "'s code has not yielded for step " + ts.step()
-                    + " after " + options.yieldWarningMs() + " ms; it should wait with ArUtil.sleep or a blocking call");
+    /**
+     * Sends the open step's requests: everything the robot's code queued before it yielded. Run by
+     * whichever thread saw the robot's code yield (see {@link StepGate}); if the code has ended,
+     * says bye instead.
+     */
+    private void sendRequests() {
+        try {
+            if (gate.participantCount() == 0) {
+                writer.write(new Bye("the robot's code has ended"));
+                end("the robot's code has ended");
+                return;
+            }
+            List<Command> commands = new ArrayList<>();
+            RobotRequest req;
+            while ((req = robotRequestQueue.poll()) != null) {
+                commands.add(req.command());
+            }
+            writer.write(new RobotRequests(openStep, commands));
+        } catch (IOException e) {
+            end("sending requests failed: " + e.getMessage());
         }
-        if (alive == 0 || gate.isClosed()) {
-            return false;
+    }
+
+    /** Looks after robots whose code ended without yielding, and warns about code that never yields. */
+    private void watch() {
+        if (gate.claimIfYielded()) {
+            sendRequests();
+            return;
         }
-        List<Command> commands = new ArrayList<>();
-        RobotRequest req;
-        while ((req = robotRequestQueue.poll()) != null) {
-            commands.add(req.command());
+        long unsent = gate.unsentNanos();
+        long warnAfter = options.yieldWarningMs() * 1_000_000L;
+        if (unsent > warnAfter && warnedStep != openStep) {
+            warnedStep = openStep;
+            LOG.warning(() -> "robot " + hello.name() + "'s code has not yielded for step " + openStep + " after "
+                    + options.yieldWarningMs() + " ms; it should wait with ArUtil.sleep or a blocking call");
         }
-        writer.write(new RobotRequests(ts.step(), commands));
-        return true;
     }
 
     private void end(String reason) {
+        WATCHED.remove(this);
         if (endReason == null) {
             endReason = reason;
             LOG.fine(() -> "robot " + hello.name() + ": " + reason);

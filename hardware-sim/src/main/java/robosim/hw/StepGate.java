@@ -9,17 +9,30 @@ import java.util.function.LongPredicate;
 /**
  * Where a robot's code and its {@link HardwareSimulator} hand simulated time to each other. The
  * robot code's threads (its participants) run between steps and then yield: they wait for a
- * condition on simulated time ({@link #await}). The hardware simulator publishes each new step's
- * time ({@link #advance}), which wakes the participants whose condition now holds, and then waits
- * until every participant has yielded again ({@link #awaitYield}) before it sends the step's
- * requests. So what a robot requests for a step never depends on thread timing.
+ * condition on simulated time ({@link #await}). The hardware simulator publishes each new step
+ * ({@link #advance}), which wakes the participants whose condition now holds. Once every
+ * participant has yielded again, the step's requests are sent, exactly once, by whichever thread
+ * saw that moment: the last participant to yield, or the hardware thread itself when nobody woke.
+ * So what a robot requests for a step never depends on thread timing, and no extra thread wakes
+ * just to send.
  */
 public final class StepGate {
     private final Set<Thread> participants = new LinkedHashSet<>();
     private final Map<Thread, LongPredicate> waiting = new LinkedHashMap<>();
+    private Runnable sender = () -> { };
     private long timeMs;
     private long step;
+    private long unsentSince = -1;
     private boolean closed;
+
+    /**
+     * Sets what sends a step's requests, run outside the gate's lock by the thread that claims it.
+     *
+     * @param sender drains the request queue and sends it
+     */
+    public synchronized void onAllYielded(Runnable sender) {
+        this.sender = sender;
+    }
 
     /**
      * Makes a thread one whose yields the steps wait for.
@@ -35,10 +48,17 @@ public final class StepGate {
      *
      * @param thread a thread of the robot's code
      */
-    public synchronized void leave(Thread thread) {
-        participants.remove(thread);
-        waiting.remove(thread);
-        notifyAll();
+    public void leave(Thread thread) {
+        boolean send;
+        synchronized (this) {
+            participants.remove(thread);
+            waiting.remove(thread);
+            notifyAll();
+            send = claim();
+        }
+        if (send) {
+            sender.run();
+        }
     }
 
     /** @return simulated time of the latest state, ms */
@@ -56,24 +76,39 @@ public final class StepGate {
         return closed;
     }
 
+    /** @return the robot-code threads still alive */
+    public synchronized int participantCount() {
+        participants.removeIf(t -> !t.isAlive());
+        return participants.size();
+    }
+
     /**
      * Yields the calling thread until {@code wakeWhen} holds for the simulated time (or the
-     * connection ends). The calling thread becomes a participant if it was not one.
+     * connection ends). The calling thread becomes a participant if it was not one. If it is the
+     * last participant to yield for the open step, it sends the step's requests first.
      *
      * @param wakeWhen a condition on simulated time in ms, checked as each step arrives
      * @throws InterruptedException if interrupted while waiting
      */
-    public synchronized void await(LongPredicate wakeWhen) throws InterruptedException {
+    public void await(LongPredicate wakeWhen) throws InterruptedException {
         Thread me = Thread.currentThread();
-        participants.add(me);
-        waiting.put(me, wakeWhen);
-        notifyAll();
-        try {
-            while (!closed && waiting.containsKey(me)) {
-                wait();
+        boolean send;
+        synchronized (this) {
+            participants.add(me);
+            waiting.put(me, wakeWhen);
+            send = claim();
+        }
+        if (send) {
+            sender.run();
+        }
+        synchronized (this) {
+            try {
+                while (!closed && waiting.containsKey(me)) {
+                    wait();
+                }
+            } finally {
+                waiting.remove(me);
             }
-        } finally {
-            waiting.remove(me);
         }
     }
 
@@ -84,38 +119,47 @@ public final class StepGate {
      * @param newStep the step the state belongs to
      * @param newTime its simulated time, ms
      * @param update  installs the new state
+     * @return true if nobody woke, so the caller must send the step's requests now
      */
-    public synchronized void advance(long newStep, long newTime, Runnable update) {
+    public synchronized boolean advance(long newStep, long newTime, Runnable update) {
         update.run();
         step = newStep;
         timeMs = newTime;
+        unsentSince = System.nanoTime();
         waiting.entrySet().removeIf(e -> e.getValue().test(newTime));
         notifyAll();
+        return claim();
     }
 
     /**
-     * Waits until every participant has yielded (or has ended).
+     * Claims the open step's sending if every participant still alive has yielded: for a watchdog
+     * that looks after participants which ended without yielding.
      *
-     * @param timeoutMs the longest wait
-     * @return the number of participants still alive, or -1 if the wait timed out
-     * @throws InterruptedException if interrupted
+     * @return true if the caller must send the step's requests now
      */
-    public synchronized int awaitYield(long timeoutMs) throws InterruptedException {
-        long deadline = System.currentTimeMillis() + timeoutMs;
-        while (!closed) {
-            participants.removeIf(t -> !t.isAlive());
-            waiting.keySet().removeIf(t -> !t.isAlive());
-            if (waiting.keySet().containsAll(participants)) {
-                return participants.size();
-            }
-            long left = deadline - System.currentTimeMillis();
-            if (left <= 0) {
-                return -1;
-            }
-            // a participant that ends without yielding sends no notification: look again soon
-            wait(Math.min(left, 20));
+    public synchronized boolean claimIfYielded() {
+        return claim();
+    }
+
+    /**
+     * @return nanoseconds (of {@link System#nanoTime}) since the open step's state arrived and its
+     *         requests are still unsent, or -1 if nothing is waiting to be sent
+     */
+    public synchronized long unsentNanos() {
+        return unsentSince < 0 ? -1 : System.nanoTime() - unsentSince;
+    }
+
+    private boolean claim() {
+        if (closed || unsentSince < 0) {
+            return false;
         }
-        return participants.size();
+        participants.removeIf(t -> !t.isAlive());
+        waiting.keySet().removeIf(t -> !t.isAlive());
+        if (!waiting.keySet().containsAll(participants)) {
+            return false;
+        }
+        unsentSince = -1;
+        return true;
     }
 
     /** Ends the gate: every waiting thread returns. */

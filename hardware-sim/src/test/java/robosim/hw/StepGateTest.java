@@ -11,7 +11,6 @@ import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
@@ -100,10 +99,16 @@ class StepGateTest {
     }
 
     @Test
-    void awaitYieldWaitsForAJoinedThreadThatHasNotYetYielded() throws Exception {
+    void theStepIsSentByTheLastThreadToYieldAndOnlyThen() throws Exception {
+        AtomicReference<String> sentBy = new AtomicReference<>();
+        CountDownLatch sent = new CountDownLatch(1);
+        gate.onAllYielded(() -> {
+            sentBy.set(Thread.currentThread().getName());
+            sent.countDown();
+        });
         CountDownLatch joined = new CountDownLatch(2);
         CountDownLatch mayYield = new CountDownLatch(1);
-        start("yields-at-once", () -> {
+        Thread first = start("yields-at-once", () -> {
             gate.join(Thread.currentThread());
             joined.countDown();
             gate.await(time -> false);
@@ -115,45 +120,57 @@ class StepGateTest {
             gate.await(time -> false);
         });
         assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        awaitWaiting(first);
 
-        assertEquals(-1, gate.awaitYield(150), "one participant is still running: the wait times out");
-
-        CompletableFuture<Integer> yielded = CompletableFuture.supplyAsync(() -> {
-            try {
-                return gate.awaitYield(WAIT_MS);
-            } catch (InterruptedException e) {
-                throw new IllegalStateException(e);
-            }
-        });
-        Thread.sleep(150);
-        assertFalse(yielded.isDone(), "awaitYield returned while a participant was still running");
+        assertFalse(gate.advance(1, 0, () -> { }), "one participant is still running: nobody sends yet");
+        assertFalse(sent.await(150, TimeUnit.MILLISECONDS), "sent while a participant was still running");
         mayYield.countDown();
-        assertEquals(2, yielded.get(WAIT_MS, TimeUnit.MILLISECONDS), "both participants have yielded");
+        assertTrue(sent.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        assertEquals("yields-later", sentBy.get());
+        assertFalse(gate.claimIfYielded(), "a step is sent once");
+    }
+
+    @Test
+    void advanceAsksTheCallerToSendWhenNobodyWakes() throws Exception {
+        CountDownLatch waiting = new CountDownLatch(1);
+        Thread t = start("sleeper", () -> {
+            gate.join(Thread.currentThread());
+            waiting.countDown();
+            gate.await(time -> time >= 300);
+        });
+        assertTrue(waiting.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        awaitWaiting(t);
+        assertTrue(gate.advance(1, 100, () -> { }), "the sleeper sleeps on: the caller sends");
+        assertFalse(gate.claimIfYielded());
+        assertTrue(gate.advance(2, 200, () -> { }));
     }
 
     @Test
     void aParticipantThatDiesIsDroppedAndTheOthersYieldsSuffice() throws Exception {
         CountDownLatch waiting = new CountDownLatch(1);
-        start("yields", () -> {
+        Thread yields = start("yields", () -> {
             gate.join(Thread.currentThread());
             waiting.countDown();
             gate.await(time -> false);
         });
         Thread dies = start("dies", () -> gate.join(Thread.currentThread()));
         assertTrue(waiting.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        awaitWaiting(yields);
         dies.join(WAIT_MS);
         assertFalse(dies.isAlive());
 
-        assertEquals(1, gate.awaitYield(WAIT_MS), "the dead participant no longer counts");
+        assertTrue(gate.advance(1, 0, () -> { }), "the dead participant no longer counts");
+        assertEquals(1, gate.participantCount());
     }
 
     @Test
-    void awaitYieldReturnsZeroWhenEveryParticipantHasDied() throws Exception {
+    void whenEveryParticipantHasDiedNoneRemain() throws Exception {
         Thread dies = start("dies", () -> gate.join(Thread.currentThread()));
         dies.join(WAIT_MS);
         assertFalse(dies.isAlive());
 
-        assertEquals(0, gate.awaitYield(WAIT_MS));
+        assertTrue(gate.advance(1, 0, () -> { }));
+        assertEquals(0, gate.participantCount());
     }
 
     @Test

@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import java.io.BufferedInputStream;
 import java.io.DataInputStream;
 import java.io.EOFException;
 import java.io.IOException;
@@ -26,7 +27,7 @@ public final class FrameReader {
         if (maxFrame <= 0) {
             throw new IllegalArgumentException(maxFrame + " was supplied for maxFrame: it must be greater than 0");
         }
-        this.in = new DataInputStream(in);
+        this.in = new DataInputStream(new BufferedInputStream(in, 1 << 16));
         this.codec = codec;
         this.maxFrame = maxFrame;
     }
