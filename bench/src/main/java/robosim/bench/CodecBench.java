@@ -15,9 +15,12 @@ import robosim.protocol.ViewerFrame;
 
 /**
  * The wire formats compared on the messages of every step: a robot's time step (state and 16
- * sonars), its requests (a velocity and a rotation), and a viewer frame of 100 robots.
+ * sonars), its requests (a velocity and a rotation), and a viewer frame of 100 robots. Every
+ * format and message is warmed up first; each figure is the median of five trials.
  */
 public final class CodecBench {
+    private static final int TRIALS = 5;
+
     private CodecBench() {
     }
 
@@ -44,28 +47,48 @@ public final class CodecBench {
      * @throws FrameException never, for well-formed messages
      */
     public static List<Result> run(int rounds) throws FrameException {
+        List<MessageCodec> codecs = List.of(new MessageCodec(MessageCodec.Format.SMILE),
+                new MessageCodec(MessageCodec.Format.JSON));
+        for (int warm = 0; warm < 3; warm++) { // every pair warmed before any is measured
+            for (MessageCodec codec : codecs) {
+                for (Message m : messages()) {
+                    for (int i = 0; i < rounds; i++) {
+                        codec.decode(codec.encode(m));
+                    }
+                }
+            }
+        }
         List<Result> out = new ArrayList<>();
-        for (MessageCodec.Format f : MessageCodec.Format.values()) {
-            MessageCodec codec = new MessageCodec(f);
+        for (int f = 0; f < codecs.size(); f++) {
+            MessageCodec codec = codecs.get(f);
             for (Message m : messages()) {
                 byte[] bytes = codec.encode(m);
-                for (int i = 0; i < rounds; i++) { // warm up
-                    codec.decode(codec.encode(m));
+                double[] enc = new double[TRIALS];
+                double[] dec = new double[TRIALS];
+                for (int t = 0; t < TRIALS; t++) {
+                    long t0 = System.nanoTime();
+                    for (int i = 0; i < rounds; i++) {
+                        bytes = codec.encode(m);
+                    }
+                    long t1 = System.nanoTime();
+                    for (int i = 0; i < rounds; i++) {
+                        codec.decode(bytes);
+                    }
+                    long t2 = System.nanoTime();
+                    enc[t] = (t1 - t0) / 1e3 / rounds;
+                    dec[t] = (t2 - t1) / 1e3 / rounds;
                 }
-                long t0 = System.nanoTime();
-                for (int i = 0; i < rounds; i++) {
-                    bytes = codec.encode(m);
-                }
-                long t1 = System.nanoTime();
-                for (int i = 0; i < rounds; i++) {
-                    codec.decode(bytes);
-                }
-                long t2 = System.nanoTime();
-                out.add(new Result(f.name(), m.getClass().getSimpleName(), bytes.length,
-                        (t1 - t0) / 1e3 / rounds, (t2 - t1) / 1e3 / rounds));
+                out.add(new Result(MessageCodec.Format.values()[f].name(), m.getClass().getSimpleName(),
+                        bytes.length, median(enc), median(dec)));
             }
         }
         return out;
+    }
+
+    static double median(double[] values) {
+        double[] v = values.clone();
+        java.util.Arrays.sort(v);
+        return v[v.length / 2];
     }
 
     /**

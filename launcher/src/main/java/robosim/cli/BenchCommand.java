@@ -34,6 +34,9 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--skip-codec", description = "do not measure the wire formats")
     boolean skipCodec;
 
+    @Option(names = "--repeat", defaultValue = "1", paramLabel = "R", description = "runs per robot count; the median is printed too; default ${DEFAULT-VALUE}")
+    int repeat;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter o = spec.commandLine().getOut();
@@ -42,6 +45,10 @@ final class BenchCommand implements Callable<Integer> {
                 spec.commandLine().getErr().println("robosim bench: " + n + " was supplied for --robots: counts are 1 to 400");
                 return 2;
             }
+        }
+        if (repeat < 1) {
+            spec.commandLine().getErr().println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
+            return 2;
         }
         if (steps < 10) {
             spec.commandLine().getErr().println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
@@ -56,11 +63,19 @@ final class BenchCommand implements Callable<Integer> {
             CodecBench.print(o, CodecBench.run(20_000));
         }
         for (int n : robots) {
-            StepRateBench.Result core = CoreBench.run(n, steps, out, p3dx);
-            StepRateBench.Result tcp = StepRateBench.run(n, steps, out, p3dx);
             o.printf(Locale.ROOT, "core only (no TCP, one thread): ");
-            StepRateBench.print(o, core);
-            StepRateBench.print(o, tcp);
+            StepRateBench.print(o, CoreBench.run(n, steps, out, p3dx));
+            double[] rates = new double[repeat];
+            for (int r = 0; r < repeat; r++) {
+                StepRateBench.Result tcp = StepRateBench.run(n, steps, out, p3dx);
+                StepRateBench.print(o, tcp);
+                rates[r] = tcp.realtimeFactor();
+            }
+            if (repeat > 1) {
+                java.util.Arrays.sort(rates);
+                o.printf(Locale.ROOT, "step rate: %3d robots  median of %d runs: %.1fx real time (range %.1f to %.1f)%n",
+                        n, repeat, rates[repeat / 2], rates[0], rates[repeat - 1]);
+            }
         }
         return 0;
     }
