@@ -20,11 +20,29 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * The simulation core ({@code robosim.env.core}) stays plain deterministic Java: no network, no
  * drawing, no threads, no clocks, no randomness of its own (a seed comes in from outside). It is
- * stepped by the TCP layer, never the other way round.
+ * stepped by the TCP layer, never the other way round. The GeometryClient it builds on is pure
+ * geometry: no I/O and no drawing, so the Environment, the viewer and tests can all use it.
  */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class ImportRulesTest {
     private static final String CORE = "src/main/java/robosim/env/core";
+    private static final String GEOMETRY = "../geometry-client/src/main";
+
+    static Stream<Arguments> geometryRules() {
+        return Stream.of(
+                Arguments.of("the network (java.net)", "\\bjava\\.net\\."),
+                Arguments.of("I/O (java.io)", "\\bjava\\.io\\."),
+                Arguments.of("files (java.nio.file)", "\\bjava\\.nio\\.file\\b"),
+                Arguments.of("channels (java.nio.channels)", "\\bjava\\.nio\\.channels\\b"),
+                Arguments.of("AWT (java.awt)", "\\bjava\\.awt\\b"),
+                Arguments.of("Swing (javax.swing)", "\\bjavax\\.swing\\b"));
+    }
+
+    @ParameterizedTest(name = "geometry-client does not use {0}")
+    @MethodSource("geometryRules")
+    void geometryClientDoesNotUse(String what, String regex) throws IOException {
+        assertEquals(List.of(), offences(sources(GEOMETRY), Pattern.compile(regex)), "geometry-client must not use " + what);
+    }
 
     static Stream<Arguments> rules() {
         return Stream.of(
@@ -44,18 +62,21 @@ class ImportRulesTest {
     @ParameterizedTest(name = "the core does not use {0}")
     @MethodSource("rules")
     void theCoreDoesNotUse(String what, String regex) throws IOException {
-        Pattern forbidden = Pattern.compile(regex);
-        List<String> offences = new ArrayList<>();
-        for (Path file : coreSources()) {
-            offences.addAll(offences(file, Files.readString(file), forbidden));
-        }
-        assertEquals(List.of(), offences, "robosim.env.core must not use " + what);
+        assertEquals(List.of(), offences(sources(CORE), Pattern.compile(regex)), "robosim.env.core must not use " + what);
     }
 
     @Test
-    void theScanFindsTheCoreSources() throws IOException {
-        List<Path> files = coreSources();
-        assertTrue(files.stream().anyMatch(f -> f.endsWith("Simulation.java")), "scanned " + files);
+    void theScanFindsTheSources() throws IOException {
+        assertTrue(sources(CORE).stream().anyMatch(f -> f.endsWith("Simulation.java")), "scanned " + sources(CORE));
+        assertTrue(sources(GEOMETRY).stream().anyMatch(f -> f.endsWith("GeometryClient.java")), "scanned " + sources(GEOMETRY));
+    }
+
+    private static List<String> offences(List<Path> files, Pattern forbidden) throws IOException {
+        List<String> found = new ArrayList<>();
+        for (Path file : files) {
+            found.addAll(offences(file, Files.readString(file), forbidden));
+        }
+        return found;
     }
 
     @Test
@@ -75,9 +96,9 @@ class ImportRulesTest {
                 "a string literal is not a use");
     }
 
-    private static List<Path> coreSources() throws IOException {
-        Path dir = moduleDir().resolve(CORE);
-        assertTrue(Files.isDirectory(dir), "no core sources at " + dir.toAbsolutePath());
+    private static List<Path> sources(String relative) throws IOException {
+        Path dir = moduleDir().resolve(relative).normalize();
+        assertTrue(Files.isDirectory(dir), "no sources at " + dir.toAbsolutePath());
         try (Stream<Path> files = Files.walk(dir)) {
             return files.filter(f -> f.toString().endsWith(".java")).sorted().toList();
         }
