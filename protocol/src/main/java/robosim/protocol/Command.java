@@ -3,7 +3,10 @@ package robosim.protocol;
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
-/** A motion command of a robot, as ARIA's direct motion commands. Units: mm, mm/s, degrees, deg/s. */
+/**
+ * A request of a robot: ARIA's direct motion commands, and switching its sensors. Units: mm, mm/s,
+ * degrees, deg/s.
+ */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "cmd")
 @JsonSubTypes({
         @JsonSubTypes.Type(value = Command.SetVel.class, name = "vel"),
@@ -15,6 +18,9 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.Stop.class, name = "stop"),
         @JsonSubTypes.Type(value = Command.SetMaxTransVel.class, name = "maxVel"),
         @JsonSubTypes.Type(value = Command.SetMaxRotVel.class, name = "maxRotVel"),
+        @JsonSubTypes.Type(value = Command.SetSonar.class, name = "sonar"),
+        @JsonSubTypes.Type(value = Command.ConfigureLaser.class, name = "laser"),
+        @JsonSubTypes.Type(value = Command.ConfigureHeatSensor.class, name = "heatSensor"),
 })
 public sealed interface Command {
     /** @param vel translational velocity, mm/s */
@@ -46,4 +52,25 @@ public sealed interface Command {
 
     /** @param rotVel new rotational limit, deg/s, within the parameter file's maximum */
     record SetMaxRotVel(double rotVel) implements Command { }
+
+    /** @param on whether the sonars fire (ARIA's {@code enableSonar} / {@code disableSonar}) */
+    record SetSonar(boolean on) implements Command { }
+
+    /**
+     * Switches the robot's laser (a SICK LMS200 at the parameter file's laser pose) on or off.
+     *
+     * @param on        whether it scans
+     * @param increment degrees between readings over its 180° field: 1 (181 readings) or 0.5 (361)
+     * @param maxRange  its maximum range, mm
+     */
+    record ConfigureLaser(boolean on, double increment, double maxRange) implements Command { }
+
+    /**
+     * Switches the robot's heat sensor on or off.
+     *
+     * @param on          whether it senses
+     * @param fieldOfView its field of view, degrees, centred on the robot's heading
+     * @param maxRange    the farthest source it senses, mm
+     */
+    record ConfigureHeatSensor(boolean on, double fieldOfView, double maxRange) implements Command { }
 }

@@ -14,9 +14,34 @@ package robosim.protocol;
  * @param leftVel    left wheel velocity in mm/s
  * @param rightVel   right wheel velocity in mm/s
  * @param stalled    whether the last motion was stopped by a collision
- * @param sonar      range in mm of each sonar transducer, by index
+ * @param sonar      range in mm of each sonar transducer, by index; empty when the sonars are off
  * @param collisions collisions counted since the start
+ * @param laser      the laser's latest scan in mm, from its right (−90°) to its left (+90°); empty
+ *                   when the robot has no laser switched on
+ * @param heat       the heat sensor's reading, or null when the robot has no heat sensor
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                         double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions) {
+                         double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
+                         int[] laser, HeatReading heat) {
+
+    /**
+     * A state without laser or heat readings.
+     *
+     * @param step       the step
+     * @param timeMs     simulated time, ms
+     * @param x          odometry x, mm
+     * @param y          odometry y, mm
+     * @param th         odometry heading, degrees
+     * @param vel        mm/s
+     * @param rotVel     deg/s
+     * @param leftVel    mm/s
+     * @param rightVel   mm/s
+     * @param stalled    whether stalled
+     * @param sonar      sonar ranges, mm; empty when the sonars are off
+     * @param collisions collisions so far
+     */
+    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
+                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, new int[0], null);
+    }
 }

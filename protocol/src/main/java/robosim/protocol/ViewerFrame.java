@@ -25,7 +25,29 @@ public record ViewerFrame(long step, long timeMs, List<RobotView> robots) implem
      * @param stalled   whether it is stalled against something
      * @param connected whether its program is connected
      * @param sonar     its sonar ranges in mm, by index
+     * @param odoX      odometry x, mm: where the robot believes it is
+     * @param odoY      odometry y, mm
+     * @param odoTh     odometry heading, degrees
+     * @param laser     its latest laser scan, mm, right to left; empty when off
+     * @param laserIncrement degrees between laser readings (1 or 0.5)
      */
     public record RobotView(String name, double x, double y, double th, boolean stalled,
-                            boolean connected, int[] sonar) { }
+                            boolean connected, int[] sonar, double odoX, double odoY, double odoTh,
+                            int[] laser, double laserIncrement) {
+
+        /**
+         * A view whose odometry is the true pose and without a laser.
+         *
+         * @param name      the robot's name
+         * @param x         true x, mm
+         * @param y         true y, mm
+         * @param th        true heading, degrees
+         * @param stalled   whether stalled
+         * @param connected whether connected
+         * @param sonar     sonar ranges, mm
+         */
+        public RobotView(String name, double x, double y, double th, boolean stalled, boolean connected, int[] sonar) {
+            this(name, x, y, th, stalled, connected, sonar, x, y, th, new int[0], 1);
+        }
+    }
 }

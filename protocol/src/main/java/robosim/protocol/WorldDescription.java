@@ -12,14 +12,41 @@ import robosim.protocol.params.RobotParameters;
  * @param stepMs    step length in simulated ms
  * @param obstacles walls and obstacles as polygons
  * @param robots    the robots of the world and their bodies
+ * @param heat      the heat sources
  */
 public record WorldDescription(String name, double width, double height, int stepMs,
-                               List<Obstacle> obstacles, List<RobotInfo> robots) implements Message {
+                               List<Obstacle> obstacles, List<RobotInfo> robots, List<HeatSource> heat)
+        implements Message {
     /** Copies the lists so the record stays immutable. */
     public WorldDescription {
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
+        heat = List.copyOf(heat);
     }
+
+    /**
+     * A world without heat sources.
+     *
+     * @param name      the world's name
+     * @param width     mm
+     * @param height    mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and obstacles
+     * @param robots    robots
+     */
+    public WorldDescription(String name, double width, double height, int stepMs,
+                            List<Obstacle> obstacles, List<RobotInfo> robots) {
+        this(name, width, height, stepMs, obstacles, robots, List.of());
+    }
+
+    /**
+     * A heat source.
+     *
+     * @param x         mm
+     * @param y         mm
+     * @param intensity its intensity at 1 m
+     */
+    public record HeatSource(double x, double y, double intensity) { }
 
     /**
      * A wall or obstacle.

@@ -194,7 +194,10 @@ class MessageCodecTest {
                 + "{\"cmd\":\"deltaHeading\",\"delta\":-45.5},"
                 + "{\"cmd\":\"stop\"},"
                 + "{\"cmd\":\"maxVel\",\"vel\":900.0},"
-                + "{\"cmd\":\"maxRotVel\",\"rotVel\":90.0}]}", json);
+                + "{\"cmd\":\"maxRotVel\",\"rotVel\":90.0},"
+                + "{\"cmd\":\"sonar\",\"on\":false},"
+                + "{\"cmd\":\"laser\",\"on\":true,\"increment\":0.5,\"maxRange\":8000.0},"
+                + "{\"cmd\":\"heatSensor\",\"on\":true,\"fieldOfView\":60.0,\"maxRange\":4000.0}]}", json);
     }
 
     @Test

@@ -38,7 +38,7 @@ final class Messages {
     static RobotState state() {
         return new RobotState(41, 3_000_000_123L, 1234.5, -678.25, 179.5, 350.0, -12.5, 337.5, 362.5, true,
                 new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400, 4301, 650, 640},
-                3);
+                3, new int[] {8000, 7999, 1234, 20}, new HeatReading(12.5, -30.25, 2200));
     }
 
     static RobotHello robotHello() {
@@ -64,7 +64,10 @@ final class Messages {
                 new Command.SetDeltaHeading(-45.5),
                 new Command.Stop(),
                 new Command.SetMaxTransVel(900),
-                new Command.SetMaxRotVel(90)));
+                new Command.SetMaxRotVel(90),
+                new Command.SetSonar(false),
+                new Command.ConfigureLaser(true, 0.5, 8000),
+                new Command.ConfigureHeatSensor(true, 60, 4000)));
     }
 
     static ViewerHello viewerHello() {
@@ -75,14 +78,16 @@ final class Messages {
         return new WorldDescription("arena", 20000, 15000, 100,
                 List.of(new WorldDescription.Obstacle(new double[] {0, 0, 20000, 0, 20000, 10, 0, 10}, 500),
                         new WorldDescription.Obstacle(new double[] {4000.5, 3000, 5000, 3000, 4500, 3866.25}, 250)),
-                List.of(new WorldDescription.RobotInfo("robot1", "pioneer", p3dx())));
+                List.of(new WorldDescription.RobotInfo("robot1", "pioneer", p3dx())),
+                List.of(new WorldDescription.HeatSource(7000, 3000.5, 40)));
     }
 
     static ViewerFrame viewerFrame() {
         return new ViewerFrame(42, 4200, List.of(
                 new ViewerFrame.RobotView("robot1", 1234.5, -678.25, 179.5, true, true,
                         new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999}),
-                new ViewerFrame.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101})));
+                new ViewerFrame.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101},
+                        8010.5, 8990, -89.5, new int[] {3000, 2999, 2998}, 0.5)));
     }
 
     static Bye bye() {

@@ -15,13 +15,32 @@ import java.util.List;
  * @param stepMs    simulated length of one time step, ms, from 1 to 10000
  * @param obstacles walls (as rectangles) and polygons, boundary walls first, then in file order
  * @param robots    the robots, in file order
+ * @param heat      the heat sources, in file order
+ * @param noise     the sensor and odometry noise of the world (none by default)
  */
 public record World(String name, Path source, double width, double height, int stepMs,
-                    List<Obstacle> obstacles, List<RobotSpec> robots) {
+                    List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise) {
 
     /** Copies the lists so the record stays immutable. */
     public World {
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
+        heat = List.copyOf(heat);
+    }
+
+    /**
+     * A world without heat sources or noise.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots) {
+        this(name, source, width, height, stepMs, obstacles, robots, List.of(), Noise.NONE);
     }
 }

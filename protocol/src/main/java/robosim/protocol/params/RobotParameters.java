@@ -24,6 +24,10 @@ import java.util.List;
  * @param diffConvFactor   rad/s of rotation per mm/s of wheel-speed difference (right − left)
  * @param sonarMaxRange    the sonars' maximum range
  * @param sonarUnits       the sonar transducers, ordered by index
+ * @param laserX           the laser's mounting position, mm forward of the centre
+ * @param laserY           the laser's mounting position, mm left of the centre
+ * @param laserTh          the laser's mounting heading, degrees
+ * @param laserMaxRange    the laser's maximum range, mm (a SICK LMS200: 8000)
  */
 public record RobotParameters(
         String robotClass,
@@ -40,11 +44,47 @@ public record RobotParameters(
         double rotDecel,
         double diffConvFactor,
         double sonarMaxRange,
-        List<SonarUnit> sonarUnits) {
+        List<SonarUnit> sonarUnits,
+        double laserX,
+        double laserY,
+        double laserTh,
+        double laserMaxRange) {
+
+    /** The laser's range when a parameter file names none: a SICK LMS200's 8000 mm. */
+    public static final double DEFAULT_LASER_MAX_RANGE = 8000;
 
     /** Copies the sonar list so the record stays immutable. */
     public RobotParameters {
         sonarUnits = List.copyOf(sonarUnits);
+    }
+
+    /**
+     * Parameters with the laser at the centre, facing forward, with its default range.
+     *
+     * @param robotClass       the robot's class
+     * @param subclass         the robot's subclass
+     * @param robotRadius      enclosing radius
+     * @param robotWidth       body width
+     * @param robotLengthFront body extent ahead of the centre
+     * @param robotLengthRear  body extent behind the centre
+     * @param maxVelocity      maximum translational speed
+     * @param maxRVelocity     maximum rotational speed
+     * @param transAccel       translational acceleration
+     * @param transDecel       translational deceleration
+     * @param rotAccel         rotational acceleration
+     * @param rotDecel         rotational deceleration
+     * @param diffConvFactor   rad/s per mm/s of wheel-speed difference
+     * @param sonarMaxRange    the sonars' maximum range
+     * @param sonarUnits       the sonar transducers
+     */
+    public RobotParameters(String robotClass, String subclass, double robotRadius, double robotWidth,
+                           double robotLengthFront, double robotLengthRear, double maxVelocity,
+                           double maxRVelocity, double transAccel, double transDecel, double rotAccel,
+                           double rotDecel, double diffConvFactor, double sonarMaxRange,
+                           List<SonarUnit> sonarUnits) {
+        this(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear, maxVelocity,
+                maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
+                sonarUnits, 0, 0, 0, DEFAULT_LASER_MAX_RANGE);
     }
 
     /** @return the body length, front plus rear */
