@@ -38,3 +38,9 @@ SonarUnit 12 -241 27 170
 SonarUnit 13 -223 79 150
 SonarUnit 14 -189 119 130
 SonarUnit 15 -144 136 90
+
+Section Laser parameters
+LaserX 160                    ; x location of laser, mm
+LaserY 0                      ; y location of laser, mm
+LaserTh 0                     ; rotation of laser, deg
+LaserMaxRange 8000            ; max range of laser, mm (0: the default, 8000)

@@ -38,3 +38,9 @@ SonarUnit 12 -255 27 170
 SonarUnit 13 -237 78 150
 SonarUnit 14 -203 119 130
 SonarUnit 15 -157 136 90
+
+Section Laser parameters
+LaserX 18                     ; x location of laser, mm
+LaserY 0                      ; y location of laser, mm
+LaserTh 0                     ; rotation of laser, deg
+LaserMaxRange 8000            ; max range of laser, mm (0: the default, 8000)

@@ -2,6 +2,8 @@ package robosim.aria;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.locks.ReentrantLock;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
 import robosim.hw.RobotSensorResponse;
@@ -29,9 +31,20 @@ public class ArRobot extends AbstractRobot {
     public static final double DEFAULT_MOVE_DONE = 40;
     /** ARIA's default for {@link #isHeadingDone(double)}, degrees. */
     public static final double DEFAULT_HEADING_DONE = 3;
+    /** ARIA's {@code isStopped} translational threshold, mm/s. */
+    public static final double STOPPED_VEL = 4;
+    /** ARIA's {@code isStopped} rotational threshold, deg/s. */
+    public static final double STOPPED_ROT_VEL = 1;
 
     private final List<SonarUnit> sonarUnits;
-    private volatile int[] sonar;
+    private final ArSensorReading[] sonarReadings;
+    private final ReentrantLock lock = new ReentrantLock();
+    private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
+    private final TaskList userTasks = new TaskList("user");
+    private final List<ArRangeDevice> rangeDevices = new CopyOnWriteArrayList<>();
+    private volatile long counter;
+    private volatile boolean sonarEnabled = true;
+    private volatile boolean runningAsync;
     private volatile ArPose moveStart;
     private volatile double moveDistance;
     private volatile Double headingTarget;
@@ -59,9 +72,10 @@ public class ArRobot extends AbstractRobot {
         this.sonarUnits = parameters.sonarUnits();
         this.maxTransVel = parameters.maxVelocity();
         this.maxRotVel = parameters.maxRVelocity();
-        int[] unread = new int[sonarUnits.size()];
-        java.util.Arrays.fill(unread, (int) parameters.sonarMaxRange());
-        this.sonar = unread;
+        this.sonarReadings = new ArSensorReading[sonarUnits.size()];
+        for (SonarUnit u : sonarUnits) {
+            sonarReadings[u.index()] = new ArSensorReading(u.x(), u.y(), u.th(), (int) parameters.sonarMaxRange());
+        }
     }
 
     /**
@@ -79,9 +93,154 @@ public class ArRobot extends AbstractRobot {
         }
     }
 
+    /**
+     * One robot cycle, run as each step's state arrives (while the robot's code is yielded): the
+     * counter goes up, the sonar readings are taken, then the sensor-interpretation tasks and the
+     * user tasks run, all under the robot's lock, as ARIA's cycle does.
+     */
     @Override
     protected void responded(RobotSensorResponse response) {
-        sonar = response.state().sonar();
+        lock.lock();
+        try {
+            counter++;
+            RobotState s = response.state();
+            int[] ranges = s.sonar();
+            if (ranges.length == sonarReadings.length) {
+                ArPose pose = new ArPose(s.x(), s.y(), s.th());
+                for (int i = 0; i < ranges.length; i++) {
+                    sonarReadings[i].newData(ranges[i], pose, counter, s.timeMs());
+                }
+            }
+            sensorInterpTasks.runAll(getName());
+            userTasks.runAll(getName());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- the cycle, tasks and the robot's lock ----
+
+    /** @return the cycle counter: one more for every step's state received */
+    public long getCounter() {
+        return counter;
+    }
+
+    /**
+     * Adds a task run once per cycle after the sensor-interpretation tasks, in step with the
+     * simulation: a program written as tasks is deterministic by construction. A task must not
+     * sleep; its motion calls are sent with the cycle's requests.
+     *
+     * @param name     the task's name (adding a name again replaces that task)
+     * @param position higher positions run first
+     * @param task     the task
+     */
+    public void addUserTask(String name, int position, Runnable task) {
+        userTasks.add(name, position, task);
+    }
+
+    /** @param name the user task to remove @return whether it was there */
+    public boolean remUserTask(String name) {
+        return userTasks.remove(name);
+    }
+
+    /**
+     * Adds a task run once per cycle right after the new readings are in, before the user tasks:
+     * where range devices take their readings.
+     *
+     * @param name     the task's name
+     * @param position higher positions run first
+     * @param task     the task
+     */
+    public void addSensorInterpTask(String name, int position, Runnable task) {
+        sensorInterpTasks.add(name, position, task);
+    }
+
+    /** @param name the sensor-interpretation task to remove @return whether it was there */
+    public boolean remSensorInterpTask(String name) {
+        return sensorInterpTasks.remove(name);
+    }
+
+    /** Takes the robot's lock, which the cycle holds while it updates the robot and runs its tasks. */
+    public void lock() {
+        lock.lock();
+    }
+
+    /** @return whether the lock was free and is now held */
+    public boolean tryLock() {
+        return lock.tryLock();
+    }
+
+    /** Releases the robot's lock. */
+    public void unlock() {
+        lock.unlock();
+    }
+
+    /** @return whether the calling thread holds the robot's lock */
+    boolean isLockedByMe() {
+        return lock.isHeldByCurrentThread();
+    }
+
+    /**
+     * Lets the robot's cycle (its tasks) go on when the program's threads end: the robot then stays
+     * in the run until the Environment ends it or {@link #disconnect()} is called. The cycle itself
+     * always runs, on the robot's hardware thread.
+     */
+    public void runAsync() {
+        runningAsync = true;
+        keepAlive(true);
+    }
+
+    /** @return whether {@link #runAsync()} was called and the robot is still connected */
+    public boolean isRunning() {
+        return runningAsync && isConnected();
+    }
+
+    /** Runs the robot's cycle until the robot is disconnected: the calling thread yields meanwhile. */
+    public void run() {
+        runAsync();
+        waitForRunExit();
+    }
+
+    /** Waits, yielded, until the robot is disconnected. */
+    public void waitForRunExit() {
+        while (isConnected()) {
+            sleepSimulated(Long.MAX_VALUE / 4);
+        }
+    }
+
+    // ---- range devices ----
+
+    /** @param device a range device to attach; its robot becomes this one */
+    public void addRangeDevice(ArRangeDevice device) {
+        device.setRobot(this);
+        rangeDevices.add(device);
+    }
+
+    /** @param device a range device to detach; its robot is cleared */
+    public void remRangeDevice(ArRangeDevice device) {
+        if (rangeDevices.remove(device)) {
+            device.setRobot(null);
+        }
+    }
+
+    /** @param name a device's name @return the first attached device of that name, or null */
+    public ArRangeDevice findRangeDevice(String name) {
+        return rangeDevices.stream().filter(d -> d.getName().equals(name)).findFirst().orElse(null);
+    }
+
+    /** @return the attached range devices */
+    public List<ArRangeDevice> getRangeDeviceList() {
+        return List.copyOf(rangeDevices);
+    }
+
+    /** @return the latest state, for the devices of this package */
+    RobotState currentState() {
+        return state();
+    }
+
+    /** @param command a request sent with this cycle's requests, for the devices of this package */
+    void send(Command command) {
+        request(command);
     }
 
     // ---- motion: none of these block ----
@@ -247,6 +406,36 @@ public class ArRobot extends AbstractRobot {
         return state().stalled();
     }
 
+    /** @return whether the robot is stopped: below 4 mm/s and 1 deg/s, ARIA's thresholds */
+    public boolean isStopped() {
+        return Math.abs(getVel()) <= STOPPED_VEL && Math.abs(getRotVel()) <= STOPPED_ROT_VEL;
+    }
+
+    /** @return the radius of the circle enclosing the robot, mm */
+    public double getRobotRadius() {
+        return getParameters().robotRadius();
+    }
+
+    /** @return the robot's width, mm */
+    public double getRobotWidth() {
+        return getParameters().robotWidth();
+    }
+
+    /** @return the robot's length, mm */
+    public double getRobotLength() {
+        return getParameters().robotLength();
+    }
+
+    /** @return the robot's length ahead of its centre, mm */
+    public double getRobotLengthFront() {
+        return getParameters().robotLengthFront();
+    }
+
+    /** @return the robot's length behind its centre, mm */
+    public double getRobotLengthRear() {
+        return getParameters().robotLengthRear();
+    }
+
     /** @return whether either wheel is stalled; both are, when RoboSim stalls a robot */
     public boolean isLeftMotorStalled() {
         return isStalled();
@@ -270,8 +459,41 @@ public class ArRobot extends AbstractRobot {
      *         bad index
      */
     public int getSonarRange(int num) {
-        int[] s = sonar;
-        return num < 0 || num >= s.length ? -1 : s[num];
+        return num < 0 || num >= sonarReadings.length ? -1 : sonarReadings[num].getRange();
+    }
+
+    /**
+     * @param num the sonar's index
+     * @return its reading, or null for a bad index
+     */
+    public ArSensorReading getSonarReading(int num) {
+        return num < 0 || num >= sonarReadings.length ? null : sonarReadings[num];
+    }
+
+    /**
+     * @param num the sonar's index
+     * @return whether its reading arrived in this cycle (ARIA: its counter equals the robot's);
+     *         false for a bad index
+     */
+    public boolean isSonarNew(int num) {
+        return num >= 0 && num < sonarReadings.length && sonarReadings[num].isNew(counter);
+    }
+
+    /** Turns the sonars on (they are on after connecting). */
+    public void enableSonar() {
+        sonarEnabled = true;
+        request(new Command.SetSonar(true));
+    }
+
+    /** Turns the sonars off: no new readings arrive until {@link #enableSonar()}. */
+    public void disableSonar() {
+        sonarEnabled = false;
+        request(new Command.SetSonar(false));
+    }
+
+    /** @return whether the sonars are on */
+    public boolean areSonarsEnabled() {
+        return sonarEnabled;
     }
 
     /**
@@ -294,10 +516,10 @@ public class ArRobot extends AbstractRobot {
      *         index), or −1 if none
      */
     public int getClosestSonarNumber(double startAngle, double endAngle) {
-        int[] s = sonar;
         int best = -1;
         for (SonarUnit u : sonarUnits) {
-            if (ArMath.angleBetween(u.th(), startAngle, endAngle) && (best < 0 || s[u.index()] < s[best])) {
+            if (ArMath.angleBetween(u.th(), startAngle, endAngle)
+                    && (best < 0 || getSonarRange(u.index()) < getSonarRange(best))) {
                 best = u.index();
             }
         }

@@ -13,12 +13,17 @@ public final class ArUtil {
     /**
      * Sleeps in simulated time: the calling robot thread yields for {@code ms} simulated
      * milliseconds, rounded up to whole steps, at least one. A thread that belongs to no robot
-     * sleeps in wall-clock time.
+     * sleeps in wall-clock time. Sleeping while holding the robot's lock is an error: the robot's
+     * cycle needs the lock to deliver the next step.
      *
      * @param ms milliseconds
      */
     public static void sleep(long ms) {
         AbstractRobot robot = AbstractRobot.current();
+        if (robot instanceof ArRobot ar && ar.isLockedByMe()) {
+            throw new IllegalStateException("robot " + ar.getName() + ": ArUtil.sleep while holding the robot's lock"
+                    + " would stop its cycle; unlock() first");
+        }
         if (robot != null && robot.isConnected()) {
             robot.sleepSimulated(ms);
             return;

@@ -3,20 +3,22 @@ package robosim.aria;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
-import robosim.protocol.params.ParameterFileReader;
 import robosim.protocol.params.RobotParameters;
+import robosim.protocol.params.RobotParametersReader;
 
 /**
- * Finds and reads a robot parameter file. A path that exists is read as given; a bare name such as
- * {@code p3dx} or {@code p3dx.p} is also looked for in {@code testLoadFiles/robots/} under the
- * RoboSim root (system property {@code robosim.root}, else the working directory).
+ * Finds and reads a robot parameter file, in either form ({@code .p} or {@code .xml}; see
+ * {@link RobotParametersReader}). A path that exists is read as given; a bare name such as
+ * {@code p3dx}, {@code p3dx.p} or {@code p3dx.xml} is also looked for in
+ * {@code testLoadFiles/robots/} under the RoboSim root (system property {@code robosim.root},
+ * else the working directory). A name without an extension means ARIA's {@code .p} form.
  */
 final class RobotParameterFiles {
     private RobotParameterFiles() {
     }
 
     static RobotParameters load(String file) {
-        return ParameterFileReader.read(resolve(file));
+        return RobotParametersReader.read(resolve(file));
     }
 
     static Path resolve(String file) {
@@ -24,7 +26,7 @@ final class RobotParameterFiles {
         if (Files.isRegularFile(given)) {
             return given;
         }
-        String name = file.endsWith(".p") ? file : file + ".p";
+        String name = file.endsWith(".p") || file.endsWith(".xml") ? file : file + ".p";
         Path root = Paths.get(System.getProperty("robosim.root", "."));
         Path shipped = root.resolve("testLoadFiles").resolve("robots").resolve(name);
         if (Files.isRegularFile(shipped)) {

@@ -19,7 +19,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The simulation core ({@code robosim.env.core}) stays plain deterministic Java: no network, no
- * drawing, no threads, no clocks, no randomness of its own (a seed comes in from outside). It is
+ * drawing, no threads, no clocks, no unseeded randomness (every random stream comes from the run's seed). It is
  * stepped by the TCP layer, never the other way round. The GeometryClient it builds on is pure
  * geometry: no I/O and no drawing, so the Environment, the viewer and tests can all use it.
  */
@@ -55,7 +55,8 @@ class ImportRulesTest {
                 Arguments.of("the Environment's TCP layer (robosim.env.net)", "\\brobosim\\.env\\.net\\b"),
                 Arguments.of("the wall clock (System.currentTimeMillis)", "\\bSystem\\s*\\.\\s*currentTimeMillis\\b"),
                 Arguments.of("the wall clock (System.nanoTime)", "\\bSystem\\s*\\.\\s*nanoTime\\b"),
-                Arguments.of("its own randomness (new Random(...))", "\\bnew\\s+(java\\.(util|security)\\.)?(Secure)?Random\\s*\\("),
+                Arguments.of("unseeded randomness (new Random())", "\\bnew\\s+(java\\.(util|security)\\.)?(Secure|Splittable)?Random\\s*\\(\\s*\\)"),
+                Arguments.of("the system's entropy (SecureRandom)", "\\bSecureRandom\\b"),
                 Arguments.of("unseeded randomness (Math.random)", "\\bMath\\s*\\.\\s*random\\b"));
     }
 

@@ -270,6 +270,31 @@ public final class GeometryClient {
     }
 
     /**
+     * Whether the straight line between two points crosses no static obstacle (robots are ignored):
+     * what heat needs to reach a sensor.
+     *
+     * @param x1 mm
+     * @param y1 mm
+     * @param x2 mm
+     * @param y2 mm
+     * @return true if nothing static is in the way
+     */
+    public boolean lineOfSight(double x1, double y1, double x2, double y2) {
+        double len = Math.hypot(x2 - x1, y2 - y1);
+        if (len == 0) {
+            return true;
+        }
+        double dx = (x2 - x1) / len;
+        double dy = (y2 - y1) / len;
+        for (Object o : segmentIndex.query(new Envelope(x1, x2, y1, y2))) {
+            if (((Segment) o).rayHit(x1, y1, dx, dy) < len) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
      * Gathers the edges of obstacles and bodies within {@code radius} of a point, for many range
      * queries from sensors near it.
      *

@@ -151,6 +151,16 @@ public abstract class AbstractRobot {
         }
     }
 
+    /**
+     * Keeps the robot in the run after every thread of its code has ended (for programs whose work
+     * is done by per-cycle tasks): the JVM then stays up until the robot is disconnected.
+     *
+     * @param keep whether to keep it
+     */
+    protected void keepAlive(boolean keep) {
+        hardware.keepAlive(keep);
+    }
+
     /** @return the latest state the Environment reported */
     protected RobotState state() {
         return state;

@@ -67,6 +67,7 @@ public final class HardwareSimulator {
     private Thread thread;
     private volatile String endReason;
     private volatile long openStep;
+    private volatile Thread keeper;
     private long warnedStep = -1;
 
     /**
@@ -146,6 +147,29 @@ public final class HardwareSimulator {
         robotRequestQueue.add(request);
     }
 
+    /**
+     * Keeps the robot connected, and the JVM up, after every thread of its code has ended, until
+     * the connection ends.
+     *
+     * @param keep whether to keep it
+     */
+    public synchronized void keepAlive(boolean keep) {
+        if (keep && keeper == null) {
+            Thread t = new Thread(() -> {
+                try {
+                    gate.awaitClosed();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "hw-keep-" + hello.name());
+            keeper = t;
+            t.start();
+        } else if (!keep && keeper != null) {
+            keeper.interrupt();
+            keeper = null;
+        }
+    }
+
     /** @return why the connection ended, or null while connected */
     public String endReason() {
         return endReason;
@@ -199,7 +223,7 @@ public final class HardwareSimulator {
      */
     private void sendRequests() {
         try {
-            if (gate.participantCount() == 0) {
+            if (gate.participantCount() == 0 && keeper == null) {
                 writer.write(new Bye("the robot's code has ended"));
                 end("the robot's code has ended");
                 return;

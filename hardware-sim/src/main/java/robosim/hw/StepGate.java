@@ -162,6 +162,17 @@ public final class StepGate {
         return true;
     }
 
+    /**
+     * Waits until the gate is closed.
+     *
+     * @throws InterruptedException if interrupted
+     */
+    public synchronized void awaitClosed() throws InterruptedException {
+        while (!closed) {
+            wait();
+        }
+    }
+
     /** Ends the gate: every waiting thread returns. */
     public synchronized void close() {
         closed = true;

@@ -75,7 +75,7 @@ final class EnvCommand implements Callable<Integer> {
             err.println("robosim env: " + e.getMessage());
             return 2;
         }
-        Simulation sim = new Simulation(w);
+        Simulation sim = new Simulation(w, seed);
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             try {
                 server.bind();

@@ -82,6 +82,19 @@ class BadFrameTest {
     }
 
     @Test
+    void aNonFiniteVelocityClosesThatRobotBeforeItReachesTheSimulation() throws Exception {
+        misbehaveAsR2(r2 -> send(r2, new RobotRequests(2, List.of(new robosim.protocol.Command.SetVel(Double.NaN)))),
+                "sent an invalid request for step 2: NaN was supplied for vel: it must be a finite number");
+    }
+
+    @Test
+    void aLaserIncrementNoSickHasClosesThatRobot() throws Exception {
+        misbehaveAsR2(r2 -> send(r2, new RobotRequests(2, List.of(
+                        new robosim.protocol.Command.ConfigureLaser(true, 0.25, 8000)))),
+                "0.25 was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees");
+    }
+
+    @Test
     void aMessageOfAnUnknownTypeClosesThatRobot() throws Exception {
         byte[] json = new com.fasterxml.jackson.dataformat.smile.databind.SmileMapper()
                 .writeValueAsBytes(java.util.Map.of("type", "teleport"));

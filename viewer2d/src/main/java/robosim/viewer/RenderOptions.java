@@ -2,21 +2,28 @@ package robosim.viewer;
 
 /**
  * How a frame is drawn. The image height follows from the width and the world's aspect ratio.
+ * Heat sources are always drawn: they are part of the static world.
  *
- * @param width     image width in pixels, from 1 to {@value #MAX_WIDTH}
- * @param showSonar whether to draw each robot's sonar rays
- * @param showNames whether to label each robot with its name
+ * @param width        image width in pixels, from 1 to {@value #MAX_WIDTH}
+ * @param showSonar    whether to draw each robot's sonar rays
+ * @param showNames    whether to label each robot with its name
+ * @param showLaser    whether to draw each robot's latest laser scan
+ * @param showOdometry whether to draw, as a dashed outline, where a robot believes it is when its
+ *                     odometry is more than 1 mm or 0.5° away from its true pose
  */
-public record RenderOptions(int width, boolean showSonar, boolean showNames) {
+public record RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser,
+                            boolean showOdometry) {
     /** The widest image drawn, so that a bad option cannot exhaust the heap. */
     public static final int MAX_WIDTH = 8192;
 
     /**
      * Checks the width.
      *
-     * @param width     image width in pixels, from 1 to {@value #MAX_WIDTH}
-     * @param showSonar whether to draw sonar rays
-     * @param showNames whether to label robots
+     * @param width        image width in pixels, from 1 to {@value #MAX_WIDTH}
+     * @param showSonar    whether to draw sonar rays
+     * @param showNames    whether to label robots
+     * @param showLaser    whether to draw laser scans
+     * @param showOdometry whether to draw the odometry pose when it is off the true pose
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions {
@@ -27,12 +34,41 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames) {
     }
 
     /**
-     * The usual options: sonar rays and names shown.
+     * Options that show laser scans and the odometry pose, for callers written before those could
+     * be chosen.
+     *
+     * @param width     image width in pixels, from 1 to {@value #MAX_WIDTH}
+     * @param showSonar whether to draw sonar rays
+     * @param showNames whether to label robots
+     * @throws IllegalArgumentException if the width is out of range
+     */
+    public RenderOptions(int width, boolean showSonar, boolean showNames) {
+        this(width, showSonar, showNames, true, true);
+    }
+
+    /**
+     * The usual options: sonar rays, names, laser scans and the odometry pose shown.
      *
      * @param width image width in pixels
      * @return the options
      */
     public static RenderOptions of(int width) {
         return new RenderOptions(width, true, true);
+    }
+
+    /**
+     * @param show whether to draw laser scans
+     * @return these options with laser scans shown or hidden
+     */
+    public RenderOptions withLaser(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, show, showOdometry);
+    }
+
+    /**
+     * @param show whether to draw the odometry pose when it is off the true pose
+     * @return these options with the odometry pose shown or hidden
+     */
+    public RenderOptions withOdometry(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, showLaser, show);
     }
 }

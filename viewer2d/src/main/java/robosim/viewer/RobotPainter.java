@@ -13,17 +13,24 @@ import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.params.RobotParameters;
 import robosim.protocol.params.SonarUnit;
 
-/** Draws one robot's body, heading line, sonar rays and name; the {@link WorldRenderer}'s helper. */
+/**
+ * Draws one robot's body, heading line, sonar rays, name and odometry ghost; the
+ * {@link WorldRenderer}'s helper.
+ */
 final class RobotPainter {
     /** Radius drawn for a robot whose body the world does not describe. */
     static final double FALLBACK_RADIUS_MM = 200;
+    /** How far the odometry may be from the true position before its ghost is drawn, mm. */
+    static final double ODOMETRY_TOLERANCE_MM = 1;
+    /** How far the odometry's heading may be from the true heading before its ghost is drawn, degrees. */
+    static final double ODOMETRY_TOLERANCE_DEG = 0.5;
 
     private static final Color HEADING = new Color(20, 20, 20);
 
     void drawBody(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color fill, Color outline) {
         Pose2D pose = pose(robot);
         RobotParameters p = info == null ? null : info.parameters();
-        Shape body = hasRectangle(p) ? rectangle(view, pose, p) : circle(view, robot, radius(p));
+        Shape body = body(view, pose, p);
         g.setColor(fill);
         g.fill(body);
         g.setColor(outline);
@@ -34,6 +41,35 @@ final class RobotPainter {
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
                 view.px(pose.worldX(front, 0)), view.py(pose.worldY(front, 0))));
+    }
+
+    /**
+     * Draws a dashed outline of the body, and a dashed heading line, where the robot believes it
+     * is, if that is more than {@link #ODOMETRY_TOLERANCE_MM} or {@link #ODOMETRY_TOLERANCE_DEG}
+     * away from where it is.
+     */
+    void drawGhost(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
+        if (!odometryDiffers(robot)) {
+            return;
+        }
+        Pose2D believed = new Pose2D(robot.odoX(), robot.odoY(), Math.toRadians(robot.odoTh()));
+        RobotParameters p = info == null ? null : info.parameters();
+        double front = hasRectangle(p) ? p.robotLengthFront() : radius(p);
+        g.setColor(colour);
+        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
+                new float[] {6f, 4f}, 0f));
+        g.draw(body(view, believed, p));
+        g.draw(new Line2D.Double(view.px(believed.x()), view.py(believed.y()),
+                view.px(believed.worldX(front, 0)), view.py(believed.worldY(front, 0))));
+    }
+
+    /** @return whether the odometry pose is far enough from the true pose to be told apart */
+    static boolean odometryDiffers(RobotView robot) {
+        double apart = Math.hypot(robot.odoX() - robot.x(), robot.odoY() - robot.y());
+        double turned = Math.abs(Math.IEEEremainder(robot.odoTh() - robot.th(), 360));
+        // Written so that a NaN anywhere draws no ghost rather than a broken one.
+        return Double.isFinite(apart) && Double.isFinite(turned)
+                && (apart > ODOMETRY_TOLERANCE_MM || turned > ODOMETRY_TOLERANCE_DEG);
     }
 
     /**
@@ -95,6 +131,11 @@ final class RobotPainter {
         return r > 0 ? r : FALLBACK_RADIUS_MM;
     }
 
+    /** @return the body's rectangle, or its enclosing circle when the parameters give no rectangle */
+    private static Shape body(ViewTransform view, Pose2D pose, RobotParameters p) {
+        return hasRectangle(p) ? rectangle(view, pose, p) : circle(view, pose, radius(p));
+    }
+
     private static Shape rectangle(ViewTransform view, Pose2D pose, RobotParameters p) {
         double front = p.robotLengthFront();
         double rear = -p.robotLengthRear();
@@ -114,8 +155,8 @@ final class RobotPainter {
         return path;
     }
 
-    private static Shape circle(ViewTransform view, RobotView robot, double radiusMm) {
+    private static Shape circle(ViewTransform view, Pose2D pose, double radiusMm) {
         double r = radiusMm * view.scale();
-        return new Ellipse2D.Double(view.px(robot.x()) - r, view.py(robot.y()) - r, 2 * r, 2 * r);
+        return new Ellipse2D.Double(view.px(pose.x()) - r, view.py(pose.y()) - r, 2 * r, 2 * r);
     }
 }

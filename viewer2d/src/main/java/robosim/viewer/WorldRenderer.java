@@ -20,10 +20,10 @@ import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
- * Draws one frame of the world: background, border, obstacles, robots, optional sonar rays and
- * names, and a caption with the step and the simulated time. Pure drawing: no I/O, no sockets, no
- * clocks, no state between calls, so one renderer may serve several threads, and the window,
- * recorder and replay views can share it.
+ * Draws one frame of the world: background, heat sources, obstacles, border, robots, optional
+ * laser scans, sonar rays, odometry ghosts and names, and a caption with the step and the
+ * simulated time. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
+ * renderer may serve several threads, and the window, recorder and replay views can share it.
  *
  * <p>World coordinates are mm with +y up and headings in degrees counter-clockwise from +x; the
  * {@link ViewTransform} flips them into the image.
@@ -41,6 +41,8 @@ public final class WorldRenderer {
     private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
 
     private final RobotPainter robots = new RobotPainter();
+    private final LaserPainter lasers = new LaserPainter();
+    private final HeatPainter heat = new HeatPainter();
 
     /** A renderer; it holds no state, so one can be shared. */
     public WorldRenderer() {
@@ -108,9 +110,10 @@ public final class WorldRenderer {
         return String.format(Locale.ROOT, "step %d  t=%.1f s", frame.step(), frame.timeMs() / 1000.0);
     }
 
-    private static void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
+    private void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
         g.setColor(BACKGROUND);
         g.fill(new Rectangle2D.Double(0, 0, view.width(), view.height()));
+        heat.drawGlow(g, view, world.heat());
         g.setColor(OBSTACLE);
         for (Obstacle obstacle : world.obstacles()) {
             Path2D polygon = polygon(view, obstacle.xy());
@@ -118,6 +121,7 @@ public final class WorldRenderer {
                 g.fill(polygon);
             }
         }
+        heat.drawMarkers(g, view, world.heat());
         // A 2 px stroke centred 1 px inside the edge covers exactly the outermost two pixels.
         g.setColor(BORDER);
         g.setStroke(new BasicStroke(2f));
@@ -154,6 +158,11 @@ public final class WorldRenderer {
             colourIndex[i] = known != null ? known : infos.size() + i;
             info[i] = known != null ? infos.get(known) : null;
         }
+        if (options.showLaser()) {
+            for (int i = 0; i < views.size(); i++) {
+                lasers.drawScan(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]));
+            }
+        }
         if (options.showSonar()) {
             for (int i = 0; i < views.size(); i++) {
                 robots.drawSonar(g, view, views.get(i), info[i], rayColour(views.get(i), colourIndex[i]));
@@ -161,10 +170,15 @@ public final class WorldRenderer {
         }
         for (int i = 0; i < views.size(); i++) {
             RobotView robot = views.get(i);
-            Color fill = robot.connected() ? RobotPalette.colour(colourIndex[i]) : RobotPalette.DISCONNECTED;
+            Color fill = robotColour(robot, colourIndex[i]);
             Color outline = robot.stalled() ? RobotPalette.STALLED
                     : robot.connected() ? OUTLINE : DISCONNECTED_OUTLINE;
             robots.drawBody(g, view, robot, info[i], fill, outline);
+        }
+        if (options.showOdometry()) {
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawGhost(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]).darker());
+            }
         }
         if (options.showNames()) {
             g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view)));
@@ -176,8 +190,12 @@ public final class WorldRenderer {
     }
 
     private static Color rayColour(RobotView robot, int colourIndex) {
-        Color c = robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
+        Color c = robotColour(robot, colourIndex);
         return new Color(c.getRed(), c.getGreen(), c.getBlue(), 170);
+    }
+
+    private static Color robotColour(RobotView robot, int colourIndex) {
+        return robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
     }
 
     private static void drawCaption(Graphics2D g, ViewTransform view, String text) {

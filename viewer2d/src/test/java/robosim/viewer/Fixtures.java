@@ -4,6 +4,7 @@ import java.util.List;
 import robosim.protocol.ViewerFrame;
 import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.HeatSource;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.params.RobotParameters;
@@ -26,14 +27,35 @@ final class Fixtures {
                 0.006, 5000, List.of(new SonarUnit(0, 200, 0, 0), new SonarUnit(1, 0, 190, 90)));
     }
 
+    /** As {@link #params()}, with the laser mounted at (x, y) mm heading th degrees in the robot frame. */
+    static RobotParameters params(double laserX, double laserY, double laserTh, double laserMaxRange) {
+        RobotParameters p = params();
+        return new RobotParameters(p.robotClass(), p.subclass(), p.robotRadius(), p.robotWidth(),
+                p.robotLengthFront(), p.robotLengthRear(), p.maxVelocity(), p.maxRVelocity(), p.transAccel(),
+                p.transDecel(), p.rotAccel(), p.rotDecel(), p.diffConvFactor(), p.sonarMaxRange(), p.sonarUnits(),
+                laserX, laserY, laserTh, laserMaxRange);
+    }
+
     static WorldDescription world() {
+        return world(params(), List.of());
+    }
+
+    /** The fixture world with r1 given these parameters, and these heat sources. */
+    static WorldDescription world(RobotParameters r1, List<HeatSource> heat) {
         Obstacle square = new Obstacle(new double[] {1000, 500, 1500, 500, 1500, 1000, 1000, 1000}, 500);
         return new WorldDescription("fixture", 4000, 2000, 100, List.of(square),
-                List.of(new RobotInfo("r1", "Pioneer", params())));
+                List.of(new RobotInfo("r1", "Pioneer", r1)), heat);
     }
 
     static RobotView robot(double x, double y, double th, boolean stalled, boolean connected) {
         return new RobotView("r1", x, y, th, stalled, connected, new int[] {500, 300});
+    }
+
+    /** r1 at a true pose, believing itself at an odometry pose, with a laser scan. */
+    static RobotView robot(double x, double y, double th, double odoX, double odoY, double odoTh,
+                           int[] laser, double laserIncrement) {
+        return new RobotView("r1", x, y, th, false, true, new int[] {500, 300}, odoX, odoY, odoTh, laser,
+                laserIncrement);
     }
 
     /** The robot at (3000, 600) heading along +x, moving freely; its centre is pixel (600, 280). */

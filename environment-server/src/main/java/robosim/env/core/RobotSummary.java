@@ -10,7 +10,10 @@ package robosim.env.core;
  * @param distance   distance travelled, mm
  * @param collisions collisions counted
  * @param stalled    whether it is stalled now
+ * @param odoX       odometry x, mm: where the robot believes it is
+ * @param odoY       odometry y, mm
+ * @param odoTh      odometry heading, degrees
  */
 public record RobotSummary(String name, double x, double y, double th, double distance, int collisions,
-                           boolean stalled) {
+                           boolean stalled, double odoX, double odoY, double odoTh) {
 }

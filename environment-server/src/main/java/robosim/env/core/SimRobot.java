@@ -1,26 +1,22 @@
 package robosim.env.core;
 
 import java.util.List;
+import java.util.random.RandomGenerator;
+import robosim.env.world.HeatSource;
+import robosim.env.world.Noise;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
-import robosim.geometry.Surroundings;
 import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
 
 /**
- * One robot's simulated state: pose, velocities within its limits, stall, sonar, and the counts the
- * run reports. Owned and stepped by {@link Simulation}.
+ * One robot's simulated state: its true pose and its odometry, velocities within its limits, stall,
+ * sensors, and the counts the run reports. Owned and stepped by {@link Simulation}.
  */
 final class SimRobot {
-    /** MobileSim's sonar model: a 30° cone. */
-    static final double SONAR_HALF_ANGLE = Math.toRadians(15);
-    /** Nearer echoes are reported at this range, mm. */
-    static final int SONAR_MIN_RANGE = 100;
-
     final String name;
     final String type;
     final RobotParameters params;
@@ -35,11 +31,12 @@ final class SimRobot {
     private boolean stalled;
     private int collisions;
     private double distance;
-    private final int[] sonar;
+    private final Sensors sensors;
+    private final Odometry odometry;
     boolean connected;
 
     SimRobot(String name, String type, RobotParameters params, BodyShape body, int bodyId,
-             double x, double y, double th) {
+             double x, double y, double th, Noise noise, RandomGenerator random) {
         this.name = name;
         this.type = type;
         this.params = params;
@@ -49,8 +46,8 @@ final class SimRobot {
         this.x = x;
         this.y = y;
         this.th = Angles.fix(th);
-        this.sonar = new int[params.sonarUnits().size()];
-        java.util.Arrays.fill(sonar, (int) params.sonarMaxRange());
+        this.sensors = new Sensors(params, noise, random);
+        this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
     }
 
     /** The body shape a robot's parameters describe. */
@@ -60,7 +57,9 @@ final class SimRobot {
 
     void apply(List<Command> commands) {
         for (Command c : commands) {
-            drive.apply(c, x, y, th);
+            if (!sensors.apply(c)) {
+                drive.apply(c, odometry.x(), odometry.y(), odometry.th());
+            }
         }
     }
 
@@ -70,8 +69,9 @@ final class SimRobot {
             vel = 0;
             rotVel = 0;
         }
-        double wantV = drive.wantedVel(x, y, dt);
-        double wantW = drive.wantedRotVel(th, dt, params.rotDecel());
+        // the controller steers by odometry, as a robot's firmware does
+        double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt);
+        double wantW = drive.wantedRotVel(odometry.th(), dt, params.rotDecel());
         vel = approach(vel, wantV, params.transAccel(), params.transDecel(), dt);
         rotVel = approach(rotVel, wantW, params.rotAccel(), params.rotDecel(), dt);
         if (vel == 0 && rotVel == 0) {
@@ -84,6 +84,7 @@ final class SimRobot {
         y = p.y();
         th = Angles.fix(Math.toDegrees(p.th()));
         geometry.moveBody(bodyId, pose());
+        odometry.travel(vel * dt * r.fraction(), Math.toRadians(rotVel) * dt * r.fraction(), x, y, th);
         if (r.blocked()) {
             if (!stalled) {
                 collisions++;
@@ -107,15 +108,8 @@ final class SimRobot {
         return current + delta;
     }
 
-    void readSonar(GeometryClient geometry) {
-        Pose2D p = pose();
-        double max = params.sonarMaxRange();
-        Surroundings near = geometry.around(x, y, max + body.radius(), bodyId);
-        for (SonarUnit s : params.sonarUnits()) {
-            double r = near.cone(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
-                    p.th() + Math.toRadians(s.th()), SONAR_HALF_ANGLE, max);
-            sonar[s.index()] = (int) Math.round(Math.max(SONAR_MIN_RANGE, r));
-        }
+    void readSensors(GeometryClient geometry, List<HeatSource> heat) {
+        sensors.read(geometry, pose(), body.radius(), bodyId, heat);
     }
 
     Pose2D pose() {
@@ -124,8 +118,8 @@ final class SimRobot {
 
     RobotState state(long step, long timeMs) {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor() / 2;
-        return new RobotState(step, timeMs, x, y, th, vel, rotVel, vel - diff, vel + diff,
-                stalled, sonar.clone(), collisions);
+        return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
+                vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat());
     }
 
     double x() {
@@ -152,7 +146,11 @@ final class SimRobot {
         return distance;
     }
 
-    int[] sonar() {
-        return sonar.clone();
+    Sensors sensors() {
+        return sensors;
+    }
+
+    Odometry odometry() {
+        return odometry;
     }
 }

@@ -5,7 +5,9 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.SplittableRandom;
 import org.locationtech.jts.geom.Polygon;
+import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
@@ -25,20 +27,33 @@ import robosim.protocol.params.RobotParameters;
  *
  * <p>Each step: every robot's commands are applied, then the robots move one after another in the
  * world file's order (each against the others' latest poses, so they can never overlap), then every
- * robot's sonars are read.
+ * robot's sensors are read. Noise, when the world has any, comes from the seed alone.
  */
 public final class Simulation {
     private final World world;
+    private final long seed;
     private final List<Polygon> obstacles = new ArrayList<>();
     private GeometryClient geometry;
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
     private long step;
 
     /**
+     * A simulation with seed 1.
+     *
      * @param world the world, with its robots at their start poses
      */
     public Simulation(World world) {
+        this(world, 1);
+    }
+
+    /**
+     * @param world the world, with its robots at their start poses
+     * @param seed  the seed of the run's noise: each robot draws from its own stream, split from it
+     *              in the world file's order
+     */
+    public Simulation(World world, long seed) {
         this.world = world;
+        this.seed = seed;
         for (Obstacle o : world.obstacles()) {
             obstacles.add(GeometryClient.polygon(o.xy()));
         }
@@ -51,12 +66,15 @@ public final class Simulation {
         Map<String, SimRobot> old = new LinkedHashMap<>(robots);
         robots.clear();
         geometry = new GeometryClient(obstacles);
+        SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
+            SplittableRandom random = streams.split();
             SimRobot prev = old.get(spec.name());
             RobotParameters p = replaced.getOrDefault(spec.name(), prev != null ? prev.params : spec.parameters());
             BodyShape body = SimRobot.bodyOf(p);
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
-            SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, id, spec.x(), spec.y(), spec.th());
+            SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, id, spec.x(), spec.y(), spec.th(),
+                    world.noise(), random);
             r.connected = prev != null && prev.connected;
             robots.put(spec.name(), r);
         }
@@ -112,7 +130,7 @@ public final class Simulation {
 
     private void readSensors() {
         for (SimRobot r : robots.values()) {
-            r.readSonar(geometry);
+            r.readSensors(geometry, world.heat());
         }
     }
 
@@ -159,7 +177,9 @@ public final class Simulation {
      */
     public RobotSummary summary(String name) {
         SimRobot r = robot(name);
-        return new RobotSummary(r.name, r.x(), r.y(), r.th(), r.distance(), r.collisions(), r.stalled());
+        Odometry o = r.odometry();
+        return new RobotSummary(r.name, r.x(), r.y(), r.th(), r.distance(), r.collisions(), r.stalled(),
+                o.x(), o.y(), o.th());
     }
 
     /**
@@ -176,7 +196,9 @@ public final class Simulation {
     public ViewerFrame frame() {
         List<ViewerFrame.RobotView> views = new ArrayList<>();
         for (SimRobot r : robots.values()) {
-            views.add(new ViewerFrame.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected, r.sonar()));
+            Odometry o = r.odometry();
+            views.add(new ViewerFrame.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
+                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement()));
         }
         return new ViewerFrame(step, timeMs(), views);
     }
@@ -191,7 +213,11 @@ public final class Simulation {
         for (SimRobot r : robots.values()) {
             infos.add(new WorldDescription.RobotInfo(r.name, r.type, r.params));
         }
-        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos);
+        List<WorldDescription.HeatSource> heat = new ArrayList<>();
+        for (HeatSource h : world.heat()) {
+            heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity()));
+        }
+        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat);
     }
 
     /**

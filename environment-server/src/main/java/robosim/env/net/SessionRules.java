@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
+import robosim.env.core.CommandRules;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
@@ -165,6 +166,14 @@ final class SessionRules {
             c.close("robot " + c.name() + " sent requests for step " + req.step() + " " + open);
             drop(c.name(), null);
             return;
+        }
+        for (Command cmd : req.commands()) {
+            String problem = CommandRules.problem(cmd);
+            if (problem != null) {
+                c.close("robot " + c.name() + " sent an invalid request for step " + req.step() + ": " + problem);
+                drop(c.name(), null);
+                return;
+            }
         }
         commands.put(c.name(), req.commands());
         waiting.remove(c.name());

@@ -62,6 +62,19 @@ final class Attributes {
         return value == null ? fallback : positive(element, attribute, value);
     }
 
+    /** @return the value as a number 0 or greater, or {@code fallback} when it is absent */
+    double nonNegative(Element element, String attribute, String value, double fallback) {
+        if (value == null) {
+            return fallback;
+        }
+        double v = number(element, attribute, value);
+        if (v < 0) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + format(v)
+                    + " but must be 0 or greater");
+        }
+        return v == 0 ? 0 : v; // -0 reads as 0, so that equal worlds compare equal
+    }
+
     private double checkPositive(Element element, String attribute, double v) {
         if (v <= 0) {
             throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + format(v)

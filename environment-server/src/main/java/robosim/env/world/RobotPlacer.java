@@ -14,8 +14,8 @@ import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.protocol.params.ParameterFileException;
-import robosim.protocol.params.ParameterFileReader;
 import robosim.protocol.params.RobotParameters;
+import robosim.protocol.params.RobotParametersReader;
 
 /**
  * Turns {@code <robot>} elements into {@link RobotSpec}s: reads each robot's parameter file
@@ -89,7 +89,7 @@ final class RobotPlacer {
                     + file + ")");
         }
         try {
-            RobotParameters read = ParameterFileReader.read(file);
+            RobotParameters read = RobotParametersReader.read(file);
             parameterCache.put(file, read);
             return read;
         } catch (ParameterFileException ex) {

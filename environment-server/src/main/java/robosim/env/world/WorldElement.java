@@ -8,7 +8,7 @@ import java.util.List;
 /**
  * The {@code <world>} root element. Children are collected through one adder per element name
  * rather than as unwrapped lists: Jackson replaces an unwrapped list each time its element
- * reappears after another one, so interleaved walls and polygons would be lost.
+ * reappears after another one, so interleaved walls, polygons and heat sources would be lost.
  */
 final class WorldElement extends Element {
     @JacksonXmlProperty(isAttribute = true)
@@ -38,6 +38,16 @@ final class WorldElement extends Element {
     @JsonSetter("robot")
     void addRobot(RobotElement robot) {
         children.add(robot);
+    }
+
+    @JsonSetter("heat")
+    void addHeat(HeatElement heat) {
+        children.add(heat);
+    }
+
+    @JsonSetter("noise")
+    void addNoise(NoiseElement noise) {
+        children.add(noise);
     }
 
     @Override

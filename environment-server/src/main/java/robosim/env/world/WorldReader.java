@@ -41,7 +41,7 @@ public final class WorldReader {
             }
         }
         ObstacleFactory shapes = new ObstacleFactory(attributes);
-        List<RobotElement> robotElements = new ArrayList<>();
+        NoiseElement noiseElement = null;
         for (Element child : root.children) {
             if (child instanceof WallElement wall) {
                 obstacles.add(shapes.wall(wall));
@@ -49,15 +49,33 @@ public final class WorldReader {
             } else if (child instanceof PolygonElement polygon) {
                 obstacles.add(shapes.polygon(polygon));
                 obstacleNames.add("the polygon at line " + polygon.line());
-            } else {
-                robotElements.add((RobotElement) child);
+            } else if (child instanceof NoiseElement noise) {
+                if (noiseElement != null) {
+                    throw attributes.error(noise, "a world has at most one <noise>; the first is at line "
+                            + noiseElement.line());
+                }
+                noiseElement = noise;
             }
         }
+        Noise noise = noiseElement == null ? Noise.NONE : noise(attributes, noiseElement);
+        // Robots and heat sources are checked against every obstacle, those listed after them too.
         RobotPlacer placer = new RobotPlacer(attributes, width, height, obstacles, obstacleNames);
+        HeatPlacer heatPlacer = new HeatPlacer(attributes, width, height, obstacles, obstacleNames);
         List<RobotSpec> robots = new ArrayList<>();
-        for (RobotElement robot : robotElements) {
-            robots.add(placer.place(robot));
+        List<HeatSource> heat = new ArrayList<>();
+        for (Element child : root.children) {
+            if (child instanceof RobotElement robot) {
+                robots.add(placer.place(robot));
+            } else if (child instanceof HeatElement source) {
+                heat.add(heatPlacer.place(source));
+            }
         }
-        return new World(name, file, width, height, stepMs, obstacles, robots);
+        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise);
+    }
+
+    private static Noise noise(Attributes attributes, NoiseElement e) {
+        return new Noise(attributes.nonNegative(e, "sonar", e.sonar, 0),
+                attributes.nonNegative(e, "laser", e.laser, 0),
+                attributes.nonNegative(e, "odometry", e.odometry, 0));
     }
 }

@@ -2,6 +2,8 @@ package robosim.env.core;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Map;
@@ -28,7 +30,7 @@ class SonarTest {
     void echoesNearerThanTheMinimumReadTheMinimum() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(1250, 0, 1350, 10000)),
                 Worlds.robot("r", 1000, 5000, 0)));
-        assertEquals(SimRobot.SONAR_MIN_RANGE, sim.state("r").sonar()[3]);
+        assertEquals(Sensors.SONAR_MIN_RANGE, sim.state("r").sonar()[3]);
     }
 
     @Test
@@ -43,6 +45,39 @@ class SonarTest {
         int after = sim.state("r").sonar()[11];
         assertEquals(2000 - 100 - 255, before, 1);
         assertEquals(Math.round(sim.state("r").x() - 100 - 255), after, 1);
+    }
+
+    @Test
+    void drivingBackwardsIntoAWallStopsAtContactWhileTheRearSonarsSeeItShrink() {
+        // the wall's face at x = 100 behind the robot; the p3dx rear is 301 mm behind its centre
+        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(0, 0, 100, 10000)),
+                Worlds.robot("r", 2500, 5000, 0)));
+        sim.step(Map.of("r", List.of(new Command.Move(-5000))));
+        int previous = Integer.MAX_VALUE;
+        int shrinking = 0;
+        for (int i = 0; i < 200 && !sim.state("r").stalled(); i++) {
+            int rear = Math.min(sim.state("r").sonar()[11], sim.state("r").sonar()[12]);
+            assertTrue(rear <= previous, "rear sonars never see the wall recede while backing: " + rear + " after " + previous);
+            shrinking += rear < previous ? 1 : 0;
+            previous = rear;
+            sim.step(Map.of());
+        }
+        var s = sim.state("r");
+        assertTrue(s.stalled(), "stopped by the wall");
+        assertEquals(100 + 301, s.x(), 0.5, "rear at the wall's face, not inside");
+        assertEquals(0, s.th(), 1e-9, "it backed straight, without turning round");
+        assertFalse(sim.overlapsAnything("r"));
+        assertTrue(shrinking > 10, "the rear readings shrank step after step: " + shrinking);
+        assertEquals(Sensors.SONAR_MIN_RANGE, s.sonar()[11], "at the wall the rear sonar reads its minimum");
+    }
+
+    @Test
+    void sonarsSwitchedOffSendNoReadings() {
+        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(), Worlds.robot("r", 1000, 5000, 0)));
+        sim.step(Map.of("r", List.of(new Command.SetSonar(false))));
+        assertEquals(0, sim.state("r").sonar().length);
+        sim.step(Map.of("r", List.of(new Command.SetSonar(true))));
+        assertEquals(16, sim.state("r").sonar().length);
     }
 
     @Test

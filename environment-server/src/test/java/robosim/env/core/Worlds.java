@@ -39,6 +39,15 @@ final class Worlds {
                 p.rotAccel(), p.rotDecel(), p.diffConvFactor(), p.sonarMaxRange(), p.sonarUnits());
     }
 
+    /** A p3dx whose laser is mounted at the given pose. */
+    static RobotParameters p3dxWithLaser(double lx, double ly, double lth) {
+        RobotParameters p = p3dx();
+        return new RobotParameters(p.robotClass(), p.subclass(), p.robotRadius(), p.robotWidth(),
+                p.robotLengthFront(), p.robotLengthRear(), p.maxVelocity(), p.maxRVelocity(), p.transAccel(),
+                p.transDecel(), p.rotAccel(), p.rotDecel(), p.diffConvFactor(), p.sonarMaxRange(), p.sonarUnits(),
+                lx, ly, lth, 8000);
+    }
+
     static RobotSpec robot(String name, double x, double y, double th) {
         return robot(name, x, y, th, p3dx());
     }
@@ -49,6 +58,12 @@ final class Worlds {
 
     static Obstacle box(double x0, double y0, double x1, double y1) {
         return new Obstacle(new double[] {x0, y0, x1, y0, x1, y1, x0, y1}, 500, 1);
+    }
+
+    /** A world with heat sources and noise. */
+    static World world(double w, double h, List<Obstacle> obstacles, List<robosim.env.world.HeatSource> heat,
+                       robosim.env.world.Noise noise, RobotSpec... robots) {
+        return new World("test", Path.of("test.xml"), w, h, 100, new ArrayList<>(obstacles), List.of(robots), heat, noise);
     }
 
     /** A world of the given size with the given obstacles and robots. */

@@ -60,6 +60,8 @@ class WorldReaderTest {
         assertEquals("small-maze", world.name());
         assertEquals(6, world.obstacles().size());
         assertEquals(2, world.robots().size());
+        assertEquals(List.of(new HeatSource(4500, 5000, 40, 11)), world.heat());
+        assertEquals(new Noise(5, 10, 0.0075), world.noise());
     }
 
     @Test

@@ -1,7 +1,6 @@
 package robosim.protocol.params;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
@@ -25,23 +24,8 @@ class ParameterFileReaderTest {
 
     @BeforeAll
     static void readShippedFiles() {
-        Path robots = projectRoot().resolve("testLoadFiles").resolve("robots");
-        p3dx = ParameterFileReader.read(robots.resolve("p3dx.p"));
-        p3at = ParameterFileReader.read(robots.resolve("p3at.p"));
-    }
-
-    /** Surefire names the project root in robosim.root; elsewhere, walk up to the testLoadFiles dir. */
-    private static Path projectRoot() {
-        String property = System.getProperty("robosim.root");
-        if (property != null && Files.isDirectory(Path.of(property, "testLoadFiles"))) {
-            return Path.of(property);
-        }
-        Path dir = Path.of("").toAbsolutePath();
-        while (dir != null && !Files.isDirectory(dir.resolve("testLoadFiles"))) {
-            dir = dir.getParent();
-        }
-        assertNotNull(dir, "no directory holding testLoadFiles above " + Path.of("").toAbsolutePath());
-        return dir;
+        p3dx = ParameterFileReader.read(ShippedRobots.dir().resolve("p3dx.p"));
+        p3at = ParameterFileReader.read(ShippedRobots.dir().resolve("p3at.p"));
     }
 
     private Path write(String name, String text) throws IOException {

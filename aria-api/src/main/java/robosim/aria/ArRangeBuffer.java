@@ -1,0 +1,106 @@
+package robosim.aria;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.List;
+
+/**
+ * A bounded list of readings, newest first, as ARIA's {@code ArRangeBuffer}: adding to a full
+ * buffer evicts the oldest. Not thread-safe; its {@link ArRangeDevice} guards it.
+ */
+final class ArRangeBuffer {
+    /** The closest reading found by {@link #closestPolar}: its distance and relative angle. */
+    record Closest(double distance, double angle) { }
+
+    private final String role;
+    private final Deque<ArPoseWithTime> readings = new ArrayDeque<>();
+    private int size;
+
+    /**
+     * @param role what the buffer is, for messages: {@code current} or {@code cumulative}
+     * @param size its capacity
+     */
+    ArRangeBuffer(String role, int size) {
+        this.role = role;
+        setSize(size);
+    }
+
+    int getSize() {
+        return size;
+    }
+
+    /** A smaller size evicts the oldest readings at once. */
+    void setSize(int size) {
+        if (size < 0) {
+            throw new IllegalArgumentException(size + " was supplied for " + role
+                    + "BufferSize: a buffer size must be 0 or more");
+        }
+        this.size = size;
+        trim();
+    }
+
+    /** Adds a reading as the newest; a buffer of size 0 keeps nothing. */
+    void add(ArPoseWithTime reading) {
+        readings.addFirst(reading);
+        trim();
+    }
+
+    private void trim() {
+        while (readings.size() > size) {
+            readings.removeLast();
+        }
+    }
+
+    void clear() {
+        readings.clear();
+    }
+
+    /** Removes the readings strictly closer than {@code dist} to (x, y). */
+    void removeWithin(double x, double y, double dist) {
+        readings.removeIf(r -> r.distanceTo(x, y) < dist);
+    }
+
+    /** Removes the readings taken more than {@code maxAgeMs} before {@code nowMs}. */
+    void removeOlderThan(long nowMs, long maxAgeMs) {
+        readings.removeIf(r -> nowMs - r.timeMs() > maxAgeMs);
+    }
+
+    /** Removes the readings farther than {@code dist} from the robot's position. */
+    void removeFartherThan(ArPose robot, double dist) {
+        readings.removeIf(r -> r.distanceTo(robot.getX(), robot.getY()) > dist);
+    }
+
+    /** @return the readings' positions, newest first, as new poses */
+    List<ArPose> poses() {
+        List<ArPose> out = new ArrayList<>(readings.size());
+        for (ArPoseWithTime r : readings) {
+            out.add(r.toPose());
+        }
+        return out;
+    }
+
+    /**
+     * ARIA's {@code getClosestPolar}: the reading nearest the robot among those whose direction,
+     * relative to the robot's heading, lies strictly inside the interval ({@link ArMath#angleBetween}).
+     *
+     * @param start interval start, degrees
+     * @param end   interval end, degrees
+     * @param robot the robot's pose
+     * @return the nearest reading's distance from the robot centre and relative angle, or null
+     */
+    Closest closestPolar(double start, double end, ArPose robot) {
+        Closest best = null;
+        for (ArPoseWithTime r : readings) {
+            ArPose p = r.toPose();
+            double th = ArMath.subAngle(robot.findAngleTo(p), robot.getTh());
+            if (ArMath.angleBetween(th, start, end)) {
+                double d = robot.findDistanceTo(p);
+                if (best == null || d < best.distance()) {
+                    best = new Closest(d, th);
+                }
+            }
+        }
+        return best;
+    }
+}

@@ -1,0 +1,60 @@
+package robosim.aria;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+
+/**
+ * Named tasks run once per robot cycle, as ARIA's sync tasks: higher positions run first, equal
+ * positions in the order they were added. A task that throws is logged and removed, so one broken
+ * task cannot stop the robot's cycle.
+ */
+final class TaskList {
+    private static final Logger LOG = Logger.getLogger(TaskList.class.getName());
+
+    private record Task(String name, int position, Runnable body) { }
+
+    private final String kind;
+    private final List<Task> tasks = new ArrayList<>();
+
+    TaskList(String kind) {
+        this.kind = kind;
+    }
+
+    synchronized void add(String name, int position, Runnable body) {
+        if (name == null || body == null) {
+            throw new IllegalArgumentException("a " + kind + " task needs a name and a body");
+        }
+        remove(name);
+        int at = 0;
+        while (at < tasks.size() && tasks.get(at).position() >= position) {
+            at++;
+        }
+        tasks.add(at, new Task(name, position, body));
+    }
+
+    synchronized boolean remove(String name) {
+        return tasks.removeIf(t -> t.name().equals(name));
+    }
+
+    synchronized List<String> names() {
+        return tasks.stream().map(Task::name).toList();
+    }
+
+    void runAll(String robot) {
+        List<Task> snapshot;
+        synchronized (this) {
+            snapshot = List.copyOf(tasks);
+        }
+        for (Task t : snapshot) {
+            try {
+                t.body().run();
+            } catch (RuntimeException e) {
+                LOG.log(Level.WARNING, "robot " + robot + ": " + kind + " task '" + t.name()
+                        + "' threw and was removed", e);
+                remove(t.name());
+            }
+        }
+    }
+}

@@ -1,0 +1,63 @@
+package robosim.env.core;
+
+import robosim.protocol.Command;
+
+/**
+ * What a robot may ask for: every number finite, ranges and fields of view positive, a laser
+ * increment a SICK LMS200 has. A robot that asks for anything else is closed by the server before
+ * the request reaches the simulation.
+ */
+public final class CommandRules {
+    private CommandRules() {
+    }
+
+    /**
+     * @param c a command from a robot
+     * @return what is wrong with it, or null if nothing is
+     */
+    public static String problem(Command c) {
+        if (c instanceof Command.SetVel v) {
+            return finite("vel", v.vel());
+        } else if (c instanceof Command.SetRotVel v) {
+            return finite("rotVel", v.rotVel());
+        } else if (c instanceof Command.SetVel2 v) {
+            return first(finite("left", v.left()), finite("right", v.right()));
+        } else if (c instanceof Command.Move m) {
+            return finite("distance", m.distance());
+        } else if (c instanceof Command.SetHeading h) {
+            return finite("heading", h.heading());
+        } else if (c instanceof Command.SetDeltaHeading h) {
+            return finite("delta", h.delta());
+        } else if (c instanceof Command.SetMaxTransVel v) {
+            return finite("maxVel", v.vel());
+        } else if (c instanceof Command.SetMaxRotVel v) {
+            return finite("maxRotVel", v.rotVel());
+        } else if (c instanceof Command.ConfigureLaser l) {
+            if (l.increment() != 1 && l.increment() != 0.5) {
+                return l.increment() + " was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees";
+            }
+            return positive("laser maxRange", l.maxRange());
+        } else if (c instanceof Command.ConfigureHeatSensor h) {
+            return first(positive("heat fieldOfView", h.fieldOfView()), positive("heat maxRange", h.maxRange()),
+                    h.fieldOfView() > 360 ? h.fieldOfView() + " was supplied for heat fieldOfView: at most 360 degrees" : null);
+        }
+        return null;
+    }
+
+    private static String finite(String name, double v) {
+        return Double.isFinite(v) ? null : v + " was supplied for " + name + ": it must be a finite number";
+    }
+
+    private static String positive(String name, double v) {
+        return Double.isFinite(v) && v > 0 ? null : v + " was supplied for " + name + ": it must be greater than 0";
+    }
+
+    private static String first(String... problems) {
+        for (String p : problems) {
+            if (p != null) {
+                return p;
+            }
+        }
+        return null;
+    }
+}

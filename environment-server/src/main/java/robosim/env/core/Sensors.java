@@ -1,0 +1,156 @@
+package robosim.env.core;
+
+import java.util.List;
+import java.util.random.RandomGenerator;
+import robosim.env.world.HeatSource;
+import robosim.env.world.Noise;
+import robosim.geometry.GeometryClient;
+import robosim.geometry.Pose2D;
+import robosim.geometry.Surroundings;
+import robosim.protocol.Command;
+import robosim.protocol.HeatReading;
+import robosim.protocol.params.RobotParameters;
+import robosim.protocol.params.SonarUnit;
+
+/**
+ * One robot's sensors as the Environment computes them from the robot's true pose: the sonar ring
+ * (a 30° cone per transducer, MobileSim's model), the SICK laser (one ray per reading over 180°),
+ * and the heat sensor. Range noise, when the world has any, is Gaussian and drawn from the robot's
+ * own seeded stream.
+ */
+final class Sensors {
+    /** MobileSim's sonar model: a 30° cone. */
+    static final double SONAR_HALF_ANGLE = Math.toRadians(15);
+    /** Nearer echoes are reported at this range, mm. */
+    static final int SONAR_MIN_RANGE = 100;
+    /** A heat source nearer than this counts as this near, mm: the sensor saturates. */
+    static final double HEAT_MIN_DISTANCE = 250;
+
+    private final RobotParameters params;
+    private final Noise noise;
+    private final RandomGenerator random;
+    private boolean sonarOn = true;
+    private final int[] sonar;
+    private boolean laserOn;
+    private double laserIncrement = 1;
+    private double laserMaxRange;
+    private int[] laser = new int[0];
+    private boolean heatOn;
+    private double heatFieldOfView;
+    private double heatMaxRange;
+    private HeatReading heat;
+
+    Sensors(RobotParameters params, Noise noise, RandomGenerator random) {
+        this.params = params;
+        this.noise = noise;
+        this.random = random;
+        this.sonar = new int[params.sonarUnits().size()];
+        java.util.Arrays.fill(sonar, (int) params.sonarMaxRange());
+        this.laserMaxRange = params.laserMaxRange();
+    }
+
+    /** @return whether the command was a sensor command, now applied */
+    boolean apply(Command c) {
+        if (c instanceof Command.SetSonar s) {
+            sonarOn = s.on();
+        } else if (c instanceof Command.ConfigureLaser l) {
+            // CommandRules has checked the increment and range
+            laserOn = l.on();
+            laserIncrement = l.increment();
+            laserMaxRange = l.maxRange();
+            laser = new int[0];
+        } else if (c instanceof Command.ConfigureHeatSensor h) {
+            heatOn = h.on();
+            heatFieldOfView = h.fieldOfView();
+            heatMaxRange = h.maxRange();
+            heat = null;
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    /** Takes every switched-on sensor's reading at the robot's true pose. */
+    void read(GeometryClient geometry, Pose2D pose, double bodyRadius, int bodyId, List<HeatSource> sources) {
+        double reach = Math.max(sonarOn ? params.sonarMaxRange() : 0, laserOn ? laserMaxRange : 0);
+        if (reach > 0) {
+            Surroundings near = geometry.around(pose.x(), pose.y(), reach + bodyRadius, bodyId);
+            if (sonarOn) {
+                readSonar(near, pose);
+            }
+            if (laserOn) {
+                readLaser(near, pose);
+            }
+        }
+        if (heatOn) {
+            heat = readHeat(geometry, pose, sources);
+        }
+    }
+
+    private void readSonar(Surroundings near, Pose2D p) {
+        double max = params.sonarMaxRange();
+        for (SonarUnit s : params.sonarUnits()) {
+            double r = near.cone(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
+                    p.th() + Math.toRadians(s.th()), SONAR_HALF_ANGLE, max);
+            r = noisy(r, noise.sonarSigma());
+            sonar[s.index()] = (int) Math.round(Math.max(SONAR_MIN_RANGE, Math.min(max, r)));
+        }
+    }
+
+    private void readLaser(Surroundings near, Pose2D p) {
+        int n = (int) Math.round(180 / laserIncrement) + 1;
+        if (laser.length != n) {
+            laser = new int[n];
+        }
+        double lx = p.worldX(params.laserX(), params.laserY());
+        double ly = p.worldY(params.laserX(), params.laserY());
+        double base = p.th() + Math.toRadians(params.laserTh() - 90);
+        double step = Math.toRadians(laserIncrement);
+        for (int i = 0; i < n; i++) {
+            double r = noisy(near.ray(lx, ly, base + i * step, laserMaxRange), noise.laserSigma());
+            laser[i] = (int) Math.round(Math.max(0, Math.min(laserMaxRange, r)));
+        }
+    }
+
+    /**
+     * The strongest source in view: intensity I·(1000 / d)², d the distance in mm (at least
+     * {@value #HEAT_MIN_DISTANCE}), for sources within the field of view and the maximum range
+     * whose straight line to the sensor crosses no wall or obstacle.
+     */
+    private HeatReading readHeat(GeometryClient geometry, Pose2D p, List<HeatSource> sources) {
+        HeatReading best = new HeatReading(0, 0, 0);
+        for (HeatSource h : sources) {
+            double d = Math.hypot(h.x() - p.x(), h.y() - p.y());
+            double bearing = Angles.fix(Math.toDegrees(Math.atan2(h.y() - p.y(), h.x() - p.x()) - p.th()));
+            if (d > heatMaxRange || Math.abs(bearing) > heatFieldOfView / 2
+                    || !geometry.lineOfSight(p.x(), p.y(), h.x(), h.y())) {
+                continue;
+            }
+            double felt = h.intensity() * Math.pow(1000 / Math.max(d, HEAT_MIN_DISTANCE), 2);
+            if (felt > best.intensity()) {
+                best = new HeatReading(felt, bearing, d);
+            }
+        }
+        return best;
+    }
+
+    private double noisy(double range, double sigma) {
+        return sigma > 0 ? range + random.nextGaussian() * sigma : range;
+    }
+
+    int[] sonar() {
+        return sonarOn ? sonar.clone() : new int[0];
+    }
+
+    int[] laser() {
+        return laserOn ? laser.clone() : new int[0];
+    }
+
+    double laserIncrement() {
+        return laserIncrement;
+    }
+
+    HeatReading heat() {
+        return heatOn ? heat : null;
+    }
+}

@@ -1,0 +1,225 @@
+package robosim.protocol.params;
+
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * The rules both forms of a robot parameter file share, so that a {@code .p} file and its
+ * {@code .xml} twin give equal records: ARIA's defaults, which numbers must be positive, and the
+ * sonar count against the sonar units. Each form's reader feeds in the values with the line they
+ * came from and names them in its own spelling, so that messages quote the file as written.
+ */
+final class ParameterRules {
+    /**
+     * How a form spells the sonar names in its messages.
+     *
+     * @param sonarNum  the sonar count
+     * @param sonarUnit one sonar transducer
+     * @param index     a transducer's number
+     */
+    record Spelling(String sonarNum, String sonarUnit, String index) {
+    }
+
+    /** How the {@code .p} form spells the sonar names. */
+    static final Spelling P_FORM = new Spelling("SonarNum", "SonarUnit", "index");
+    /** How the XML form spells the sonar names. */
+    static final Spelling XML_FORM = new Spelling("sonarNum", "sonarUnit", "number");
+
+    /** The most sonar transducers a file may declare; bounds what a broken file can make us allocate. */
+    static final int MAX_SONARS = 32;
+
+    private enum Sign { POSITIVE, NOT_NEGATIVE, ANY }
+
+    private record Rule(double defaultValue, Sign sign) {
+    }
+
+    /** Numeric keys, lower case, with ARIA's {@code ArRobotParams} defaults. */
+    private static final Map<String, Rule> NUMBERS = Map.ofEntries(
+            Map.entry("robotradius", new Rule(250, Sign.POSITIVE)),
+            Map.entry("robotdiagonal", new Rule(120, Sign.POSITIVE)),
+            Map.entry("robotwidth", new Rule(400, Sign.POSITIVE)),
+            Map.entry("robotlength", new Rule(500, Sign.NOT_NEGATIVE)),
+            Map.entry("robotlengthfront", new Rule(0, Sign.NOT_NEGATIVE)),
+            Map.entry("robotlengthrear", new Rule(0, Sign.NOT_NEGATIVE)),
+            Map.entry("maxvelocity", new Rule(2500, Sign.POSITIVE)),
+            Map.entry("maxrvelocity", new Rule(500, Sign.POSITIVE)),
+            Map.entry("transaccel", new Rule(300, Sign.POSITIVE)),
+            Map.entry("transdecel", new Rule(300, Sign.POSITIVE)),
+            Map.entry("rotaccel", new Rule(100, Sign.POSITIVE)),
+            Map.entry("rotdecel", new Rule(100, Sign.POSITIVE)),
+            Map.entry("diffconvfactor", new Rule(0.0056, Sign.POSITIVE)),
+            Map.entry("sonarmaxrange", new Rule(5000, Sign.POSITIVE)),
+            Map.entry("laserx", new Rule(0, Sign.ANY)),
+            Map.entry("lasery", new Rule(0, Sign.ANY)),
+            Map.entry("laserth", new Rule(0, Sign.ANY)),
+            // ARIA writes "LaserMaxRange 0" for "the laser's own default"
+            Map.entry("lasermaxrange", new Rule(0, Sign.NOT_NEGATIVE)));
+
+    private final Path file;
+    private final Spelling spelling;
+    private final Map<String, Double> numbers = new HashMap<>();
+    private String robotClass = "Pioneer";
+    private String subclass;
+    private Integer sonarNum;
+    private int sonarNumLine;
+    private final Map<Integer, SonarUnit> sonars = new TreeMap<>();
+    private final Map<Integer, Integer> sonarLines = new HashMap<>();
+
+    /**
+     * @param file     the file read, named in every message; its name without extension is the
+     *                 default subclass
+     * @param spelling how the file's form spells the sonar names
+     */
+    ParameterRules(Path file, Spelling spelling) {
+        this.file = file;
+        this.spelling = spelling;
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        this.subclass = dot > 0 ? name.substring(0, dot) : name;
+        NUMBERS.forEach((key, rule) -> numbers.put(key, rule.defaultValue()));
+    }
+
+    /** @return whether {@code key} (any case) names a numeric parameter */
+    static boolean isNumber(String key) {
+        return NUMBERS.containsKey(key.toLowerCase(Locale.ROOT));
+    }
+
+    /** @return a problem with this file at {@code line} (0: the whole file) */
+    ParameterFileException error(int line, String rule) {
+        return new ParameterFileException(file, line, rule);
+    }
+
+    void robotClass(String value) {
+        robotClass = value;
+    }
+
+    void subclass(String value) {
+        subclass = value;
+    }
+
+    /**
+     * Sets a numeric parameter.
+     *
+     * @param key  the key (any case) as the file writes it, for messages
+     * @param text the value as written
+     * @param line where
+     */
+    void number(String key, String text, int line) {
+        number(key, key, text, line);
+    }
+
+    /**
+     * Sets a numeric parameter that the file names differently from its key.
+     *
+     * @param key  the key (any case), for example {@code LaserMaxRange}
+     * @param name how the file names it, for messages, for example {@code laser maxRange}
+     * @param text the value as written
+     * @param line where
+     */
+    void number(String key, String name, String text, int line) {
+        Rule rule = NUMBERS.get(key.toLowerCase(Locale.ROOT));
+        double v = parse(name, text, line);
+        if (rule.sign() == Sign.POSITIVE && v <= 0) {
+            throw error(line, name + " is " + text + " but must be greater than 0");
+        }
+        if (rule.sign() == Sign.NOT_NEGATIVE && v < 0) {
+            throw error(line, name + " is " + text + " but must not be negative");
+        }
+        numbers.put(key.toLowerCase(Locale.ROOT), v);
+    }
+
+    void sonarNum(String text, int line) {
+        double n = parse(spelling.sonarNum(), text, line);
+        if (n < 0 || n > MAX_SONARS || n != Math.rint(n)) {
+            throw error(line, spelling.sonarNum() + " " + text + " must be a whole number from 0 to " + MAX_SONARS);
+        }
+        sonarNum = (int) n;
+        sonarNumLine = line;
+    }
+
+    /**
+     * Adds a sonar transducer.
+     *
+     * @param index its number as written
+     * @param x     mm forward, as written
+     * @param y     mm left, as written
+     * @param th    heading in degrees, as written
+     * @param line  where
+     */
+    void sonarUnit(String index, String x, String y, String th, int line) {
+        String unit = spelling.sonarUnit();
+        double n = parse(unit + " " + spelling.index(), index, line);
+        if (n < 0 || n != Math.rint(n)) {
+            throw error(line, unit + " " + spelling.index() + " " + index + " must be a whole number from 0");
+        }
+        if (sonarNum != null && n >= sonarNum) {
+            throw error(line, unit + " " + spelling.index() + " " + index + " must be less than "
+                    + spelling.sonarNum() + " " + sonarNum);
+        }
+        if (n >= MAX_SONARS) {
+            throw error(line, unit + " " + spelling.index() + " " + index + " must be less than " + MAX_SONARS);
+        }
+        SonarUnit sonar = new SonarUnit((int) n, parse(unit + " x", x, line), parse(unit + " y", y, line),
+                parse(unit + " th", th, line));
+        if (sonars.putIfAbsent(sonar.index(), sonar) != null) {
+            throw error(line, unit + " " + sonar.index() + " is given twice");
+        }
+        sonarLines.put(sonar.index(), line);
+    }
+
+    /**
+     * Applies the rules that need the whole file and makes the record.
+     *
+     * @return the robot's parameters
+     * @throws ParameterFileException if a sonar unit is missing or lies beyond a later sonar count
+     */
+    RobotParameters build() {
+        int expected = sonarNum == null ? sonars.size() : sonarNum;
+        // a sonar unit read before the sonar count escaped the index check; apply it now
+        for (int index : sonars.keySet()) {
+            if (sonarNum != null && index >= sonarNum) {
+                throw error(sonarLines.get(index), spelling.sonarUnit() + " " + spelling.index() + " " + index
+                        + " must be less than " + spelling.sonarNum() + " " + sonarNum);
+            }
+        }
+        for (int n = 0; n < expected; n++) {
+            if (!sonars.containsKey(n)) {
+                throw error(sonarNumLine, spelling.sonarNum() + " is " + expected + " but there is no "
+                        + spelling.sonarUnit() + " " + n);
+            }
+        }
+        double length = numbers.get("robotlength");
+        double front = numbers.get("robotlengthfront");
+        double rear = numbers.get("robotlengthrear");
+        if (front == 0 || rear == 0) {
+            front = length / 2;
+            rear = length / 2;
+        }
+        double laserRange = numbers.get("lasermaxrange");
+        return new RobotParameters(robotClass, subclass,
+                numbers.get("robotradius"), numbers.get("robotwidth"), front, rear,
+                numbers.get("maxvelocity"), numbers.get("maxrvelocity"),
+                numbers.get("transaccel"), numbers.get("transdecel"),
+                numbers.get("rotaccel"), numbers.get("rotdecel"),
+                numbers.get("diffconvfactor"), numbers.get("sonarmaxrange"),
+                List.copyOf(sonars.values()),
+                numbers.get("laserx"), numbers.get("lasery"), numbers.get("laserth"),
+                laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange);
+    }
+
+    private double parse(String what, String text, int line) {
+        try {
+            double v = Double.parseDouble(text);
+            if (!Double.isFinite(v)) {
+                throw new NumberFormatException();
+            }
+            return v;
+        } catch (NumberFormatException e) {
+            throw error(line, what + " '" + text + "' is not a number");
+        }
+    }
+}
