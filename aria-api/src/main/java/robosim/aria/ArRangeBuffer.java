@@ -48,7 +48,7 @@ final class ArRangeBuffer {
 
     private void trim() {
         while (readings.size() > size) {
-            readings.removeLast();
+            readings.removeFirst();
         }
     }
 

@@ -77,7 +77,7 @@ public class ArRangeDevice {
         this.taskName = name + " range device #" + IDS.incrementAndGet();
         this.current = new ArRangeBuffer("current", currentBufferSize);
         this.cumulative = new ArRangeBuffer("cumulative", cumulativeBufferSize);
-        setMaxRange(maxRange);
+        this.maxRange = checkedMaxRange(maxRange);
     }
 
     /** @return the device's name */
@@ -114,10 +114,15 @@ public class ArRangeDevice {
 
     /** @param maxRange the maximum range, mm, greater than 0 */
     public void setMaxRange(double maxRange) {
+        this.maxRange = checkedMaxRange(maxRange);
+    }
+
+    private static double checkedMaxRange(double maxRange) {
         if (!(maxRange > 0) || Double.isInfinite(maxRange)) {
-            throw new IllegalArgumentException(maxRange + " was supplied for maxRange: it must be greater than 0");
+            throw new IllegalArgumentException(maxRange
+                    + " was supplied for maxRange: it must be a finite number greater than 0");
         }
-        this.maxRange = maxRange;
+        return maxRange;
     }
 
     // ---- buffers ----

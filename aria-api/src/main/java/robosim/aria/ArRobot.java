@@ -102,6 +102,7 @@ public class ArRobot extends AbstractRobot {
     protected void responded(RobotSensorResponse response) {
         lock.lock();
         try {
+            super.responded(response);
             counter++;
             RobotState s = response.state();
             int[] ranges = s.sonar();
@@ -173,6 +174,22 @@ public class ArRobot extends AbstractRobot {
     /** Releases the robot's lock. */
     public void unlock() {
         lock.unlock();
+    }
+
+    /**
+     * Yields in simulated time (see {@link ArUtil#sleep}).
+     *
+     * @param ms simulated milliseconds
+     * @throws IllegalStateException if the calling thread holds the robot's lock, which the cycle
+     *                               needs to deliver the next step
+     */
+    @Override
+    public void sleepSimulated(long ms) {
+        if (lock.isHeldByCurrentThread()) {
+            throw new IllegalStateException("robot " + getName() + ": sleeping while holding the robot's lock"
+                    + " would stop its cycle; unlock() first");
+        }
+        super.sleepSimulated(ms);
     }
 
     /** @return whether the calling thread holds the robot's lock */
@@ -476,7 +493,8 @@ public class ArRobot extends AbstractRobot {
      *         false for a bad index
      */
     public boolean isSonarNew(int num) {
-        return num >= 0 && num < sonarReadings.length && sonarReadings[num].isNew(counter);
+        return num >= 0 && num < sonarReadings.length && !sonarReadings[num].getIgnoreThisReading()
+                && sonarReadings[num].isNew(counter);
     }
 
     /** Turns the sonars on (they are on after connecting). */

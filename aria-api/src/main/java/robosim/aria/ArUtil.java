@@ -20,10 +20,6 @@ public final class ArUtil {
      */
     public static void sleep(long ms) {
         AbstractRobot robot = AbstractRobot.current();
-        if (robot instanceof ArRobot ar && ar.isLockedByMe()) {
-            throw new IllegalStateException("robot " + ar.getName() + ": ArUtil.sleep while holding the robot's lock"
-                    + " would stop its cycle; unlock() first");
-        }
         if (robot != null && robot.isConnected()) {
             robot.sleepSimulated(ms);
             return;

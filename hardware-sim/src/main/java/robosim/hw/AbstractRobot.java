@@ -27,7 +27,7 @@ public abstract class AbstractRobot {
     private final String robotType;
     private final RobotParameters parameters;
     private final StepGate gate = new StepGate();
-    private volatile RobotState state;
+    private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
     private volatile int stepMs = 100;
     private HardwareSimulator hardware;
     private volatile String connectionError;
@@ -87,17 +87,17 @@ public abstract class AbstractRobot {
     }
 
     private void onResponse(RobotSensorResponse r) {
-        state = r.state();
         responded(r);
     }
 
     /**
      * Called on the hardware thread as each step's response arrives, while the robot's code is
-     * yielded; subclasses update what their getters read.
+     * yielded: records the new state. Subclasses that update more call this first.
      *
      * @param response the step's response
      */
     protected void responded(RobotSensorResponse response) {
+        state = response.state();
     }
 
     /** @param reason why connecting failed, for the robot's program to read */

@@ -12,11 +12,12 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.bench.CodecBench;
 import robosim.bench.CoreBench;
+import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
 
 /** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = "Measure steps per second in the grid world (Environment in this JVM, robots in one client JVM, over TCP) and the wire formats.")
+        description = "Measure steps per second in the grid world (Environment in this JVM, robots in one client JVM, over TCP), the wire formats and the laser.")
 final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -33,6 +34,9 @@ final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--skip-codec", description = "do not measure the wire formats")
     boolean skipCodec;
+
+    @Option(names = "--skip-laser", description = "do not measure the laser")
+    boolean skipLaser;
 
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R", description = "runs per robot count; the median is printed too; default ${DEFAULT-VALUE}")
     int repeat;
@@ -61,6 +65,11 @@ final class BenchCommand implements Callable<Integer> {
                 System.getProperty("java.version"), System.getProperty("os.arch"));
         if (!skipCodec) {
             CodecBench.print(o, CodecBench.run(20_000));
+        }
+        if (!skipLaser) {
+            Path cluttered = root.resolve("testLoadFiles/environment/cluttered-room.xml");
+            LaserBench.print(o, LaserBench.run(cluttered, 1.0, 5000));
+            LaserBench.print(o, LaserBench.run(cluttered, 0.5, 5000));
         }
         for (int n : robots) {
             o.printf(Locale.ROOT, "core only (no TCP, one thread): ");

@@ -21,7 +21,8 @@ class DrawingImportsTest {
             "import java.net.", "import java.io.", "import java.nio.", "import javax.imageio.", "import java.util.logging.");
 
     @ParameterizedTest
-    @ValueSource(strings = {"WorldRenderer", "RobotPainter", "ViewTransform", "RenderOptions", "RobotPalette"})
+    @ValueSource(strings = {"WorldRenderer", "RobotPainter", "LaserPainter", "HeatPainter", "ViewTransform",
+        "RenderOptions", "RobotPalette"})
     void drawingClassImportsNoTransport(String className) throws IOException {
         Path source = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer", className + ".java");
         List<String> offending = Files.readAllLines(source).stream()

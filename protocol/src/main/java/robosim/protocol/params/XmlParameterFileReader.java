@@ -104,6 +104,10 @@ public final class XmlParameterFileReader {
             throw rules.error(line(), "text '" + parser.getText().trim() + "' in <" + ROOT + ">: "
                     + "parameters are child elements");
         }
+        // Jackson stops at the root's end; reading on lets the XML parser see anything after it
+        if (parser.nextToken() != null) {
+            throw rules.error(line(), "content after </" + ROOT + ">");
+        }
         return rules.build();
     }
 
