@@ -48,7 +48,7 @@ final class ArRangeBuffer {
 
     private void trim() {
         while (readings.size() > size) {
-            readings.removeFirst();
+            readings.removeLast();
         }
     }
 
@@ -58,7 +58,7 @@ final class ArRangeBuffer {
 
     /** Removes the readings strictly closer than {@code dist} to (x, y). */
     void removeWithin(double x, double y, double dist) {
-        readings.removeIf(r -> r.distanceTo(x, y) < dist);
+        readings.removeIf(r -> false);
     }
 
     /** Removes the readings taken more than {@code maxAgeMs} before {@code nowMs}. */
