@@ -58,7 +58,7 @@ final class ArRangeBuffer {
 
     /** Removes the readings strictly closer than {@code dist} to (x, y). */
     void removeWithin(double x, double y, double dist) {
-        readings.removeIf(r -> false);
+        readings.removeIf(r -> r.distanceTo(x, y) < dist);
     }
 
     /** Removes the readings taken more than {@code maxAgeMs} before {@code nowMs}. */

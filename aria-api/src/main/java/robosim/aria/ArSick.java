@@ -28,12 +28,10 @@ import robosim.protocol.params.RobotParameters;
 public class ArSick extends ArRangeDevice {
     /** A SICK LMS200's range, mm. */
     public static final double DEFAULT_MAX_RANGE = RobotParameters.DEFAULT_LASER_MAX_RANGE;
-    /** The current buffer's default size: one whole scan at 0.5°. */
-    public static final int DEFAULT_CURRENT_BUFFER_SIZE = 361;
-    /** The cumulative buffer's default size. */
-    public static final int DEFAULT_CUMULATIVE_BUFFER_SIZE = 200;
-
     private static final Logger LOG = Logger.getLogger(ArSick.class.getName());
+    /** One whole scan at 0.5°. */
+    private static final int SCAN_READINGS = 361;
+    private static final int CUMULATIVE_READINGS = 200;
 
     private volatile double increment = 1.0;
     private volatile boolean maxRangeChosen;
@@ -42,9 +40,9 @@ public class ArSick extends ArRangeDevice {
     private volatile List<ArSensorReading> rawReadings = List.of();
     private volatile int[] rawScan = new int[0];
 
-    /** A laser with buffers of 361 and 200 readings. */
+    /** A laser with buffers of 361 readings (a whole scan at 0.5°) and 200. */
     public ArSick() {
-        this(DEFAULT_CURRENT_BUFFER_SIZE, DEFAULT_CUMULATIVE_BUFFER_SIZE);
+        this(SCAN_READINGS, CUMULATIVE_READINGS);
     }
 
     /**

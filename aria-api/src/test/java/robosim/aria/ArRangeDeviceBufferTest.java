@@ -12,15 +12,15 @@ import org.junit.jupiter.api.Test;
 
 /** A range device's two buffers: newest first, bounded, the oldest evicted. */
 class ArRangeDeviceBufferTest {
-    private CycleRobot robot;
+    private ArRobot robot;
     private ArRangeDevice device;
 
     @BeforeEach
     void attached() {
-        robot = new CycleRobot(CycleRobot.p3dx());
+        robot = Cycles.p3dxRobot();
         device = new ArRangeDevice("test", 5000, 3, 4);
         robot.addRangeDevice(device);
-        robot.cycle(100, 0, 0, 0);
+        Cycles.cycle(robot, 100, 0, 0, 0);
     }
 
     /** Readings along the x axis, 100 mm apart, so none merges with another. */

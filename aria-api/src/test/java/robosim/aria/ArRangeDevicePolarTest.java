@@ -13,15 +13,15 @@ import org.junit.jupiter.api.Test;
  * facing +y (90°).
  */
 class ArRangeDevicePolarTest {
-    private CycleRobot robot;
+    private ArRobot robot;
     private ArRangeDevice device;
 
     @BeforeEach
     void robotFacingPlusY() {
-        robot = new CycleRobot(CycleRobot.p3dx());
+        robot = Cycles.p3dxRobot();
         device = new ArRangeDevice("test", 5000, 10, 10);
         robot.addRangeDevice(device);
-        robot.cycle(100, 1000, 500, 90);
+        Cycles.cycle(robot, 100, 1000, 500, 90);
     }
 
     /** 800 mm straight behind the robot: relative angle 180°. */
@@ -99,7 +99,7 @@ class ArRangeDevicePolarTest {
 
     @Test
     void aReadingOnABoundIsOutside() {
-        robot.cycle(200, 0, 0, 0);
+        Cycles.cycle(robot, 200, 0, 0, 0);
         device.addReading(500, 0);
         assertEquals(5000, device.currentReadingPolar(0, 20));
         assertEquals(500, device.currentReadingPolar(-1, 20), 1e-9);
@@ -114,7 +114,7 @@ class ArRangeDevicePolarTest {
     @Test
     void theCumulativeQueryAnswersAfterTheCurrentReadingsExpired() {
         readingBehind();
-        robot.cycle(5200, 1000, 500, 90);
+        Cycles.cycle(robot, 5200, 1000, 500, 90);
         assertEquals(5000, device.currentReadingPolar(170, -170));
         assertEquals(800, device.cumulativeReadingPolar(170, -170), 1e-6);
     }
@@ -122,7 +122,7 @@ class ArRangeDevicePolarTest {
     @Test
     void distancesAreFromTheRobotsCurrentPose() {
         readingBehind();
-        robot.cycle(200, 1000, 0, -90);
+        Cycles.cycle(robot, 200, 1000, 0, -90);
         assertEquals(300, device.currentReadingPolar(-10, 10), 1e-6, "after turning round, it is ahead");
     }
 }

@@ -9,15 +9,15 @@ import org.junit.jupiter.api.Test;
 
 /** ARIA's pruning: by age (current 5 s, cumulative 15 s), by distance (3000 mm) and by merging (50 mm). */
 class ArRangeDevicePruneTest {
-    private CycleRobot robot;
+    private ArRobot robot;
     private ArRangeDevice device;
 
     @BeforeEach
     void attachedAtTimeZero() {
-        robot = new CycleRobot(CycleRobot.p3dx());
+        robot = Cycles.p3dxRobot();
         device = new ArRangeDevice("test", 5000, 10, 10);
         robot.addRangeDevice(device);
-        robot.cycle(0, 0, 0, 0);
+        Cycles.cycle(robot, 0, 0, 0, 0);
         device.addReading(1000, 0);
     }
 
@@ -31,9 +31,9 @@ class ArRangeDevicePruneTest {
 
     @Test
     void aCurrentReadingGoesWhenOlderThanFiveSeconds() {
-        robot.cycle(5000, 0, 0, 0);
+        Cycles.cycle(robot, 5000, 0, 0, 0);
         assertEquals(1, device.getCurrentBuffer().size(), "exactly 5 s old is kept");
-        robot.cycle(5100, 0, 0, 0);
+        Cycles.cycle(robot, 5100, 0, 0, 0);
         assertTrue(device.getCurrentBuffer().isEmpty());
         assertEquals(1, device.getCumulativeBuffer().size(), "the cumulative buffer keeps it longer");
     }
@@ -41,30 +41,30 @@ class ArRangeDevicePruneTest {
     @Test
     void theCurrentAgeIsSettable() {
         device.setMaxSecondsToKeepCurrent(1);
-        robot.cycle(1100, 0, 0, 0);
+        Cycles.cycle(robot, 1100, 0, 0, 0);
         assertTrue(device.getCurrentBuffer().isEmpty());
     }
 
     @Test
     void aCumulativeReadingGoesWhenOlderThanFifteenSeconds() {
-        robot.cycle(15000, 0, 0, 0);
+        Cycles.cycle(robot, 15000, 0, 0, 0);
         assertEquals(1, device.getCumulativeBuffer().size(), "exactly 15 s old is kept");
-        robot.cycle(15100, 0, 0, 0);
+        Cycles.cycle(robot, 15100, 0, 0, 0);
         assertTrue(device.getCumulativeBuffer().isEmpty());
     }
 
     @Test
     void theCumulativeAgeIsSettable() {
         device.setMaxSecondsToKeepCumulative(30);
-        robot.cycle(29900, 0, 0, 0);
+        Cycles.cycle(robot, 29900, 0, 0, 0);
         assertEquals(1, device.getCumulativeBuffer().size());
     }
 
     @Test
     void aCumulativeReadingGoesWhenFartherThan3000MmFromTheRobot() {
-        robot.cycle(100, -1900, 0, 0);
+        Cycles.cycle(robot, 100, -1900, 0, 0);
         assertEquals(1, device.getCumulativeBuffer().size(), "2900 mm away is kept");
-        robot.cycle(200, -2100, 0, 0);
+        Cycles.cycle(robot, 200, -2100, 0, 0);
         assertTrue(device.getCumulativeBuffer().isEmpty(), "3100 mm away goes");
         assertEquals(1, device.getCurrentBuffer().size(), "distance does not prune the current buffer");
     }
@@ -79,7 +79,7 @@ class ArRangeDevicePruneTest {
     @Test
     void theCumulativeDistanceIsSettable() {
         device.setMaxDistToKeepCumulative(5000);
-        robot.cycle(100, -3900, 0, 0);
+        Cycles.cycle(robot, 100, -3900, 0, 0);
         assertEquals(1, device.getCumulativeBuffer().size());
     }
 
@@ -100,9 +100,9 @@ class ArRangeDevicePruneTest {
 
     @Test
     void aMergedReadingIsStampedAnew() {
-        robot.cycle(10000, 0, 0, 0);
+        Cycles.cycle(robot, 10000, 0, 0, 0);
         device.addReading(1020, 0);
-        robot.cycle(20000, 0, 0, 0);
+        Cycles.cycle(robot, 20000, 0, 0, 0);
         assertEquals(1, device.getCumulativeBuffer().size(), "10 s old, not 20: the merge renewed it");
     }
 

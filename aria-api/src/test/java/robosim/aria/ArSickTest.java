@@ -24,7 +24,7 @@ class ArSickTest {
         return s;
     }
 
-    private static ArSick attached(CycleRobot robot) {
+    private static ArSick attached(ArRobot robot) {
         ArSick sick = new ArSick();
         robot.addRangeDevice(sick);
         return sick;
@@ -42,16 +42,16 @@ class ArSickTest {
 
     @Test
     void theP3dxLaserSits18MmAheadOfTheCentre() {
-        RobotParameters p = CycleRobot.p3dx();
+        RobotParameters p = Cycles.p3dx();
         assertEquals(List.of(18.0, 0.0, 0.0), List.of(p.laserX(), p.laserY(), p.laserTh()));
     }
 
     @Test
     void aOneDegreeScanGives181ReadingsAtTheirGlobalPositions() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
         int[] s = scan(181, 500);
-        robot.cycle(100, 1000, 2000, 90, NO_SONAR, s);
+        Cycles.cycle(robot, 100, 1000, 2000, 90, NO_SONAR, s);
         List<ArSensorReading> raw = sick.getRawReadings();
         assertEquals(181, raw.size());
         // the robot at (1000, 2000) faces +y; the laser 18 mm ahead of its centre, facing forward
@@ -63,11 +63,11 @@ class ArSickTest {
 
     @Test
     void aHalfDegreeScanGives361Readings() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
         int[] s = scan(361, 1000);
         s[360] = 2000;
-        robot.cycle(100, 0, 0, 0, NO_SONAR, s);
+        Cycles.cycle(robot, 100, 0, 0, 0, NO_SONAR, s);
         List<ArSensorReading> raw = sick.getRawReadings();
         assertEquals(361, raw.size());
         assertReading(raw.get(1), -89.5, 18 + 1000 * Math.cos(Math.toRadians(-89.5)),
@@ -80,9 +80,9 @@ class ArSickTest {
     @Test
     void aTurnedMountTurnsEveryBeam() {
         // mounted 100 mm ahead, 50 mm left, turned 10° left; the robot at (1000, 2000) faces +y
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dxWithLaser(100, 50, 10, 8000));
+        ArRobot robot = Cycles.robot(Cycles.p3dxWithLaser(100, 50, 10, 8000));
         ArSick sick = attached(robot);
-        robot.cycle(100, 1000, 2000, 90, NO_SONAR, scan(181, 500));
+        Cycles.cycle(robot, 100, 1000, 2000, 90, NO_SONAR, scan(181, 500));
         List<ArSensorReading> raw = sick.getRawReadings();
         assertReading(raw.get(80), 0, 950, 2600);
         assertReading(raw.get(170), 90, 450, 2100);
@@ -96,10 +96,10 @@ class ArSickTest {
 
     @Test
     void rawReadingsCarryTheCycle() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
-        robot.cycle(100, 0, 0, 0);
-        robot.cycle(200, 300, 400, 45, NO_SONAR, scan(181, 700));
+        Cycles.cycle(robot, 100, 0, 0, 0);
+        Cycles.cycle(robot, 200, 300, 400, 45, NO_SONAR, scan(181, 700));
         ArSensorReading r = sick.getRawReadings().get(7);
         assertEquals(700, r.getRange());
         assertEquals(2, r.getCounterTaken());
@@ -110,25 +110,25 @@ class ArSickTest {
 
     @Test
     void theRawScanIsTheLatestScan() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
         int[] s = scan(181, 700);
         s[3] = 123;
-        robot.cycle(100, 0, 0, 0, NO_SONAR, s);
+        Cycles.cycle(robot, 100, 0, 0, 0, NO_SONAR, s);
         assertArrayEquals(s, sick.getRawScan());
-        robot.cycle(200, 0, 0, 0);
+        Cycles.cycle(robot, 200, 0, 0, 0);
         assertEquals(0, sick.getRawScan().length, "the laser is off");
         assertTrue(sick.getRawReadings().isEmpty());
     }
 
     @Test
     void onlyReadingsBelowTheMaximumRangeEnterTheBuffers() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
         int[] s = scan(181, 8000);
         s[90] = 1500;
         s[100] = 7999;
-        robot.cycle(100, 0, 0, 0, NO_SONAR, s);
+        Cycles.cycle(robot, 100, 0, 0, 0, NO_SONAR, s);
         assertEquals(2, sick.getCurrentBuffer().size());
         assertEquals(1518, sick.currentReadingPolar(-5, 5), 1e-9);
         assertEquals(1, sick.getCumulativeBuffer().size(), "7999 mm is beyond the cumulative 3000 mm");
@@ -136,9 +136,9 @@ class ArSickTest {
 
     @Test
     void aWholeScanFillsTheCurrentBuffer() {
-        CycleRobot robot = new CycleRobot(CycleRobot.p3dx());
+        ArRobot robot = Cycles.p3dxRobot();
         ArSick sick = attached(robot);
-        robot.cycle(100, 0, 0, 0, NO_SONAR, scan(361, 2000));
+        Cycles.cycle(robot, 100, 0, 0, 0, NO_SONAR, scan(361, 2000));
         assertEquals(361, sick.getCurrentBuffer().size());
     }
 
@@ -168,7 +168,7 @@ class ArSickTest {
 
     @Test
     void blockingConnectWithAnUnconnectedRobotFailsAndNamesIt() {
-        ArSick sick = attached(new CycleRobot(CycleRobot.p3dx()));
+        ArSick sick = attached(Cycles.p3dxRobot());
         assertNull(sick.getConnectionError());
         assertFalse(sick.blockingConnect());
         assertEquals("robot r is not connected: connect the robot first", sick.getConnectionError());
@@ -179,11 +179,11 @@ class ArSickTest {
 
     @Test
     void theMaximumRangeComesFromTheParameterFileUnlessSet() {
-        ArSick fromFile = attached(new CycleRobot(CycleRobot.p3dxWithLaser(0, 0, 0, 4000)));
+        ArSick fromFile = attached(Cycles.robot(Cycles.p3dxWithLaser(0, 0, 0, 4000)));
         assertEquals(4000, fromFile.getMaxRange());
         ArSick chosen = new ArSick();
         chosen.setMaxRange(6000);
-        new CycleRobot(CycleRobot.p3dxWithLaser(0, 0, 0, 4000)).addRangeDevice(chosen);
+        Cycles.robot(Cycles.p3dxWithLaser(0, 0, 0, 4000)).addRangeDevice(chosen);
         assertEquals(6000, chosen.getMaxRange());
     }
 }

@@ -10,12 +10,12 @@ import org.junit.jupiter.api.Test;
 
 /** ArSonarDevice: each cycle, only the sonar readings new in that cycle and below its maximum range. */
 class ArSonarDeviceTest {
-    private CycleRobot robot;
+    private ArRobot robot;
     private ArSonarDevice sonar;
 
     @BeforeEach
     void attached() {
-        robot = new CycleRobot(CycleRobot.p3dx());
+        robot = Cycles.p3dxRobot();
         sonar = new ArSonarDevice();
         robot.addRangeDevice(sonar);
     }
@@ -40,7 +40,7 @@ class ArSonarDeviceTest {
 
     @Test
     void readingsBelowTheMaximumRangeAreAddedAtTheirGlobalPositions() {
-        robot.cycle(100, 500, 200, 30, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 500, 200, 30, threeEchoes(), new int[0]);
         List<ArPose> current = sonar.getCurrentBuffer();
         assertEquals(3, current.size(), "the 13 sonars at 5000 mm saw nothing");
         // added in index order, so the newest first is sonar 12's
@@ -55,7 +55,7 @@ class ArSonarDeviceTest {
     @Test
     void theGlobalPositionIsTheTransducersEcho() {
         // sonar 3 sits at (166, 27) facing 10°; the robot at the origin facing 0
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
         ArPose p = sonar.getCurrentBuffer().get(2);
         assertEquals(166 + 1000 * Math.cos(Math.toRadians(10)), p.getX(), 1e-9);
         assertEquals(27 + 1000 * Math.sin(Math.toRadians(10)), p.getY(), 1e-9);
@@ -63,15 +63,15 @@ class ArSonarDeviceTest {
 
     @Test
     void aCycleWithoutSonarReadingsAddsNothing() {
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
-        robot.cycle(200, 0, 0, 0, new int[0], new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 200, 0, 0, 0, new int[0], new int[0]);
         assertEquals(3, sonar.getCurrentBuffer().size(), "last cycle's readings are not new any more");
     }
 
     @Test
     void everyCycleWithReadingsAddsThemAgain() {
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
-        robot.cycle(200, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 200, 0, 0, 0, threeEchoes(), new int[0]);
         assertEquals(6, sonar.getCurrentBuffer().size());
         assertEquals(3, sonar.getCumulativeBuffer().size(), "the same echoes merge in the cumulative buffer");
     }
@@ -79,14 +79,14 @@ class ArSonarDeviceTest {
     @Test
     void aLowerMaximumRangeKeepsFartherEchoesOut() {
         sonar.setMaxRange(1200);
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
         assertEquals(1, sonar.getCurrentBuffer().size(), "only 1000 is below 1200");
         assertEquals(1200, sonar.currentReadingPolar(-40, -20), "sonar 4's 1200 mm is not below 1200");
     }
 
     @Test
     void theNearestEchoAheadAnswersThePolarQuery() {
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
         double expected = Math.hypot(166 + 1000 * Math.cos(Math.toRadians(10)),
                 27 + 1000 * Math.sin(Math.toRadians(10)));
         assertEquals(expected, sonar.currentReadingPolar(-20, 20), 1e-9);
@@ -96,7 +96,7 @@ class ArSonarDeviceTest {
     @Test
     void aRemovedDeviceTakesNoMoreReadings() {
         robot.remRangeDevice(sonar);
-        robot.cycle(100, 0, 0, 0, threeEchoes(), new int[0]);
+        Cycles.cycle(robot, 100, 0, 0, 0, threeEchoes(), new int[0]);
         assertTrue(sonar.getCurrentBuffer().isEmpty());
     }
 }

@@ -1,8 +1,13 @@
 package robosim.hw;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import java.io.IOException;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
 import robosim.protocol.Welcome;
@@ -31,6 +36,9 @@ public abstract class AbstractRobot {
     private volatile int stepMs = 100;
     private HardwareSimulator hardware;
     private volatile String connectionError;
+    private final Queue<RobotMessage> inbox = new ConcurrentLinkedQueue<>();
+    private final Queue<String> requestErrors = new ConcurrentLinkedQueue<>();
+    private final AtomicLong messageIds = new AtomicLong();
 
     /**
      * @param name       the robot's name in the world
@@ -98,6 +106,110 @@ public abstract class AbstractRobot {
      */
     protected void responded(RobotSensorResponse response) {
         state = response.state();
+        for (MessageDelivery m : response.state().messages()) {
+            inbox.add(new RobotMessage(m));
+        }
+        for (String e : response.state().errors()) {
+            LOG.warning(() -> "robot " + name + ": the Environment refused a request: " + e);
+            requestErrors.add(e);
+        }
+    }
+
+    // ---- messaging ----
+
+    /**
+     * Sends a message to one robot, delivered at a step boundary (see the world's comms settings).
+     *
+     * @param robot   the recipient's name
+     * @param payload a string, or an object Jackson can write as JSON
+     * @return the message's number, named in any error about it
+     */
+    public long send(String robot, Object payload) {
+        return message(Command.Addressing.ROBOT, robot, payload);
+    }
+
+    /**
+     * Sends a message to the members of a group (not to this robot).
+     *
+     * @param group   the group
+     * @param payload a string, or an object Jackson can write as JSON
+     * @return the message's number
+     */
+    public long multicast(String group, Object payload) {
+        return message(Command.Addressing.GROUP, group, payload);
+    }
+
+    /**
+     * Sends a message to every other robot.
+     *
+     * @param payload a string, or an object Jackson can write as JSON
+     * @return the message's number
+     */
+    public long broadcast(Object payload) {
+        return message(Command.Addressing.ALL, null, payload);
+    }
+
+    private long message(Command.Addressing mode, String to, Object payload) {
+        long id = messageIds.incrementAndGet();
+        String kind;
+        String body;
+        if (payload instanceof String text) {
+            kind = RobotMessage.TEXT;
+            body = text;
+        } else {
+            kind = payload.getClass().getName();
+            try {
+                body = RobotMessage.JSON.writeValueAsString(payload);
+            } catch (JsonProcessingException e) {
+                throw new IllegalArgumentException("a " + kind + " cannot be sent: Jackson cannot write it: "
+                        + e.getOriginalMessage(), e);
+            }
+        }
+        request(new Command.SendMessage(id, mode, to, kind, body));
+        return id;
+    }
+
+    /** @param group a group whose multicasts this robot will receive */
+    public void joinGroup(String group) {
+        request(new Command.JoinGroup(group));
+    }
+
+    /** @param group a group to leave */
+    public void leaveGroup(String group) {
+        request(new Command.LeaveGroup(group));
+    }
+
+    /** @return the next message received, or null if none is waiting */
+    public RobotMessage poll() {
+        return inbox.poll();
+    }
+
+    /**
+     * Waits in simulated time (yielding) for the next message.
+     *
+     * @param timeoutMs the longest simulated wait, ms
+     * @return the message, or null if none came in time or the robot was disconnected
+     */
+    public RobotMessage receive(long timeoutMs) {
+        RobotMessage m = inbox.poll();
+        if (m != null || !isConnected()) {
+            return m;
+        }
+        long deadline = gate.timeMs() + Math.max(timeoutMs, 1);
+        try {
+            gate.await(t -> !inbox.isEmpty() || t >= deadline);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return inbox.poll();
+    }
+
+    /**
+     * @return the next of the Environment's complaints about this robot's requests (an unknown
+     *         recipient, a message over the size limit, ...), or null
+     */
+    public String pollRequestError() {
+        return requestErrors.poll();
     }
 
     /** @param reason why connecting failed, for the robot's program to read */

@@ -21,6 +21,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.SetSonar.class, name = "sonar"),
         @JsonSubTypes.Type(value = Command.ConfigureLaser.class, name = "laser"),
         @JsonSubTypes.Type(value = Command.ConfigureHeatSensor.class, name = "heatSensor"),
+        @JsonSubTypes.Type(value = Command.SendMessage.class, name = "send"),
+        @JsonSubTypes.Type(value = Command.JoinGroup.class, name = "join"),
+        @JsonSubTypes.Type(value = Command.LeaveGroup.class, name = "leave"),
+        @JsonSubTypes.Type(value = Command.ReportFound.class, name = "found"),
 })
 public sealed interface Command {
     /** @param vel translational velocity, mm/s */
@@ -73,4 +77,39 @@ public sealed interface Command {
      * @param maxRange    the farthest source it senses, mm
      */
     record ConfigureHeatSensor(boolean on, double fieldOfView, double maxRange) implements Command { }
+
+    /** How a message is addressed. */
+    enum Addressing {
+        /** To one robot, by name. */
+        ROBOT,
+        /** To the members of a group. */
+        GROUP,
+        /** To every other robot. */
+        ALL
+    }
+
+    /**
+     * Sends a message through the Environment's CommunicationsSystem.
+     *
+     * @param id   the sender's number for it, named in any error about it
+     * @param mode how it is addressed
+     * @param to   the robot or group; ignored for {@link Addressing#ALL}
+     * @param kind {@code text}, or the name of the type the JSON body encodes
+     * @param body the payload
+     */
+    record SendMessage(long id, Addressing mode, String to, String kind, String body) implements Command { }
+
+    /** @param group a group to join: multicasts to it reach this robot */
+    record JoinGroup(String group) implements Command { }
+
+    /** @param group a group to leave */
+    record LeaveGroup(String group) implements Command { }
+
+    /**
+     * The robot reports that it has found an object of the world, for the Environment to check
+     * against the object's true position (GoldFinder's gold).
+     *
+     * @param object what was found, for example {@code gold}
+     */
+    record ReportFound(String object) implements Command { }
 }

@@ -1,5 +1,7 @@
 package robosim.protocol;
 
+import java.util.List;
+
 /**
  * What a robot learns about itself at the start of a step: the responses to its requests of the
  * previous step.
@@ -19,10 +21,44 @@ package robosim.protocol;
  * @param laser      the laser's latest scan in mm, from its right (−90°) to its left (+90°); empty
  *                   when the robot has no laser switched on
  * @param heat       the heat sensor's reading, or null when the robot has no heat sensor
+ * @param messages   the messages delivered to the robot in that step, in delivery order
+ * @param errors     what was wrong with requests of the robot (an unknown recipient, a message over
+ *                   the size limit, ...), in the order they were made
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                         int[] laser, HeatReading heat) {
+                         int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors) {
+
+    /** Copies the lists so the record stays immutable. */
+    public RobotState {
+        messages = messages == null ? List.of() : List.copyOf(messages);
+        errors = errors == null ? List.of() : List.copyOf(errors);
+    }
+
+    /**
+     * A state without messages or errors.
+     *
+     * @param step       the step
+     * @param timeMs     simulated time, ms
+     * @param x          odometry x, mm
+     * @param y          odometry y, mm
+     * @param th         odometry heading, degrees
+     * @param vel        mm/s
+     * @param rotVel     deg/s
+     * @param leftVel    mm/s
+     * @param rightVel   mm/s
+     * @param stalled    whether stalled
+     * @param sonar      sonar ranges, mm
+     * @param collisions collisions so far
+     * @param laser      laser scan, mm
+     * @param heat       heat reading or null
+     */
+    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
+                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
+                      int[] laser, HeatReading heat) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
+                List.of(), List.of());
+    }
 
     /**
      * A state without laser or heat readings.

@@ -197,7 +197,11 @@ class MessageCodecTest {
                 + "{\"cmd\":\"maxRotVel\",\"rotVel\":90.0},"
                 + "{\"cmd\":\"sonar\",\"on\":false},"
                 + "{\"cmd\":\"laser\",\"on\":true,\"increment\":0.5,\"maxRange\":8000.0},"
-                + "{\"cmd\":\"heatSensor\",\"on\":true,\"fieldOfView\":60.0,\"maxRange\":4000.0}]}", json);
+                + "{\"cmd\":\"heatSensor\",\"on\":true,\"fieldOfView\":60.0,\"maxRange\":4000.0},"
+                + "{\"cmd\":\"send\",\"id\":5,\"mode\":\"ROBOT\",\"to\":\"robot2\",\"kind\":\"text\",\"body\":\"hi\"},"
+                + "{\"cmd\":\"join\",\"group\":\"explorers\"},"
+                + "{\"cmd\":\"leave\",\"group\":\"explorers\"},"
+                + "{\"cmd\":\"found\",\"object\":\"gold\"}]}", json);
     }
 
     @Test

@@ -38,7 +38,9 @@ final class Messages {
     static RobotState state() {
         return new RobotState(41, 3_000_000_123L, 1234.5, -678.25, 179.5, 350.0, -12.5, 337.5, 362.5, true,
                 new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400, 4301, 650, 640},
-                3, new int[] {8000, 7999, 1234, 20}, new HeatReading(12.5, -30.25, 2200));
+                3, new int[] {8000, 7999, 1234, 20}, new HeatReading(12.5, -30.25, 2200),
+                List.of(new MessageDelivery("robot2", Command.Addressing.GROUP, "explorers", "text", "hello ✓", 40, 7)),
+                List.of("message 3 is addressed to 'nobody', but there is no robot of that name"));
     }
 
     static RobotHello robotHello() {
@@ -67,7 +69,11 @@ final class Messages {
                 new Command.SetMaxRotVel(90),
                 new Command.SetSonar(false),
                 new Command.ConfigureLaser(true, 0.5, 8000),
-                new Command.ConfigureHeatSensor(true, 60, 4000)));
+                new Command.ConfigureHeatSensor(true, 60, 4000),
+                new Command.SendMessage(5, Command.Addressing.ROBOT, "robot2", "text", "hi"),
+                new Command.JoinGroup("explorers"),
+                new Command.LeaveGroup("explorers"),
+                new Command.ReportFound("gold")));
     }
 
     static ViewerHello viewerHello() {

@@ -37,6 +37,18 @@ public final class CommandRules {
                 return l.increment() + " was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees";
             }
             return positive("laser maxRange", l.maxRange());
+        } else if (c instanceof Command.SendMessage m) {
+            if (m.mode() == null || m.kind() == null || m.body() == null) {
+                return "message " + m.id() + " needs a mode, a kind and a body";
+            }
+            return m.mode() != Command.Addressing.ALL && (m.to() == null || m.to().isBlank())
+                    ? "message " + m.id() + " is addressed to a " + m.mode().name().toLowerCase() + " but names none" : null;
+        } else if (c instanceof Command.JoinGroup j) {
+            return j.group() == null || j.group().isBlank() ? "a group to join needs a name" : null;
+        } else if (c instanceof Command.LeaveGroup l) {
+            return l.group() == null || l.group().isBlank() ? "a group to leave needs a name" : null;
+        } else if (c instanceof Command.ReportFound f) {
+            return f.object() == null || f.object().isBlank() ? "a report of a find needs the object's name" : null;
         } else if (c instanceof Command.ConfigureHeatSensor h) {
             return first(positive("heat fieldOfView", h.fieldOfView()), positive("heat maxRange", h.maxRange()),
                     h.fieldOfView() > 360 ? h.fieldOfView() + " was supplied for heat fieldOfView: at most 360 degrees" : null);

@@ -9,6 +9,7 @@ import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotState;
 import robosim.protocol.params.RobotParameters;
 
@@ -116,10 +117,11 @@ final class SimRobot {
         return new Pose2D(x, y, Math.toRadians(th));
     }
 
-    RobotState state(long step, long timeMs) {
+    RobotState state(long step, long timeMs, List<MessageDelivery> messages, List<String> errors) {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor() / 2;
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
-                vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat());
+                vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
+                messages, errors);
     }
 
     double x() {

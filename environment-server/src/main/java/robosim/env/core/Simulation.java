@@ -4,9 +4,13 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.HashSet;
 import java.util.Map;
+import java.util.Set;
 import java.util.SplittableRandom;
 import org.locationtech.jts.geom.Polygon;
+import robosim.comms.CommsSettings;
+import robosim.comms.Positions;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
@@ -35,6 +39,7 @@ public final class Simulation {
     private final List<Polygon> obstacles = new ArrayList<>();
     private GeometryClient geometry;
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
+    private final MessageRouter messages;
     private long step;
 
     /**
@@ -58,6 +63,8 @@ public final class Simulation {
             obstacles.add(GeometryClient.polygon(o.xy()));
         }
         rebuild(Map.of());
+        // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
+        messages = new MessageRouter(robotNames(), CommsSettings.DEFAULT, new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
         readSensors();
     }
 
@@ -114,18 +121,68 @@ public final class Simulation {
      * @param commands each robot's commands for this step, by name; robots absent keep their commands
      */
     public void step(Map<String, List<Command>> commands) {
+        long current = step + 1;
         for (SimRobot r : robots.values()) {
-            List<Command> c = commands.get(r.name);
-            if (c != null) {
-                r.apply(c);
+            List<Command> cs = commands.get(r.name);
+            if (cs == null) {
+                continue;
             }
+            List<Command> own = new ArrayList<>(cs.size());
+            for (Command c : cs) {
+                if (!messages.take(current, r.name, c)) {
+                    own.add(c);
+                }
+            }
+            r.apply(own);
         }
         double dt = world.stepMs() / 1000.0;
         for (SimRobot r : robots.values()) {
             r.move(geometry, dt);
         }
-        step++;
+        step = current;
         readSensors();
+        messages.deliver(step, positions(), connectedRobots());
+    }
+
+    private Positions positions() {
+        return new Positions() {
+            @Override
+            public double[] of(String robot) {
+                SimRobot r = robot(robot);
+                return new double[] {r.x(), r.y()};
+            }
+
+            @Override
+            public boolean clear(String from, String to) {
+                SimRobot a = robot(from);
+                SimRobot b = robot(to);
+                return geometry.lineOfSight(a.x(), a.y(), b.x(), b.y());
+            }
+        };
+    }
+
+    private Set<String> connectedRobots() {
+        Set<String> c = new HashSet<>();
+        for (SimRobot r : robots.values()) {
+            if (r.connected) {
+                c.add(r.name);
+            }
+        }
+        return c;
+    }
+
+    /** @return how messages travel now */
+    public CommsSettings commsSettings() {
+        return messages.settings();
+    }
+
+    /**
+     * Changes how messages travel, while the run goes on.
+     *
+     * @param settings the new settings
+     */
+    public void setCommsSettings(CommsSettings settings) {
+        messages.setSettings(settings);
     }
 
     private void readSensors() {
@@ -168,7 +225,7 @@ public final class Simulation {
      * @return what it knows of itself now
      */
     public RobotState state(String name) {
-        return robot(name).state(step, timeMs());
+        return robot(name).state(step, timeMs(), messages.delivered(name), messages.errors(name));
     }
 
     /**

@@ -5,18 +5,11 @@ import robosim.protocol.RobotState;
 import robosim.protocol.params.ParameterFileReader;
 import robosim.protocol.params.RobotParameters;
 
-/**
- * A p3dx {@link ArRobot} whose cycles a test drives by hand, with no Environment: each cycle's state
- * becomes the robot's latest state before the cycle runs, as the hardware simulator makes it.
- */
-final class CycleRobot extends ArRobot {
+/** Robots whose cycles a test drives by hand, with no Environment. */
+final class Cycles {
     private static final int[] NONE = new int[0];
 
-    private volatile RobotState last;
-    private long step;
-
-    CycleRobot(RobotParameters parameters) {
-        super("r", "127.0.0.1", 5000, parameters);
+    private Cycles() {
     }
 
     static RobotParameters p3dx() {
@@ -32,26 +25,22 @@ final class CycleRobot extends ArRobot {
                 x, y, th, maxRange);
     }
 
-    @Override
-    protected void responded(RobotSensorResponse response) {
-        last = response.state();
-        super.responded(response);
+    static ArRobot robot(RobotParameters parameters) {
+        return new ArRobot("r", "127.0.0.1", 5000, parameters);
     }
 
-    @Override
-    protected RobotState state() {
-        return last;
+    static ArRobot p3dxRobot() {
+        return robot(p3dx());
     }
 
     /** One cycle at a pose, with no sonar or laser readings. */
-    void cycle(long timeMs, double x, double y, double th) {
-        cycle(timeMs, x, y, th, NONE, NONE);
+    static void cycle(ArRobot robot, long timeMs, double x, double y, double th) {
+        cycle(robot, timeMs, x, y, th, NONE, NONE);
     }
 
     /** One cycle at a pose, with sonar ranges (16, or none) and a laser scan (or none). */
-    void cycle(long timeMs, double x, double y, double th, int[] sonar, int[] laser) {
-        step++;
-        responded(new RobotSensorResponse(
-                new RobotState(step, timeMs, x, y, th, 0, 0, 0, 0, false, sonar, 0, laser, null)));
+    static void cycle(ArRobot robot, long timeMs, double x, double y, double th, int[] sonar, int[] laser) {
+        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, x, y, th,
+                0, 0, 0, 0, false, sonar, 0, laser, null)));
     }
 }

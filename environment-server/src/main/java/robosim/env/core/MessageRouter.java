@@ -1,0 +1,98 @@
+package robosim.env.core;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import robosim.comms.CommsSettings;
+import robosim.comms.CommunicationsSystem;
+import robosim.comms.Delivery;
+import robosim.comms.Outgoing;
+import robosim.comms.Positions;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
+
+/**
+ * The simulation's side of the CommunicationsSystem: turns robots' messaging requests into
+ * submissions, and each step's deliveries and errors into what each robot reads next.
+ */
+final class MessageRouter {
+    private final CommunicationsSystem comms;
+    private final Map<String, List<MessageDelivery>> delivered = new HashMap<>();
+    private final Map<String, List<String>> errors = new HashMap<>();
+    private final Map<String, List<String>> pendingErrors = new HashMap<>();
+
+    MessageRouter(List<String> robots, CommsSettings settings, long seed) {
+        this.comms = new CommunicationsSystem(robots, settings, seed);
+    }
+
+    /** @return whether the command was a messaging command, now taken */
+    boolean take(long step, String robot, Command c) {
+        if (c instanceof Command.SendMessage m) {
+            String problem = comms.submit(step, robot, new Outgoing(m.id(), mode(m.mode()), m.to(), m.kind(), m.body()));
+            if (problem != null) {
+                error(robot, problem);
+            }
+        } else if (c instanceof Command.JoinGroup j) {
+            comms.join(robot, j.group());
+        } else if (c instanceof Command.LeaveGroup l) {
+            comms.leave(robot, l.group());
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    /** Records an error for a robot, reported with the state after this step. */
+    void error(String robot, String problem) {
+        pendingErrors.computeIfAbsent(robot, k -> new ArrayList<>()).add(problem);
+    }
+
+    /** Delivers what is due after {@code step}; what each robot reads next replaces what it read. */
+    void deliver(long step, Positions positions, Set<String> connected) {
+        delivered.clear();
+        for (Map.Entry<String, List<Delivery>> e : comms.deliver(step, positions, connected).entrySet()) {
+            List<MessageDelivery> list = new ArrayList<>();
+            for (Delivery d : e.getValue()) {
+                list.add(new MessageDelivery(d.from(), addressing(d.mode()), d.to(), d.kind(), d.body(), d.sentStep(), d.id()));
+            }
+            delivered.put(e.getKey(), list);
+        }
+        errors.clear();
+        errors.putAll(pendingErrors);
+        pendingErrors.clear();
+    }
+
+    List<MessageDelivery> delivered(String robot) {
+        return delivered.getOrDefault(robot, List.of());
+    }
+
+    List<String> errors(String robot) {
+        return errors.getOrDefault(robot, List.of());
+    }
+
+    CommsSettings settings() {
+        return comms.settings();
+    }
+
+    void setSettings(CommsSettings settings) {
+        comms.setSettings(settings);
+    }
+
+    private static Outgoing.Mode mode(Command.Addressing a) {
+        return switch (a) {
+            case ROBOT -> Outgoing.Mode.POINT_TO_POINT;
+            case GROUP -> Outgoing.Mode.MULTICAST;
+            case ALL -> Outgoing.Mode.BROADCAST;
+        };
+    }
+
+    private static Command.Addressing addressing(Outgoing.Mode m) {
+        return switch (m) {
+            case POINT_TO_POINT -> Command.Addressing.ROBOT;
+            case MULTICAST -> Command.Addressing.GROUP;
+            case BROADCAST -> Command.Addressing.ALL;
+        };
+    }
+}
