@@ -171,7 +171,7 @@ public final class CommunicationsSystem {
                 return false;
             }
         }
-        if (false && !positions.clear(from, to)) {
+        if (settings.wallsBlock() && !positions.clear(from, to)) {
             return false;
         }
         // one draw per message and recipient that got this far, so the stream stays in step
