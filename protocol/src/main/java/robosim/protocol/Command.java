@@ -25,6 +25,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.JoinGroup.class, name = "join"),
         @JsonSubTypes.Type(value = Command.LeaveGroup.class, name = "leave"),
         @JsonSubTypes.Type(value = Command.ReportFound.class, name = "found"),
+        @JsonSubTypes.Type(value = Command.Say.class, name = "say"),
 })
 public sealed interface Command {
     /** @param vel translational velocity, mm/s */
@@ -112,4 +113,7 @@ public sealed interface Command {
      * @param object what was found, for example {@code gold}
      */
     record ReportFound(String object) implements Command { }
+
+    /** @param text text the robot says: shown by viewers, kept in recordings and the log */
+    record Say(String text) implements Command { }
 }

@@ -7,13 +7,37 @@ import java.util.List;
  *
  * @param step   the step just completed
  * @param timeMs simulated time after it
- * @param robots every robot of the world, in the world file's order
+ * @param robots   every robot of the world, in the world file's order
+ * @param messages the messages robots sent in this step (accepted by the CommunicationsSystem)
+ * @param said     what robots said in this step
  */
-public record ViewerFrame(long step, long timeMs, List<RobotView> robots) implements Message {
-    /** Copies the list so the record stays immutable. */
+public record ViewerFrame(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
+                          List<Said> said) implements Message {
+    /** Copies the lists so the record stays immutable. */
     public ViewerFrame {
         robots = List.copyOf(robots);
+        messages = messages == null ? List.of() : List.copyOf(messages);
+        said = said == null ? List.of() : List.copyOf(said);
     }
+
+    /**
+     * A frame without messages or speech.
+     *
+     * @param step   the step just completed
+     * @param timeMs simulated time after it
+     * @param robots every robot
+     */
+    public ViewerFrame(long step, long timeMs, List<RobotView> robots) {
+        this(step, timeMs, robots, List.of(), List.of());
+    }
+
+    /**
+     * Text a robot said (ARIA's {@code SAY}, the Scout's {@code tk}), for viewers and logs.
+     *
+     * @param robot the robot
+     * @param text  what it said
+     */
+    public record Said(String robot, String text) { }
 
     /**
      * One robot's true pose and status.
@@ -30,10 +54,33 @@ public record ViewerFrame(long step, long timeMs, List<RobotView> robots) implem
      * @param odoTh     odometry heading, degrees
      * @param laser     its latest laser scan, mm, right to left; empty when off
      * @param laserIncrement degrees between laser readings (1 or 0.5)
+     * @param vel       translational velocity, mm/s
+     * @param rotVel    rotational velocity, deg/s
      */
     public record RobotView(String name, double x, double y, double th, boolean stalled,
                             boolean connected, int[] sonar, double odoX, double odoY, double odoTh,
-                            int[] laser, double laserIncrement) {
+                            int[] laser, double laserIncrement, double vel, double rotVel) {
+
+        /**
+         * A view without velocities.
+         *
+         * @param name           the robot's name
+         * @param x              true x, mm
+         * @param y              true y, mm
+         * @param th             true heading, degrees
+         * @param stalled        whether stalled
+         * @param connected      whether connected
+         * @param sonar          sonar ranges, mm
+         * @param odoX           odometry x, mm
+         * @param odoY           odometry y, mm
+         * @param odoTh          odometry heading, degrees
+         * @param laser          laser scan, mm
+         * @param laserIncrement degrees between laser readings
+         */
+        public RobotView(String name, double x, double y, double th, boolean stalled, boolean connected, int[] sonar,
+                         double odoX, double odoY, double odoTh, int[] laser, double laserIncrement) {
+            this(name, x, y, th, stalled, connected, sonar, odoX, odoY, odoTh, laser, laserIncrement, 0, 0);
+        }
 
         /**
          * A view whose odometry is the true pose and without a laser.
@@ -47,7 +94,7 @@ public record ViewerFrame(long step, long timeMs, List<RobotView> robots) implem
          * @param sonar     sonar ranges, mm
          */
         public RobotView(String name, double x, double y, double th, boolean stalled, boolean connected, int[] sonar) {
-            this(name, x, y, th, stalled, connected, sonar, x, y, th, new int[0], 1);
+            this(name, x, y, th, stalled, connected, sonar, x, y, th, new int[0], 1, 0, 0);
         }
     }
 }

@@ -201,7 +201,8 @@ class MessageCodecTest {
                 + "{\"cmd\":\"send\",\"id\":5,\"mode\":\"ROBOT\",\"to\":\"robot2\",\"kind\":\"text\",\"body\":\"hi\"},"
                 + "{\"cmd\":\"join\",\"group\":\"explorers\"},"
                 + "{\"cmd\":\"leave\",\"group\":\"explorers\"},"
-                + "{\"cmd\":\"found\",\"object\":\"gold\"}]}", json);
+                + "{\"cmd\":\"found\",\"object\":\"gold\"},"
+                + "{\"cmd\":\"say\",\"text\":\"found it\"}]}", json);
     }
 
     @Test

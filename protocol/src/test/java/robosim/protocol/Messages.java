@@ -73,7 +73,8 @@ final class Messages {
                 new Command.SendMessage(5, Command.Addressing.ROBOT, "robot2", "text", "hi"),
                 new Command.JoinGroup("explorers"),
                 new Command.LeaveGroup("explorers"),
-                new Command.ReportFound("gold")));
+                new Command.ReportFound("gold"),
+                new Command.Say("found it")));
     }
 
     static ViewerHello viewerHello() {
@@ -93,7 +94,9 @@ final class Messages {
                 new ViewerFrame.RobotView("robot1", 1234.5, -678.25, 179.5, true, true,
                         new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999}),
                 new ViewerFrame.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101},
-                        8010.5, 8990, -89.5, new int[] {3000, 2999, 2998}, 0.5)));
+                        8010.5, 8990, -89.5, new int[] {3000, 2999, 2998}, 0.5, -120.5, 3.25)),
+                List.of(new MessageDelivery("robot1", Command.Addressing.ALL, "*", "text", "gold!", 42, 9)),
+                List.of(new ViewerFrame.Said("robot2", "hello")));
     }
 
     static Bye bye() {

@@ -47,6 +47,9 @@ public final class CommandRules {
             return j.group() == null || j.group().isBlank() ? "a group to join needs a name" : null;
         } else if (c instanceof Command.LeaveGroup l) {
             return l.group() == null || l.group().isBlank() ? "a group to leave needs a name" : null;
+        } else if (c instanceof Command.Say say) {
+            return say.text() == null || say.text().length() > 1000
+                    ? "a robot says at most 1000 characters, not " + (say.text() == null ? "nothing" : say.text().length()) : null;
         } else if (c instanceof Command.ReportFound f) {
             return f.object() == null || f.object().isBlank() ? "a report of a find needs the object's name" : null;
         } else if (c instanceof Command.ConfigureHeatSensor h) {

@@ -22,6 +22,8 @@ final class MessageRouter {
     private final Map<String, List<MessageDelivery>> delivered = new HashMap<>();
     private final Map<String, List<String>> errors = new HashMap<>();
     private final Map<String, List<String>> pendingErrors = new HashMap<>();
+    private final List<MessageDelivery> sent = new ArrayList<>();
+    private final List<MessageDelivery> sentLastStep = new ArrayList<>();
 
     MessageRouter(List<String> robots, CommsSettings settings, long seed) {
         this.comms = new CommunicationsSystem(robots, settings, seed);
@@ -33,6 +35,9 @@ final class MessageRouter {
             String problem = comms.submit(step, robot, new Outgoing(m.id(), mode(m.mode()), m.to(), m.kind(), m.body()));
             if (problem != null) {
                 error(robot, problem);
+            } else {
+                String to = m.mode() == Command.Addressing.ALL ? "*" : m.to();
+                sent.add(new MessageDelivery(robot, m.mode(), to, m.kind(), m.body(), step, m.id()));
             }
         } else if (c instanceof Command.JoinGroup j) {
             comms.join(robot, j.group());
@@ -62,6 +67,14 @@ final class MessageRouter {
         errors.clear();
         errors.putAll(pendingErrors);
         pendingErrors.clear();
+        sentLastStep.clear();
+        sentLastStep.addAll(sent);
+        sent.clear();
+    }
+
+    /** @return the messages accepted in the last step, in the order they were sent */
+    List<MessageDelivery> sentLastStep() {
+        return List.copyOf(sentLastStep);
     }
 
     List<MessageDelivery> delivered(String robot) {

@@ -136,6 +136,14 @@ final class SimRobot {
         return th;
     }
 
+    double vel() {
+        return vel;
+    }
+
+    double rotVel() {
+        return rotVel;
+    }
+
     boolean stalled() {
         return stalled;
     }

@@ -40,6 +40,7 @@ public final class Simulation {
     private GeometryClient geometry;
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
     private final MessageRouter messages;
+    private final List<ViewerFrame.Said> said = new ArrayList<>();
     private long step;
 
     /**
@@ -122,6 +123,7 @@ public final class Simulation {
      */
     public void step(Map<String, List<Command>> commands) {
         long current = step + 1;
+        said.clear();
         for (SimRobot r : robots.values()) {
             List<Command> cs = commands.get(r.name);
             if (cs == null) {
@@ -129,7 +131,9 @@ public final class Simulation {
             }
             List<Command> own = new ArrayList<>(cs.size());
             for (Command c : cs) {
-                if (!messages.take(current, r.name, c)) {
+                if (c instanceof Command.Say say) {
+                    said.add(new ViewerFrame.Said(r.name, say.text()));
+                } else if (!messages.take(current, r.name, c)) {
                     own.add(c);
                 }
             }
@@ -255,9 +259,10 @@ public final class Simulation {
         for (SimRobot r : robots.values()) {
             Odometry o = r.odometry();
             views.add(new ViewerFrame.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
-                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement()));
+                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
+                    r.vel(), r.rotVel()));
         }
-        return new ViewerFrame(step, timeMs(), views);
+        return new ViewerFrame(step, timeMs(), views, messages.sentLastStep(), said);
     }
 
     /** @return the static world, for viewers */

@@ -96,6 +96,35 @@ final class Attributes {
         return (int) v;
     }
 
+    /**
+     * @return the value as a whole number {@code min} or greater (and at most
+     *         {@link Integer#MAX_VALUE}), or {@code fallback} when absent
+     */
+    int wholeNumber(Element element, String attribute, String value, int fallback, int min) {
+        if (value == null) {
+            return fallback;
+        }
+        double v = number(element, attribute, value);
+        if (v != Math.rint(v) || v < min) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + format(v)
+                    + " but must be a whole number, " + min + " or greater");
+        }
+        return wholeNumber(element, attribute, value, fallback, min, Integer.MAX_VALUE);
+    }
+
+    /** @return the value as a number from {@code min} to {@code max}, or {@code fallback} when absent */
+    double between(Element element, String attribute, String value, double fallback, double min, double max) {
+        if (value == null) {
+            return fallback;
+        }
+        double v = number(element, attribute, value);
+        if (v < min || v > max) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + format(v)
+                    + " but must be from " + format(min) + " to " + format(max));
+        }
+        return v == 0 ? 0 : v; // -0 reads as 0, so that equal worlds compare equal
+    }
+
     /** @return the value as {@code true} or {@code false}, or {@code fallback} when it is absent */
     boolean bool(Element element, String attribute, String value, boolean fallback) {
         if (value == null) {

@@ -2,6 +2,8 @@ package robosim.env.world;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Objects;
+import robosim.comms.CommsSettings;
 
 /**
  * A world as read from a world file: its size, the length of one time step, the static
@@ -17,19 +19,41 @@ import java.util.List;
  * @param robots    the robots, in file order
  * @param heat      the heat sources, in file order
  * @param noise     the sensor and odometry noise of the world (none by default)
+ * @param comms     how messages travel between robots at the start of a run
+ *                  ({@link CommsSettings#DEFAULT} by default)
  */
 public record World(String name, Path source, double width, double height, int stepMs,
-                    List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise) {
+                    List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
+                    CommsSettings comms) {
 
     /** Copies the lists so the record stays immutable. */
     public World {
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
+        Objects.requireNonNull(comms, "comms");
     }
 
     /**
-     * A world without heat sources or noise.
+     * A world with the default communications settings.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the sensor and odometry noise
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, CommsSettings.DEFAULT);
+    }
+
+    /**
+     * A world without heat sources or noise, with the default communications settings.
      *
      * @param name      the world's name
      * @param source    the file it was read from

@@ -50,6 +50,11 @@ final class WorldElement extends Element {
         children.add(noise);
     }
 
+    @JsonSetter("comms")
+    void addComms(CommsElement comms) {
+        children.add(comms);
+    }
+
     @Override
     String tag() {
         return "world";

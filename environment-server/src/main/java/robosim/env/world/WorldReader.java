@@ -3,6 +3,7 @@ package robosim.env.world;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import robosim.comms.CommsSettings;
 
 /**
  * Reads a world file (see {@code docs/WORLD-FORMAT.md}) into a {@link World}, checking every
@@ -42,6 +43,7 @@ public final class WorldReader {
         }
         ObstacleFactory shapes = new ObstacleFactory(attributes);
         NoiseElement noiseElement = null;
+        CommsElement commsElement = null;
         for (Element child : root.children) {
             if (child instanceof WallElement wall) {
                 obstacles.add(shapes.wall(wall));
@@ -55,9 +57,16 @@ public final class WorldReader {
                             + noiseElement.line());
                 }
                 noiseElement = noise;
+            } else if (child instanceof CommsElement comms) {
+                if (commsElement != null) {
+                    throw attributes.error(comms, "a world has at most one <comms>; the first is at line "
+                            + commsElement.line());
+                }
+                commsElement = comms;
             }
         }
         Noise noise = noiseElement == null ? Noise.NONE : noise(attributes, noiseElement);
+        CommsSettings comms = commsElement == null ? CommsSettings.DEFAULT : comms(attributes, commsElement);
         // Robots and heat sources are checked against every obstacle, those listed after them too.
         RobotPlacer placer = new RobotPlacer(attributes, width, height, obstacles, obstacleNames);
         HeatPlacer heatPlacer = new HeatPlacer(attributes, width, height, obstacles, obstacleNames);
@@ -70,12 +79,21 @@ public final class WorldReader {
                 heat.add(heatPlacer.place(source));
             }
         }
-        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise);
+        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms);
     }
 
     private static Noise noise(Attributes attributes, NoiseElement e) {
         return new Noise(attributes.nonNegative(e, "sonar", e.sonar, 0),
                 attributes.nonNegative(e, "laser", e.laser, 0),
                 attributes.nonNegative(e, "odometry", e.odometry, 0));
+    }
+
+    private static CommsSettings comms(Attributes attributes, CommsElement e) {
+        CommsSettings d = CommsSettings.DEFAULT;
+        return new CommsSettings(attributes.nonNegative(e, "range", e.range, d.maxRange()),
+                attributes.bool(e, "wallsBlock", e.wallsBlock, d.wallsBlock()),
+                attributes.wholeNumber(e, "latency", e.latency, d.latencySteps(), 1),
+                attributes.between(e, "loss", e.loss, d.lossProbability(), 0, 1),
+                attributes.wholeNumber(e, "maxBytes", e.maxBytes, d.maxMessageBytes(), 1));
     }
 }

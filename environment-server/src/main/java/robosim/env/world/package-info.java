@@ -1,7 +1,7 @@
 /**
  * World files: the XML description of a world (its size, step length, walls, polygon
- * obstacles, heat sources, sensor and odometry noise, and the robots that must connect before a
- * run starts), read by
+ * obstacles, heat sources, sensor and odometry noise, how messages travel between robots, and
+ * the robots that must connect before a run starts), read by
  * {@link robosim.env.world.WorldReader} into the immutable {@link robosim.env.world.World}.
  *
  * <p>Reading is strict. Every broken rule is reported as one
