@@ -169,6 +169,25 @@ public abstract class AbstractRobot {
         return id;
     }
 
+    /**
+     * Says something: viewers show it, recordings keep it, the Environment logs it.
+     *
+     * @param text at most 1000 characters
+     */
+    public void say(String text) {
+        request(new Command.Say(text));
+    }
+
+    /**
+     * Reports a find of one of the world's objects (GoldFinder's {@code gold}); the Environment
+     * checks it against the object's true position and refuses a report from too far away.
+     *
+     * @param object what was found
+     */
+    public void reportFound(String object) {
+        request(new Command.ReportFound(object));
+    }
+
     /** @param group a group whose multicasts this robot will receive */
     public void joinGroup(String group) {
         request(new Command.JoinGroup(group));

@@ -41,6 +41,7 @@ public final class Simulation {
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
     private final MessageRouter messages;
     private final List<ViewerFrame.Said> said = new ArrayList<>();
+    private Find find;
     private long step;
 
     /**
@@ -65,7 +66,7 @@ public final class Simulation {
         }
         rebuild(Map.of());
         // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
-        messages = new MessageRouter(robotNames(), CommsSettings.DEFAULT, new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
+        messages = new MessageRouter(robotNames(), world.comms(), new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
         readSensors();
     }
 
@@ -133,6 +134,8 @@ public final class Simulation {
             for (Command c : cs) {
                 if (c instanceof Command.Say say) {
                     said.add(new ViewerFrame.Said(r.name, say.text()));
+                } else if (c instanceof Command.ReportFound found) {
+                    reportFound(r, found.object(), current);
                 } else if (!messages.take(current, r.name, c)) {
                     own.add(c);
                 }
@@ -146,6 +149,30 @@ public final class Simulation {
         step = current;
         readSensors();
         messages.deliver(step, positions(), connectedRobots());
+    }
+
+    /** A robot's report of a find counts when its centre is this near the gold, mm. */
+    public static final double GOLD_FOUND_DISTANCE = 1000;
+
+    private void reportFound(SimRobot r, String object, long current) {
+        HeatSource gold = world.gold();
+        if (!"gold".equals(object) || gold == null) {
+            messages.error(r.name, "robot " + r.name + " reported finding '" + object + "', but world "
+                    + world.name() + " has no " + object);
+            return;
+        }
+        double d = Math.hypot(r.x() - gold.x(), r.y() - gold.y());
+        if (d > GOLD_FOUND_DISTANCE) {
+            messages.error(r.name, "robot " + r.name + " reported the gold at step " + current + " but is "
+                    + Math.round(d) + " mm from it; a find counts within " + Math.round(GOLD_FOUND_DISTANCE) + " mm");
+        } else if (find == null) {
+            find = new Find(r.name, current, d);
+        }
+    }
+
+    /** @return the first confirmed find of the gold, or null */
+    public Find find() {
+        return find;
     }
 
     private Positions positions() {

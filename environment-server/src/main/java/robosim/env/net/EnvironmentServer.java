@@ -18,6 +18,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
+import robosim.env.core.Find;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
@@ -25,6 +26,9 @@ import robosim.protocol.Command;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.TimeStep;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.FrameListeners;
 
 /**
  * The Environment on the network: accepts robots and viewers, waits for every robot the world
@@ -47,6 +51,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final SessionRules rules;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
     private final List<Connection> all = new ArrayList<>();
+    private final FrameListeners listeners = new FrameListeners();
     private Selector selector;
     private ServerSocketChannel robotChannel;
     private ServerSocketChannel viewerChannel;
@@ -81,6 +86,18 @@ public final class EnvironmentServer implements AutoCloseable {
         return ch;
     }
 
+    /**
+     * Adds a listener, such as a recorder, that follows the run as viewers do: it is given the
+     * world and the frame of step 0 when the run starts, every frame after its step, the end, and
+     * is closed when the run ends or the server closes. A listener that fails is logged and
+     * dropped; the run goes on.
+     *
+     * @param listener the listener; add it before {@link #run()}
+     */
+    public void addFrameListener(FrameListener listener) {
+        listeners.add(listener);
+    }
+
     /** @return the port robots connect to */
     public int robotPort() {
         return robotChannel.socket().getLocalPort();
@@ -101,9 +118,13 @@ public final class EnvironmentServer implements AutoCloseable {
     public RunReport run() throws InterruptedException {
         awaitRobots();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
+        listeners.world(sim.description());
+        listeners.frame(sim.frame());
         long started = System.nanoTime();
         String reason = loop();
         long wall = System.nanoTime() - started;
+        listeners.end("done: " + reason);
+        listeners.close();
         for (Connection c : all) {
             c.sendAndClose(new Bye("done: " + reason));
         }
@@ -115,7 +136,7 @@ public final class EnvironmentServer implements AutoCloseable {
         for (String name : sim.robotNames()) {
             summaries.add(sim.summary(name));
         }
-        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall);
+        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find());
     }
 
     private void awaitRobots() throws InterruptedException {
@@ -140,6 +161,11 @@ public final class EnvironmentServer implements AutoCloseable {
             if (options.maxSteps() > 0 && sim.stepCount() >= options.maxSteps()) {
                 return "step limit " + options.maxSteps() + " reached";
             }
+            // a find ends the run once the finder's news has had time to reach its team
+            Find find = sim.find();
+            if (find != null && sim.stepCount() >= find.step() + sim.commsSettings().latencySteps() + 1) {
+                return "gold found by " + find.robot() + " at step " + find.step();
+            }
             long current = sim.stepCount() + 1;
             if (options.realtime()) {
                 long due = start + TimeUnit.MILLISECONDS.toNanos((current - 1) * stepMs);
@@ -149,7 +175,9 @@ public final class EnvironmentServer implements AutoCloseable {
             }
             Map<String, List<Command>> commands = collect(current);
             sim.step(commands);
-            rules.broadcastFrame(sim.frame());
+            ViewerFrame frame = sim.frame();
+            rules.broadcastFrame(frame);
+            listeners.frame(frame);
         }
     }
 
@@ -238,6 +266,7 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Stops listening and closes every connection. */
     @Override
     public void close() {
+        listeners.close();
         for (Connection c : all) {
             c.shut();
         }

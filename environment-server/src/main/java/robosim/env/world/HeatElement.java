@@ -3,7 +3,7 @@ package robosim.env.world;
 import com.fasterxml.jackson.dataformat.xml.annotation.JacksonXmlProperty;
 
 /** A {@code <heat>} element: a heat source's position and intensity. */
-final class HeatElement extends Element {
+class HeatElement extends Element {
     @JacksonXmlProperty(isAttribute = true)
     String x;
     @JacksonXmlProperty(isAttribute = true)

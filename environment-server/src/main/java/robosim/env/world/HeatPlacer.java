@@ -36,7 +36,7 @@ final class HeatPlacer {
         double x = attributes.number(e, "x", e.x);
         double y = attributes.number(e, "y", e.y);
         double intensity = attributes.positive(e, "intensity", e.intensity);
-        String where = "heat source at (" + Attributes.format(x) + ", " + Attributes.format(y) + ")";
+        String where = (e.tag().equals("gold") ? "gold" : "heat source") + " at (" + Attributes.format(x) + ", " + Attributes.format(y) + ")";
         if (x < 0 || x > width || y < 0 || y > height) {
             throw attributes.error(e, where + " is outside the world " + Attributes.format(width) + " x "
                     + Attributes.format(height));

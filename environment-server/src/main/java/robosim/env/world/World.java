@@ -20,11 +20,46 @@ import robosim.comms.CommsSettings;
  * @param heat      the heat sources, in file order
  * @param noise     the sensor and odometry noise of the world (none by default)
  * @param comms     how messages travel between robots at the start of a run
+ * @param gold      the gold GoldFinder's robots look for (also one of the heat sources), or null
  *                  ({@link CommsSettings#DEFAULT} by default)
  */
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
-                    CommsSettings comms) {
+                    CommsSettings comms, HeatSource gold) {
+
+    /**
+     * A world without gold.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     mm
+     * @param height    mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the noise
+     * @param comms     how messages travel
+     */
+    public World(String name, Path source, double width, double height, int stepMs, List<Obstacle> obstacles,
+                 List<RobotSpec> robots, List<HeatSource> heat, Noise noise, CommsSettings comms) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, null);
+    }
+
+    /**
+     * The same world with only its first robots: a team smaller than the world has places for.
+     *
+     * @param count how many of the robots to keep, from 1 to the number there are
+     * @return the world
+     */
+    public World withFirstRobots(int count) {
+        if (count < 1 || count > robots.size()) {
+            throw new IllegalArgumentException(count + " was supplied for the number of robots: world " + name
+                    + " has places for 1 to " + robots.size());
+        }
+        return new World(name, source, width, height, stepMs, obstacles, robots.subList(0, count), heat, noise,
+                comms, gold);
+    }
 
     /** Copies the lists so the record stays immutable. */
     public World {
@@ -49,7 +84,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World(String name, Path source, double width, double height, int stepMs,
                  List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise) {
-        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, CommsSettings.DEFAULT);
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, CommsSettings.DEFAULT, null);
     }
 
     /**

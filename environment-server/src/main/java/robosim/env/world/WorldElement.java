@@ -45,6 +45,11 @@ final class WorldElement extends Element {
         children.add(heat);
     }
 
+    @JsonSetter("gold")
+    void addGold(GoldElement gold) {
+        children.add(gold);
+    }
+
     @JsonSetter("noise")
     void addNoise(NoiseElement noise) {
         children.add(noise);

@@ -72,14 +72,23 @@ public final class WorldReader {
         HeatPlacer heatPlacer = new HeatPlacer(attributes, width, height, obstacles, obstacleNames);
         List<RobotSpec> robots = new ArrayList<>();
         List<HeatSource> heat = new ArrayList<>();
+        HeatSource gold = null;
+        int goldLine = 0;
         for (Element child : root.children) {
             if (child instanceof RobotElement robot) {
                 robots.add(placer.place(robot));
+            } else if (child instanceof GoldElement g) {
+                if (gold != null) {
+                    throw attributes.error(g, "a world has at most one <gold>; the first is at line " + goldLine);
+                }
+                gold = heatPlacer.place(g);
+                goldLine = g.line();
+                heat.add(gold);
             } else if (child instanceof HeatElement source) {
                 heat.add(heatPlacer.place(source));
             }
         }
-        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms);
+        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold);
     }
 
     private static Noise noise(Attributes attributes, NoiseElement e) {

@@ -15,6 +15,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.locationtech.jts.algorithm.Orientation;
 import org.locationtech.jts.geom.Envelope;
+import robosim.comms.CommsSettings;
 import robosim.geometry.GeometryClient;
 
 class WorldReaderTest {
@@ -62,6 +63,7 @@ class WorldReaderTest {
         assertEquals(2, world.robots().size());
         assertEquals(List.of(new HeatSource(4500, 5000, 40, 11)), world.heat());
         assertEquals(new Noise(5, 10, 0.0075), world.noise());
+        assertEquals(new CommsSettings(8000, true, 1, 0.05, 65536), world.comms());
     }
 
     @Test

@@ -1,0 +1,63 @@
+package robosim.cli;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+import robosim.env.world.WorldReader;
+import robosim.examples.goldfinder.Maze;
+import robosim.examples.goldfinder.MazeWorldWriter;
+
+/** {@code robosim maze}: writes a perfect maze as a world file for GoldFinder. */
+@Command(name = "maze", mixinStandardHelpOptions = true,
+        description = "Write a perfect maze as a world: walls, the robots' start cells near the lower left, gold in the farthest cell.")
+final class MazeCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--cells", arity = "2", required = true, paramLabel = "N", description = "cells across and up, e.g. --cells 10 10")
+    int[] cells;
+
+    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = "cell size in mm, at least 1000; default ${DEFAULT-VALUE}")
+    int cellSize;
+
+    @Option(names = "--seed", defaultValue = "1", description = "the maze's seed; default ${DEFAULT-VALUE}")
+    long seed;
+
+    @Option(names = "--robots", defaultValue = "8", paramLabel = "N", description = "robot places r1..rN; default ${DEFAULT-VALUE}")
+    int robots;
+
+    @Option(names = "--out", required = true, paramLabel = "FILE", description = "the world file to write")
+    Path out;
+
+    @Override
+    public Integer call() throws Exception {
+        try {
+            Path written = write(cells[0], cells[1], cellSize, seed, robots, out);
+            spec.commandLine().getOut().println("Maze: " + cells[0] + " x " + cells[1] + " cells of " + cellSize
+                    + " mm, seed " + seed + ", written to " + written.toAbsolutePath());
+            return 0;
+        } catch (IllegalArgumentException e) {
+            spec.commandLine().getErr().println("robosim maze: " + e.getMessage());
+            return 2;
+        }
+    }
+
+    /** Writes a maze world and reads it back, so a file that breaks a world rule is never left. */
+    static Path write(int w, int h, int cellSize, long seed, int robots, Path out) throws java.io.IOException {
+        Path root = Path.of(System.getProperty("robosim.root", ".")).toAbsolutePath();
+        Path params = root.resolve("testLoadFiles/robots/p3dx.p");
+        Path dir = out.toAbsolutePath().getParent();
+        String rel = dir.relativize(params).toString().replace('\\', '/');
+        String name = "maze-" + w + "x" + h + "-" + seed;
+        String xml = MazeWorldWriter.write(Maze.generate(w, h, seed), name, cellSize, robots, rel);
+        Files.createDirectories(dir);
+        Files.writeString(out, xml, StandardCharsets.UTF_8);
+        WorldReader.read(out);
+        return out;
+    }
+}

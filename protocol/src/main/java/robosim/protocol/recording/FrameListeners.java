@@ -1,0 +1,84 @@
+package robosim.protocol.recording;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Objects;
+import java.util.logging.Logger;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+
+/**
+ * Passes each call on to several listeners, in the order they were added. A listener that fails
+ * is logged (naming it, the step and the reason), closed and dropped; the others go on, and so
+ * does the run that feeds them. Not thread-safe: one feeder at a time.
+ */
+public final class FrameListeners implements FrameListener {
+    private static final Logger LOG = Logger.getLogger(FrameListeners.class.getName());
+
+    private final List<FrameListener> listeners = new ArrayList<>();
+    private long step = -1;
+
+    /** A call on a listener, which may fail. */
+    private interface Call {
+        void on(FrameListener listener) throws IOException;
+    }
+
+    /** @param listener a listener to follow the run from now on */
+    public void add(FrameListener listener) {
+        listeners.add(Objects.requireNonNull(listener, "listener"));
+    }
+
+    /** @return how many listeners are still following */
+    public int size() {
+        return listeners.size();
+    }
+
+    @Override
+    public void world(WorldDescription world) {
+        tell(l -> l.world(world));
+    }
+
+    @Override
+    public void frame(ViewerFrame frame) {
+        step = frame.step();
+        tell(l -> l.frame(frame));
+    }
+
+    @Override
+    public void end(String reason) {
+        tell(l -> l.end(reason));
+    }
+
+    /** Closes every listener and forgets them; a failure to close is logged. */
+    @Override
+    public void close() {
+        for (FrameListener listener : listeners) {
+            closeQuietly(listener);
+        }
+        listeners.clear();
+    }
+
+    private void tell(Call call) {
+        for (Iterator<FrameListener> it = listeners.iterator(); it.hasNext(); ) {
+            FrameListener listener = it.next();
+            try {
+                call.on(listener);
+            } catch (IOException | RuntimeException e) {
+                LOG.severe("frame listener " + listener + " failed after step " + step + " and is dropped: "
+                        + e.getMessage());
+                it.remove();
+                closeQuietly(listener);
+            }
+        }
+    }
+
+    private static void closeQuietly(FrameListener listener) {
+        try {
+            listener.close();
+        } catch (IOException | RuntimeException e) {
+            LOG.severe("closing frame listener " + listener + " failed: " + e.getMessage());
+        }
+    }
+}

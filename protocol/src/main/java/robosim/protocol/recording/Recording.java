@@ -1,0 +1,68 @@
+package robosim.protocol.recording;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+
+/**
+ * A whole recording in memory, read as far as it can be: for replay windows and summaries, which
+ * jump about in it. A damaged or cut-short file gives the frames before the damage and keeps the
+ * {@link RecordingException} that stopped the reading.
+ *
+ * @param file      where it was read from
+ * @param bytes     the file's size in bytes
+ * @param sensors   whether the frames keep their sonar and laser readings
+ * @param world     the world the recording starts in
+ * @param frames    every frame read, in order, each with the world it is drawn in
+ * @param endReason the end record's reason, or {@code null} if the run ended abruptly
+ * @param problem   what stopped the reading early, or {@code null} if the whole file was read
+ */
+public record Recording(Path file, long bytes, boolean sensors, WorldDescription world, List<Step> frames, String endReason,
+                        RecordingException problem) {
+    /** Copies the list so the record stays immutable. */
+    public Recording {
+        frames = List.copyOf(frames);
+    }
+
+    /**
+     * One step of the recording.
+     *
+     * @param world the world the frame is drawn in
+     * @param frame the robots after the step
+     */
+    public record Step(WorldDescription world, ViewerFrame frame) { }
+
+    /**
+     * Reads a recording as far as it can be read.
+     *
+     * @param file the file
+     * @return the recording
+     * @throws RecordingException if not even its header and world can be read
+     * @throws IOException        if the file cannot be read
+     */
+    public static Recording read(Path file) throws IOException {
+        List<Step> steps = new ArrayList<>();
+        RecordingException problem = null;
+        try (RecordingReader reader = RecordingReader.open(file)) {
+            WorldDescription first = reader.world();
+            try {
+                ViewerFrame f;
+                while ((f = reader.next()) != null) {
+                    steps.add(new Step(reader.world(), f));
+                }
+            } catch (RecordingException e) {
+                problem = e;
+            }
+            return new Recording(file, Files.size(file), reader.sensors(), first, steps, reader.endReason(), problem);
+        }
+    }
+
+    /** @return whether the whole file was read and it ends with an end record */
+    public boolean complete() {
+        return problem == null && endReason != null;
+    }
+}

@@ -1,0 +1,143 @@
+package robosim.protocol.recording;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import robosim.protocol.Bye;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.WorldDescription;
+
+/**
+ * Writes a recording (see {@link RecordingFormat}): attach it to an Environment or a viewer as a
+ * {@link FrameListener}. Every record goes out in one write and is flushed, so the file is
+ * readable up to the last step even if the process dies. Not thread-safe: one feeder at a time.
+ */
+public final class RecordingWriter implements FrameListener {
+    private static final int[] NONE = new int[0];
+
+    private final OutputStream out;
+    private final String name;
+    private final boolean sensors;
+    private final MessageCodec codec = new MessageCodec();
+    private final RecordCodec records = new RecordCodec();
+    private byte[] previousFrame;
+    private long bytes;
+    private long frames;
+    private boolean worldWritten;
+    private boolean closed;
+
+    /**
+     * Writes the header to a stream; the writer owns the stream from then on.
+     *
+     * @param out     where the recording goes
+     * @param name    what to call it in messages, such as its file name
+     * @param sensors whether to keep each robot's sonar and laser readings; without them a step
+     *                costs about half as much and the replay draws no sensor rays
+     * @throws IOException if the header cannot be written
+     */
+    public RecordingWriter(OutputStream out, String name, boolean sensors) throws IOException {
+        if (out == null) {
+            throw new IllegalArgumentException("null was supplied for out: a stream is required");
+        }
+        this.out = out;
+        this.name = name;
+        this.sensors = sensors;
+        byte[] header = new byte[RecordingFormat.HEADER_LENGTH];
+        System.arraycopy(RecordingFormat.MAGIC, 0, header, 0, RecordingFormat.MAGIC.length);
+        header[8] = (byte) (RecordingFormat.VERSION >>> 8);
+        header[9] = (byte) RecordingFormat.VERSION;
+        header[11] = (byte) (sensors ? RecordingFormat.FLAG_SENSORS : 0);
+        put(header);
+    }
+
+    /**
+     * Creates (or replaces) a recording file, with its parent directories.
+     *
+     * @param file    the file
+     * @param sensors whether to keep sonar and laser readings
+     * @return the writer, its header written
+     * @throws IOException if the file cannot be created
+     */
+    public static RecordingWriter create(Path file, boolean sensors) throws IOException {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        return new RecordingWriter(Files.newOutputStream(file), file.toString(), sensors);
+    }
+
+    @Override
+    public void world(WorldDescription world) throws IOException {
+        put(records.encode(RecordingFormat.WORLD, codec.encode(world), null));
+        worldWritten = true;
+    }
+
+    @Override
+    public void frame(ViewerFrame frame) throws IOException {
+        if (!worldWritten) {
+            throw new IllegalStateException("frame of step " + frame.step() + " for " + name
+                    + " before the world: a recording starts with its world");
+        }
+        byte[] message = codec.encode(sensors ? frame : withoutSensors(frame));
+        put(records.encode(RecordingFormat.FRAME, message, previousFrame));
+        previousFrame = message;
+        frames++;
+    }
+
+    @Override
+    public void end(String reason) throws IOException {
+        put(records.encode(RecordingFormat.END, codec.encode(new Bye(reason)), null));
+    }
+
+    private void put(byte[] record) throws IOException {
+        if (closed) {
+            throw new IOException("recording " + name + " is closed");
+        }
+        out.write(record);
+        out.flush();
+        bytes += record.length;
+    }
+
+    /** @return the bytes written so far, header included */
+    public long bytesWritten() {
+        return bytes;
+    }
+
+    /** @return the frames written so far */
+    public long framesWritten() {
+        return frames;
+    }
+
+    /** @return whether sonar and laser readings are kept */
+    public boolean sensors() {
+        return sensors;
+    }
+
+    /** Closes the file; a recording without an end record reads as one that ended abruptly. */
+    @Override
+    public void close() throws IOException {
+        if (!closed) {
+            closed = true;
+            records.close();
+            out.close();
+        }
+    }
+
+    /**
+     * @param frame a frame
+     * @return the frame with every robot's sonar and laser readings left out
+     */
+    static ViewerFrame withoutSensors(ViewerFrame frame) {
+        List<RobotView> robots = new ArrayList<>(frame.robots().size());
+        for (RobotView r : frame.robots()) {
+            robots.add(new RobotView(r.name(), r.x(), r.y(), r.th(), r.stalled(), r.connected(), NONE,
+                    r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel()));
+        }
+        return new ViewerFrame(frame.step(), frame.timeMs(), robots, frame.messages(), frame.said());
+    }
+}
