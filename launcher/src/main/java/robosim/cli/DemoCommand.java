@@ -1,36 +1,20 @@
 package robosim.cli;
 
-import java.io.File;
-import java.io.IOException;
-import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
-import robosim.env.core.Simulation;
-import robosim.env.net.EnvironmentServer;
-import robosim.env.net.RunReport;
-import robosim.env.net.ServerOptions;
-import robosim.env.world.World;
-import robosim.env.world.WorldReader;
-import robosim.viewer.ViewerSummary;
 
 /**
- * {@code robosim demo}: the Environment on the small maze, two wander robots in two JVMs of their
- * own, and a viewer writing PNG frames.
+ * {@code robosim demo}: GoldFinder with 3 Pioneers, each in a JVM of its own, on the medium maze;
+ * frames written as PNG, the summary printed.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "Run the demo: two wander robots (each in its own JVM) in the small maze, frames written as PNG.")
+        description = "Run the demo: GoldFinder with 3 robots, each in its own JVM, on the medium maze; frames written as PNG.")
 final class DemoCommand implements Callable<Integer> {
+    /** The wander robot, for runs that need robots that just keep moving. */
     static final String WANDER = "robosim.examples.wander.Wander";
 
     @Spec
@@ -39,51 +23,24 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--out", defaultValue = "out/demo", paramLabel = "DIR", description = "where the frames go; default ${DEFAULT-VALUE}")
     Path out;
 
-    @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = "steps to run (100 ms each); default ${DEFAULT-VALUE}")
-    long steps;
+    @Option(names = "--max-steps", defaultValue = "20000", paramLabel = "N", description = "step limit; default ${DEFAULT-VALUE}")
+    long maxSteps;
 
-    @Option(names = "--every", defaultValue = "10", paramLabel = "K", description = "write a frame every K steps; default ${DEFAULT-VALUE}")
+    @Option(names = "--every", defaultValue = "20", paramLabel = "K", description = "write a frame every K steps; default ${DEFAULT-VALUE}")
     int every;
 
     @Override
     public Integer call() throws Exception {
-        PrintWriter o = spec.commandLine().getOut();
-        if (steps < 1) {
-            spec.commandLine().getErr().println("robosim demo: " + steps + " was supplied for --steps: it must be at least 1");
-            return 2;
-        }
-        Path root = Path.of(System.getProperty("robosim.root", "."));
-        World world = WorldReader.read(root.resolve("testLoadFiles/environment/small-maze.xml"));
-        Path frames = out.resolve("frames");
-        Files.createDirectories(frames);
-        Simulation sim = new Simulation(world);
-        ServerOptions options = ServerOptions.loopback().withMaxSteps(steps).withWaitViewers(1);
-        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
-            server.bind();
-            o.printf(Locale.ROOT, "Demo: world %s, %d steps, robots %s%n", world.name(), steps, sim.robotNames());
-            o.flush();
-            CompletableFuture<ViewerSummary> viewer = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return Viewers.pngClient("127.0.0.1", server.viewerPort(), frames, every, 800, true, true,
-                            Duration.ofMinutes(2)).run();
-                } catch (IOException e) {
-                    throw new IllegalStateException(e.getMessage(), e);
-                }
-            });
-            List<Process> robots = new ArrayList<>();
-            try {
-                for (String name : sim.robotNames()) {
-                    robots.add(RobotProcesses.start(WANDER, name, server.robotPort(), out.resolve(name + ".log")));
-                }
-                RunReport report = server.run();
-                EnvCommand.printReport(o, report);
-                ViewerSummary v = viewer.get(60, TimeUnit.SECONDS);
-                o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", v.framesWritten(), frames.toAbsolutePath());
-                o.printf(Locale.ROOT, "Robot logs: %s%n", out.toAbsolutePath() + File.separator + "<robot>.log");
-            } finally {
-                RobotProcesses.stop(robots);
-            }
-        }
-        return 0;
+        GoldfinderCommand gold = new GoldfinderCommand();
+        gold.spec = spec;
+        gold.world = Path.of(System.getProperty("robosim.root", ".")).resolve("testLoadFiles/environment/maze-medium.xml");
+        gold.robots = 3;
+        gold.separateJvms = true;
+        gold.seed = 1;
+        gold.out = out;
+        gold.maxSteps = maxSteps;
+        gold.every = every;
+        gold.cellSize = 1500;
+        return gold.call();
     }
 }

@@ -10,9 +10,11 @@ package robosim.viewer;
  * @param showLaser    whether to draw each robot's latest laser scan
  * @param showOdometry whether to draw, as a dashed outline, where a robot believes it is when its
  *                     odometry is more than 1 mm or 0.5° away from its true pose
+ * @param showTrails   whether to draw the path each robot has taken, when a {@link Trails} is given
+ * @param showCaption  whether to write the step and simulated time in the top left corner
  */
 public record RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser,
-                            boolean showOdometry) {
+                            boolean showOdometry, boolean showTrails, boolean showCaption) {
     /** The widest image drawn, so that a bad option cannot exhaust the heap. */
     public static final int MAX_WIDTH = 8192;
 
@@ -24,6 +26,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @param showNames    whether to label robots
      * @param showLaser    whether to draw laser scans
      * @param showOdometry whether to draw the odometry pose when it is off the true pose
+     * @param showTrails   whether to draw the robots' paths
+     * @param showCaption  whether to write the step and time
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions {
@@ -31,6 +35,20 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
             throw new IllegalArgumentException(width + " was supplied for width: width must be from 1 to "
                     + MAX_WIDTH + " pixels");
         }
+    }
+
+    /**
+     * Options with the caption and without trails.
+     *
+     * @param width        image width in pixels, from 1 to {@value #MAX_WIDTH}
+     * @param showSonar    whether to draw sonar rays
+     * @param showNames    whether to label robots
+     * @param showLaser    whether to draw laser scans
+     * @param showOdometry whether to draw the odometry pose when it is off the true pose
+     * @throws IllegalArgumentException if the width is out of range
+     */
+    public RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser, boolean showOdometry) {
+        this(width, showSonar, showNames, showLaser, showOdometry, false, true);
     }
 
     /**
@@ -61,7 +79,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with laser scans shown or hidden
      */
     public RenderOptions withLaser(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, show, showOdometry);
+        return new RenderOptions(width, showSonar, showNames, show, showOdometry, showTrails, showCaption);
     }
 
     /**
@@ -69,6 +87,46 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the odometry pose shown or hidden
      */
     public RenderOptions withOdometry(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, show);
+        return new RenderOptions(width, showSonar, showNames, showLaser, show, showTrails, showCaption);
+    }
+
+    /**
+     * @param show whether to draw sonar rays
+     * @return these options with sonar rays shown or hidden
+     */
+    public RenderOptions withSonar(boolean show) {
+        return new RenderOptions(width, show, showNames, showLaser, showOdometry, showTrails, showCaption);
+    }
+
+    /**
+     * @param show whether to label robots with their names
+     * @return these options with names shown or hidden
+     */
+    public RenderOptions withNames(boolean show) {
+        return new RenderOptions(width, showSonar, show, showLaser, showOdometry, showTrails, showCaption);
+    }
+
+    /**
+     * @param show whether to draw the robots' paths
+     * @return these options with trails shown or hidden
+     */
+    public RenderOptions withTrails(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, show, showCaption);
+    }
+
+    /**
+     * @param show whether to write the step and time on the frame
+     * @return these options with the caption shown or hidden
+     */
+    public RenderOptions withCaption(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, show);
+    }
+
+    /**
+     * @param newWidth image width in pixels
+     * @return these options at that width
+     */
+    public RenderOptions withWidth(int newWidth) {
+        return new RenderOptions(newWidth, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption);
     }
 }

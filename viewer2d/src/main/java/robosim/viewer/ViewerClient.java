@@ -1,10 +1,10 @@
 package robosim.viewer;
 
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -16,16 +16,19 @@ import robosim.protocol.MessageCodec;
 import robosim.protocol.ViewerFrame;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
+import robosim.protocol.recording.FrameListener;
 
 /**
  * The viewer side of the wire: attaches to an Environment's viewer port, says
- * {@link ViewerHello}, takes the {@link WorldDescription} that must come first, then draws the
- * {@link ViewerFrame}s that follow until a {@link Bye} or the end of the stream.
+ * {@link ViewerHello}, takes the {@link WorldDescription} that must come first, then passes the
+ * {@link ViewerFrame}s that follow to its {@link FrameListener}s until a {@link Bye} or the end of
+ * the stream. A later {@code WorldDescription} (a world reloaded by a control panel) is passed on
+ * too, and replaces the world for the frames after it.
  *
- * <p>Frames whose step is a multiple of {@link ViewerOptions#every()} are rendered with a
- * {@link WorldRenderer} and handed to a {@link FrameSink}; so is the last frame received, so that
- * the final state is always kept. A later {@code WorldDescription} (a world reloaded by a control
- * panel) replaces the world for the frames after it.
+ * <p>The listeners may draw PNG files ({@link RenderedFrames} with a {@link PngFrameWriter}: the
+ * {@link #ViewerClient(ViewerOptions, FrameSink)} constructor sets that up), record the run or feed
+ * a window. They are told of the end ({@link FrameListener#end}) only when the Environment says
+ * goodbye, and are closed when the run ends however it ends.
  *
  * <p>No wait is unbounded: the connection has {@link ViewerOptions#connectTimeout()} and each
  * message {@link ViewerOptions#readTimeout()}. Every failure ends {@link #run()} with a
@@ -35,11 +38,14 @@ public final class ViewerClient {
     private static final Logger LOG = Logger.getLogger(ViewerClient.class.getName());
 
     private final ViewerOptions options;
-    private final FrameSink sink;
-    private final WorldRenderer renderer;
+    private final List<FrameListener> listeners;
     private final MessageCodec codec = new MessageCodec();
+    private volatile Socket socket;
+    private volatile boolean stopped;
 
     /**
+     * A client that draws every {@link ViewerOptions#every()}-th frame, and the last, in 2D.
+     *
      * @param options where to attach and what to draw
      * @param sink    where the rendered frames go, such as a {@link PngFrameWriter}
      */
@@ -53,13 +59,30 @@ public final class ViewerClient {
      * @param renderer draws the frames
      */
     public ViewerClient(ViewerOptions options, FrameSink sink, WorldRenderer renderer) {
+        this(options, List.of(rendering(options, sink, renderer)));
+    }
+
+    /**
+     * A client that passes the run to listeners and draws nothing itself.
+     *
+     * @param options  where to attach
+     * @param listeners what follows the run, in order; each is closed when the run ends
+     */
+    public ViewerClient(ViewerOptions options, List<FrameListener> listeners) {
+        if (options == null || listeners == null || listeners.stream().anyMatch(l -> l == null)) {
+            throw new IllegalArgumentException("null was supplied for " + (options == null ? "options" : "listeners")
+                    + ": it is required");
+        }
+        this.options = options;
+        this.listeners = List.copyOf(listeners);
+    }
+
+    private static RenderedFrames rendering(ViewerOptions options, FrameSink sink, WorldRenderer renderer) {
         if (options == null || sink == null || renderer == null) {
             throw new IllegalArgumentException("null was supplied for "
                     + (options == null ? "options" : sink == null ? "sink" : "renderer") + ": it is required");
         }
-        this.options = options;
-        this.sink = sink;
-        this.renderer = renderer;
+        return new RenderedFrames(FramePainter.flat(renderer, options.render()), sink, options.every(), false);
     }
 
     /** @return the options this client runs with */
@@ -68,46 +91,70 @@ public final class ViewerClient {
     }
 
     /**
-     * Attaches, draws until the Environment says goodbye or closes the stream, and detaches.
+     * Detaches from another thread, as when the user closes the window: {@link #run()} then
+     * returns with the end reason {@code "stopped"}.
+     */
+    public void stop() {
+        stopped = true;
+        Socket s = socket;
+        if (s != null) {
+            closeQuietly(s);
+        }
+    }
+
+    /**
+     * Attaches, passes the run on until the Environment says goodbye or closes the stream, and
+     * detaches.
      *
-     * @return what was received and written
+     * @return what was received and drawn
      * @throws ViewerException if the Environment cannot be reached, is silent for longer than the
-     *                         read timeout, breaks the protocol, or the sink fails
+     *                         read timeout, breaks the protocol, or a listener fails
      */
     public ViewerSummary run() throws ViewerException {
-        Socket socket = connect();
+        Session session = new Session();
         try {
+            socket = connect();
+            if (stopped) {
+                closeQuietly(socket);
+            }
             socket.setSoTimeout(Math.toIntExact(options.readTimeout().toMillis()));
             new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name()));
-            return new Session(new FrameReader(socket.getInputStream(), codec, options.maxFrame())).run();
+            return session.run(new FrameReader(socket.getInputStream(), codec, options.maxFrame()));
         } catch (ViewerException e) {
+            session.abandon();
             throw e;
         } catch (IOException e) {
+            session.abandon();
+            if (stopped) {
+                return session.summary("stopped");
+            }
             throw new ViewerException("cannot greet the environment at " + options.peer() + ": "
                     + e.getClass().getSimpleName() + ": " + e.getMessage(), e);
         } finally {
-            closeQuietly(socket);
+            if (socket != null) {
+                closeQuietly(socket);
+            }
         }
     }
 
     private Socket connect() throws ViewerException {
         int timeoutMs = Math.toIntExact(options.connectTimeout().toMillis());
-        Socket socket = new Socket();
+        Socket s = new Socket();
         try {
-            socket.connect(new InetSocketAddress(options.host(), options.port()), timeoutMs);
+            s.connect(new InetSocketAddress(options.host(), options.port()), timeoutMs);
             LOG.info(() -> "viewer '" + options.name() + "' connected to the environment at " + options.peer());
-            return socket;
+            return s;
         } catch (IOException e) {
-            closeQuietly(socket);
+            closeQuietly(s);
             String why = e instanceof SocketTimeoutException ? "no answer within " + timeoutMs + " ms (connectTimeout)"
                     : e.getClass().getSimpleName() + ": " + e.getMessage();
             throw new ViewerException("cannot connect to the environment at " + options.peer() + ": " + why, e);
         }
     }
 
-    private static void closeQuietly(Socket socket) {
+    private static void closeQuietly(Socket s) {
         try {
-            socket.close();
+            s.close();
         } catch (IOException e) {
             LOG.log(Level.FINE, "closing a viewer socket failed", e);
         }
@@ -115,20 +162,13 @@ public final class ViewerClient {
 
     /** One attachment's reading loop and counters. */
     private final class Session {
-        private final FrameReader in;
-        private WorldDescription world;
+        private String world;
         private long received;
-        private long written;
         private long lastStep = -1;
-        private ViewerFrame last;
-        private boolean lastWritten;
+        private boolean closed;
 
-        Session(FrameReader in) {
-            this.in = in;
-        }
-
-        ViewerSummary run() throws ViewerException {
-            Message first = read("the world description");
+        ViewerSummary run(FrameReader in) throws ViewerException {
+            Message first = read(in, "the world description");
             if (first == null) {
                 throw fail("closed the connection before sending the world description", null);
             }
@@ -138,29 +178,21 @@ public final class ViewerClient {
             }
             accept(description);
             while (true) {
-                Message m = read("a frame");
+                Message m = read(in, "a frame");
                 if (m == null || m instanceof Bye) {
-                    String reason = m == null ? "end of stream" : ((Bye) m).reason();
-                    if (last != null && !lastWritten) {
-                        write(last);
+                    String reason = m == null ? (stopped ? "stopped" : "end of stream") : ((Bye) m).reason();
+                    if (m != null) {
+                        tell(l -> l.end(reason));
                     }
-                    ViewerSummary summary = new ViewerSummary(world.name(), received, written, lastStep, reason);
+                    closeListeners();
+                    ViewerSummary summary = summary(reason);
                     LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": " + summary);
                     return summary;
                 } else if (m instanceof ViewerFrame frame) {
                     received++;
                     lastStep = frame.step();
-                    last = frame;
-                    lastWritten = false;
-                    if (frame.step() % options.every() == 0) {
-                        write(frame);
-                    }
+                    tell(l -> l.frame(frame));
                 } else if (m instanceof WorldDescription reloaded) {
-                    // The old world's last frame is drawn with the old world before it is replaced.
-                    if (last != null && !lastWritten) {
-                        write(last);
-                    }
-                    last = null;
                     accept(reloaded);
                 } else {
                     throw fail("broke the protocol after step " + lastStep + ": a viewer expects frames, not "
@@ -175,34 +207,73 @@ public final class ViewerClient {
             } catch (IllegalArgumentException e) {
                 throw fail("sent a world that cannot be drawn: " + e.getMessage(), e);
             }
-            world = description;
+            world = description.name();
             LOG.info(() -> "world '" + description.name() + "' from " + options.peer() + ": " + description.width()
                     + " x " + description.height() + " mm, " + description.obstacles().size() + " obstacles, "
                     + description.robots().size() + " robots");
+            tell(l -> l.world(description));
         }
 
-        private void write(ViewerFrame frame) throws ViewerException {
-            BufferedImage image = renderer.render(world, frame, options.render());
-            try {
-                sink.accept(frame.step(), image);
-            } catch (IOException e) {
-                throw new ViewerException("cannot store the frame of step " + frame.step() + " from "
-                        + options.peer() + ": " + e.getMessage(), e);
+        ViewerSummary summary(String reason) {
+            long written = 0;
+            for (FrameListener l : listeners) {
+                if (l instanceof RenderedFrames r) {
+                    written += r.written();
+                }
             }
-            written++;
-            lastWritten = true;
-            LOG.fine(() -> "wrote the frame of step " + frame.step());
+            return new ViewerSummary(world, received, written, lastStep, reason);
         }
 
-        private Message read(String expected) throws ViewerException {
+        /** A call on a listener, which may fail. */
+        private interface Call {
+            void on(FrameListener listener) throws IOException;
+        }
+
+        private void tell(Call call) throws ViewerException {
+            for (FrameListener l : listeners) {
+                try {
+                    call.on(l);
+                } catch (IOException | RuntimeException e) {
+                    throw new ViewerException("cannot store the frame of step " + lastStep + " from "
+                            + options.peer() + ": " + e.getMessage(), e);
+                }
+            }
+        }
+
+        private void closeListeners() throws ViewerException {
+            closed = true;
+            tell(FrameListener::close);
+        }
+
+        /** Closes the listeners after a failure, logging rather than hiding it. */
+        void abandon() {
+            if (closed) {
+                return;
+            }
+            closed = true;
+            for (FrameListener l : listeners) {
+                try {
+                    l.close();
+                } catch (IOException | RuntimeException e) {
+                    LOG.log(Level.FINE, "closing a listener after a failure failed", e);
+                }
+            }
+        }
+
+        private Message read(FrameReader in, String expected) throws ViewerException {
             try {
                 return in.read();
-            } catch (SocketTimeoutException e) {
-                throw fail("sent nothing for " + options.readTimeout().toMillis() + " ms (readTimeout) while "
-                        + "the viewer waited for " + expected + after(), e);
-            } catch (FrameException e) {
-                throw fail("broke the protocol" + after() + ": " + e.getMessage(), e);
             } catch (IOException e) {
+                if (stopped) {
+                    return null;
+                }
+                if (e instanceof SocketTimeoutException) {
+                    throw fail("sent nothing for " + options.readTimeout().toMillis() + " ms (readTimeout) while "
+                            + "the viewer waited for " + expected + after(), e);
+                }
+                if (e instanceof FrameException) {
+                    throw fail("broke the protocol" + after() + ": " + e.getMessage(), e);
+                }
                 throw fail("dropped the connection" + after() + ": " + e.getClass().getSimpleName() + ": "
                         + e.getMessage(), e);
             }

@@ -43,6 +43,7 @@ public final class WorldRenderer {
     private final RobotPainter robots = new RobotPainter();
     private final LaserPainter lasers = new LaserPainter();
     private final HeatPainter heat = new HeatPainter();
+    private final TrailPainter trailPainter = new TrailPainter();
 
     /** A renderer; it holds no state, so one can be shared. */
     public WorldRenderer() {
@@ -60,11 +61,25 @@ public final class WorldRenderer {
      *                                  too tall (see {@link ViewTransform#fit})
      */
     public BufferedImage render(WorldDescription world, ViewerFrame frame, RenderOptions options) {
+        return render(world, frame, options, null);
+    }
+
+    /**
+     * Draws a frame, with the robots' paths when the options show trails, into a new image.
+     *
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param options the image width and what to show
+     * @param trails  the robots' paths so far, or {@code null}
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image
+     * @throws IllegalArgumentException if the world cannot be drawn at that width
+     */
+    public BufferedImage render(WorldDescription world, ViewerFrame frame, RenderOptions options, Trails trails) {
         ViewTransform view = ViewTransform.fit(world, options.width());
         BufferedImage image = new BufferedImage(view.width(), view.height(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
-            draw(g, view, world, frame, options);
+            draw(g, view, world, frame, options, trails);
         } finally {
             g.dispose();
         }
@@ -84,6 +99,21 @@ public final class WorldRenderer {
      */
     public void draw(Graphics2D target, ViewTransform view, WorldDescription world, ViewerFrame frame,
                      RenderOptions options) {
+        draw(target, view, world, frame, options, null);
+    }
+
+    /**
+     * Draws a frame onto any surface, with the robots' paths when the options show trails.
+     *
+     * @param target  where to draw
+     * @param view    the mapping from world mm to pixels
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param options what to show
+     * @param trails  the robots' paths so far, or {@code null}
+     */
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, ViewerFrame frame,
+                     RenderOptions options, Trails trails) {
         Graphics2D g = (Graphics2D) target.create();
         try {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
@@ -91,9 +121,14 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             drawWorld(g, view, world);
+            if (trails != null && options.showTrails()) {
+                trailPainter.draw(g, view, trails, name -> colourOf(world, frame, name));
+            }
             if (frame != null) {
                 drawRobots(g, view, world, frame, options);
-                drawCaption(g, view, caption(frame));
+                if (options.showCaption()) {
+                    drawCaption(g, view.width(), caption(frame));
+                }
             }
         } finally {
             g.dispose();
@@ -181,7 +216,7 @@ public final class WorldRenderer {
             }
         }
         if (options.showNames()) {
-            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view)));
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view.width())));
             for (int i = 0; i < views.size(); i++) {
                 robots.drawName(g, view, views.get(i), info[i],
                         views.get(i).connected() ? OUTLINE : DISCONNECTED_OUTLINE);
@@ -198,20 +233,60 @@ public final class WorldRenderer {
         return robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
     }
 
-    private static void drawCaption(Graphics2D g, ViewTransform view, String text) {
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view)));
-        FontMetrics metrics = g.getFontMetrics();
-        int pad = 4;
-        int boxWidth = metrics.stringWidth(text) + 2 * pad;
-        int boxHeight = metrics.getHeight() + 2 * pad;
-        g.setColor(CAPTION_BACKDROP);
-        g.fill(new Rectangle2D.Double(3, 3, boxWidth, boxHeight));
-        g.setColor(OUTLINE);
-        g.drawString(text, 3 + pad, 3 + pad + metrics.getAscent());
+    /**
+     * A robot's colour as the robots are drawn: by its index in the world, or after the world's
+     * robots by its index in the frame; grey when it is not connected or not known.
+     *
+     * @param world the world
+     * @param frame the frame, or {@code null}
+     * @param name  the robot's name
+     * @return its colour
+     */
+    public static Color colourOf(WorldDescription world, ViewerFrame frame, String name) {
+        List<RobotInfo> infos = world.robots();
+        for (int i = 0; i < infos.size(); i++) {
+            if (infos.get(i).name().equals(name)) {
+                return RobotPalette.colour(i);
+            }
+        }
+        List<RobotView> views = frame == null ? List.of() : frame.robots();
+        for (int i = 0; i < views.size(); i++) {
+            if (name.equals(views.get(i).name())) {
+                return RobotPalette.colour(infos.size() + i);
+            }
+        }
+        return RobotPalette.DISCONNECTED;
+    }
+
+    /**
+     * Writes a caption on a translucent box in the top left corner, as frames carry it, so that
+     * views drawn elsewhere (the 3D view, a window) label their frames alike.
+     *
+     * @param g          where to draw
+     * @param imageWidth the width of the image, which sets the font size
+     * @param text       the caption
+     */
+    public static void drawCaption(Graphics2D target, int imageWidth, String text) {
+        Graphics2D g = (Graphics2D) target.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(imageWidth)));
+            FontMetrics metrics = g.getFontMetrics();
+            int pad = 4;
+            int boxWidth = metrics.stringWidth(text) + 2 * pad;
+            int boxHeight = metrics.getHeight() + 2 * pad;
+            g.setColor(CAPTION_BACKDROP);
+            g.fill(new Rectangle2D.Double(3, 3, boxWidth, boxHeight));
+            g.setColor(OUTLINE);
+            g.drawString(text, 3 + pad, 3 + pad + metrics.getAscent());
+        } finally {
+            g.dispose();
+        }
     }
 
     /** Text grows with the image but stays readable on small ones. */
-    private static int fontSize(ViewTransform view) {
-        return Math.max(10, Math.min(24, view.width() / 70));
+    private static int fontSize(int imageWidth) {
+        return Math.max(10, Math.min(24, imageWidth / 70));
     }
 }

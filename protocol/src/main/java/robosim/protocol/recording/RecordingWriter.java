@@ -30,6 +30,7 @@ public final class RecordingWriter implements FrameListener {
     private long frames;
     private boolean worldWritten;
     private boolean closed;
+    private IOException failure;
 
     /**
      * Writes the header to a stream; the writer owns the stream from then on.
@@ -98,9 +99,25 @@ public final class RecordingWriter implements FrameListener {
         if (closed) {
             throw new IOException("recording " + name + " is closed");
         }
-        out.write(record);
-        out.flush();
+        try {
+            out.write(record);
+            out.flush();
+        } catch (IOException e) {
+            failure = e;
+            throw new IOException("cannot write recording " + name + ": " + e.getMessage(), e);
+        }
         bytes += record.length;
+    }
+
+    /** @return the write that failed, or {@code null} if none has */
+    public IOException failure() {
+        return failure;
+    }
+
+    /** @return {@code recording NAME}, for log lines about it */
+    @Override
+    public String toString() {
+        return "recording " + name;
     }
 
     /** @return the bytes written so far, header included */

@@ -1,0 +1,58 @@
+package robosim.cli;
+
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import robosim.protocol.Bye;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.Message;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldDescription;
+
+/** A viewer for tests: attaches and keeps the world and every frame until the run ends. */
+final class FrameCollector {
+    private final CompletableFuture<Void> done;
+    private volatile WorldDescription world;
+    private final List<ViewerFrame> frames = new ArrayList<>();
+
+    FrameCollector(int port) throws Exception {
+        Socket s = new Socket("127.0.0.1", port);
+        s.setSoTimeout(120_000);
+        MessageCodec codec = new MessageCodec();
+        new FrameWriter(s.getOutputStream(), codec).write(new ViewerHello("test"));
+        done = CompletableFuture.runAsync(() -> {
+            try (s) {
+                FrameReader r = new FrameReader(s.getInputStream(), codec, 1 << 24);
+                Message m;
+                while ((m = r.read()) != null && !(m instanceof Bye)) {
+                    if (m instanceof WorldDescription w) {
+                        world = w;
+                    } else if (m instanceof ViewerFrame f) {
+                        synchronized (frames) {
+                            frames.add(f);
+                        }
+                    }
+                }
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+    }
+
+    WorldDescription world() throws Exception {
+        done.get(60, TimeUnit.SECONDS);
+        return world;
+    }
+
+    List<ViewerFrame> frames() throws Exception {
+        done.get(60, TimeUnit.SECONDS);
+        synchronized (frames) {
+            return List.copyOf(frames);
+        }
+    }
+}

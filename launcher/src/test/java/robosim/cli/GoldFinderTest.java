@@ -1,0 +1,125 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.locationtech.jts.geom.Polygon;
+import robosim.env.core.Simulation;
+import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.env.world.World;
+import robosim.env.world.WorldReader;
+import robosim.examples.goldfinder.GoldFinder;
+import robosim.geometry.BodyShape;
+import robosim.geometry.GeometryClient;
+import robosim.geometry.Pose2D;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.params.RobotParameters;
+
+/** GoldFinder on generated 8×8 mazes: found, deterministic, and never an overlap. */
+@Timeout(value = 5, unit = TimeUnit.MINUTES)
+class GoldFinderTest {
+    /** The step limit of every run: 25 minutes of simulated time. */
+    static final long STEP_LIMIT = 15_000;
+    static final int ROBOTS = 3;
+
+    @TempDir
+    Path dir;
+
+    /** One run: its report and every frame a viewer saw. */
+    record Run(RunReport report, WorldDescription world, List<ViewerFrame> frames) { }
+
+    Run run(long seed) throws Exception {
+        Path file = MazeCommand.write(8, 8, 1500, seed, 8, dir.resolve("maze-" + seed + ".xml"));
+        World world = WorldReader.read(file).withFirstRobots(ROBOTS);
+        Simulation sim = new Simulation(world, seed);
+        try (EnvironmentServer server = new EnvironmentServer(sim,
+                ServerOptions.loopback().withMaxSteps(STEP_LIMIT).withWaitViewers(1))) {
+            server.bind();
+            CompletableFuture<RunReport> report = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return server.run();
+                } catch (InterruptedException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            FrameCollector viewer = new FrameCollector(server.viewerPort());
+            List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), ROBOTS, 1500, seed);
+            RunReport r = report.get(3, TimeUnit.MINUTES);
+            for (Thread t : team) {
+                t.join(10_000);
+            }
+            return new Run(r, viewer.world(), viewer.frames());
+        }
+    }
+
+    @Test
+    void theTeamFindsTheGoldInAtLeastNineOfTenMazesWithoutEverOverlapping() throws Exception {
+        int found = 0;
+        List<String> misses = new ArrayList<>();
+        for (long seed = 1; seed <= 10; seed++) {
+            Run run = run(seed);
+            if (run.report().find() != null) {
+                found++;
+            } else {
+                misses.add("seed " + seed + ": " + run.report().endReason());
+            }
+            assertNoOverlap(seed, run);
+        }
+        assertTrue(found >= 9, "found in " + found + " of 10 mazes within " + STEP_LIMIT + " steps; missed " + misses);
+    }
+
+    @Test
+    void aSeedGivesTheSameSearchEveryTime() throws Exception {
+        Run a = run(4);
+        Run b = run(4);
+        assertNotNull(a.report().find());
+        assertEquals(a.report().find(), b.report().find());
+        assertEquals(a.report().robots(), b.report().robots());
+        assertEquals(a.frames().size(), b.frames().size());
+    }
+
+    /** Every step, from the true poses: no body inside a wall, no two bodies overlapping. */
+    static void assertNoOverlap(long seed, Run run) {
+        List<Polygon> walls = new ArrayList<>();
+        for (WorldDescription.Obstacle o : run.world().obstacles()) {
+            walls.add(GeometryClient.polygon(o.xy()));
+        }
+        GeometryClient geometry = new GeometryClient(walls);
+        List<BodyShape> shapes = new ArrayList<>();
+        for (WorldDescription.RobotInfo r : run.world().robots()) {
+            RobotParameters p = r.parameters();
+            shapes.add(BodyShape.rectangle(p.robotLengthFront(), p.robotLengthRear(), p.robotWidth()));
+        }
+        assertFalse(run.frames().isEmpty());
+        org.locationtech.jts.geom.GeometryFactory f = new org.locationtech.jts.geom.GeometryFactory();
+        for (ViewerFrame frame : run.frames()) {
+            List<Polygon> bodies = new ArrayList<>();
+            for (int i = 0; i < frame.robots().size(); i++) {
+                ViewerFrame.RobotView v = frame.robots().get(i);
+                Pose2D pose = new Pose2D(v.x(), v.y(), Math.toRadians(v.th()));
+                String at = "seed " + seed + " step " + frame.step() + " robot " + v.name();
+                assertFalse(geometry.overlaps(shapes.get(i), pose, -1), at + " overlaps a wall");
+                bodies.add(f.createPolygon(shapes.get(i).ringAt(pose)));
+            }
+            for (int i = 0; i < bodies.size(); i++) {
+                for (int j = i + 1; j < bodies.size(); j++) {
+                    assertFalse(bodies.get(i).intersects(bodies.get(j)), "seed " + seed + " step " + frame.step()
+                            + ": robots " + frame.robots().get(i).name() + " and " + frame.robots().get(j).name() + " overlap");
+                }
+            }
+        }
+    }
+}
