@@ -104,8 +104,12 @@ final class Messages {
     }
 
     /** One message of every type. */
+    static CommsUpdate commsUpdate() {
+        return new CommsUpdate(2500.5, true, null, 0.125, 1024);
+    }
+
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
-                viewerFrame(), bye());
+                viewerFrame(), bye(), commsUpdate());
     }
 }

@@ -10,7 +10,9 @@ import java.util.logging.Logger;
 import robosim.env.core.CommandRules;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
+import robosim.comms.CommsSettings;
 import robosim.protocol.Command;
+import robosim.protocol.CommsUpdate;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
@@ -189,8 +191,28 @@ final class SessionRules {
             c.send(sim.description());
             c.send(sim.frame());
             LOG.info(() -> "viewer " + hello.name() + " attached at step " + sim.stepCount());
+        } else if (c.name() != null && m instanceof CommsUpdate u) {
+            commsUpdate(c, u);
         } else {
-            c.close("sent " + typeOf(m) + "; a viewer sends only viewerHello, once");
+            c.close("sent " + typeOf(m) + "; a viewer sends viewerHello once, then only commsUpdate");
+        }
+    }
+
+    private void commsUpdate(Connection c, CommsUpdate u) {
+        CommsSettings now = sim.commsSettings();
+        try {
+            CommsSettings next = new CommsSettings(
+                    u.maxRange() != null ? u.maxRange() : now.maxRange(),
+                    u.wallsBlock() != null ? u.wallsBlock() : now.wallsBlock(),
+                    u.latencySteps() != null ? u.latencySteps() : now.latencySteps(),
+                    u.lossProbability() != null ? u.lossProbability() : now.lossProbability(),
+                    u.maxMessageBytes() != null ? u.maxMessageBytes() : now.maxMessageBytes());
+            sim.setCommsSettings(next);
+            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim.stepCount() + " to " + next);
+            c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
+                    next.maxMessageBytes()));
+        } catch (IllegalArgumentException e) {
+            c.close("sent comms settings that break a rule: " + e.getMessage());
         }
     }
 

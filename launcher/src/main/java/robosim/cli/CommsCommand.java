@@ -1,0 +1,77 @@
+package robosim.cli;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+import robosim.protocol.CommsUpdate;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.Message;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.ViewerHello;
+
+/** {@code robosim comms}: changes a running Environment's communication settings. */
+@Command(name = "comms", mixinStandardHelpOptions = true,
+        description = "Change how messages travel in a running Environment; settings not given stay as they are.")
+final class CommsCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--host", defaultValue = "localhost", description = "the Environment's host; default ${DEFAULT-VALUE}")
+    String host;
+
+    @Option(names = "--port", defaultValue = "3000", description = "the Environment's viewer port; default ${DEFAULT-VALUE}")
+    int port;
+
+    @Option(names = "--range", paramLabel = "MM", description = "the farthest a message reaches (0: no limit)")
+    Double range;
+
+    @Option(names = "--walls-block", arity = "1", paramLabel = "true|false", description = "whether walls stop messages")
+    Boolean wallsBlock;
+
+    @Option(names = "--latency", paramLabel = "STEPS", description = "steps from sending to delivery, at least 1")
+    Integer latency;
+
+    @Option(names = "--loss", paramLabel = "P", description = "the chance a message is lost, 0 to 1")
+    Double loss;
+
+    @Option(names = "--max-bytes", paramLabel = "N", description = "the largest message, bytes")
+    Integer maxBytes;
+
+    @Override
+    public Integer call() {
+        if (range == null && wallsBlock == null && latency == null && loss == null && maxBytes == null) {
+            spec.commandLine().getErr().println("robosim comms: give at least one setting to change (see --help)");
+            return 2;
+        }
+        try (Socket s = new Socket()) {
+            s.connect(new InetSocketAddress(host, port), 10_000);
+            s.setSoTimeout(10_000);
+            MessageCodec codec = new MessageCodec();
+            FrameWriter w = new FrameWriter(s.getOutputStream(), codec);
+            w.write(new ViewerHello("comms-control"));
+            w.write(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
+            FrameReader r = new FrameReader(s.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
+            Message m;
+            while ((m = r.read()) != null) {
+                if (m instanceof CommsUpdate now) {
+                    spec.commandLine().getOut().printf(java.util.Locale.ROOT,
+                            "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",
+                            now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());
+                    return 0;
+                }
+            }
+            spec.commandLine().getErr().println("robosim comms: the Environment refused the settings (its log says why)");
+            return 1;
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + host + ":" + port
+                    + ": " + e.getMessage());
+            return 1;
+        }
+    }
+}

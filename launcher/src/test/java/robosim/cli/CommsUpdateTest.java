@@ -1,0 +1,55 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import picocli.CommandLine;
+import robosim.comms.CommsSettings;
+import robosim.env.net.ServerOptions;
+
+/** The comms settings change while the Environment runs (it is waiting for its robots here). */
+@Timeout(value = 1, unit = TimeUnit.MINUTES)
+class CommsUpdateTest {
+    @Test
+    void theCommsCommandChangesOnlyTheSettingsItNames() throws Exception {
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 1, false, 10_000, 3_000, 0, 4 << 20);
+        try (Harness h = new Harness("empty-room.xml", options)) {
+            int code = run("comms", "--port", Integer.toString(h.server.viewerPort()), "--latency", "3", "--loss", "0.25");
+            assertEquals(0, code, "the Environment confirmed");
+            CommsSettings s = h.sim.commsSettings();
+            assertEquals(3, s.latencySteps());
+            assertEquals(0.25, s.lossProbability());
+            assertEquals(CommsSettings.DEFAULT.maxMessageBytes(), s.maxMessageBytes(), "unchanged");
+        }
+    }
+
+    @Test
+    void settingsThatBreakARuleAreRefused() throws Exception {
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 1, false, 10_000, 3_000, 0, 4 << 20);
+        try (Harness h = new Harness("empty-room.xml", options)) {
+            assertEquals(1, run("comms", "--port", Integer.toString(h.server.viewerPort()), "--loss", "1.5"));
+            assertEquals(CommsSettings.DEFAULT, h.sim.commsSettings());
+        }
+    }
+
+    @Test
+    void nothingToChangeIsACommandLineError() {
+        StringWriter err = new StringWriter();
+        CommandLine cl = Main.commandLine();
+        cl.setErr(new PrintWriter(err));
+        assertEquals(2, cl.execute("comms", "--port", "1"));
+        assertTrue(err.toString().contains("give at least one setting"));
+    }
+
+    private static int run(String... args) {
+        CommandLine cl = Main.commandLine();
+        cl.setOut(new PrintWriter(new StringWriter()));
+        cl.setErr(new PrintWriter(new StringWriter()));
+        return cl.execute(args);
+    }
+}

@@ -1,0 +1,192 @@
+package robosim.viewer.view3d;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.util.Comparator;
+import java.util.List;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.HeatSource;
+import robosim.viewer.FramePainter;
+import robosim.viewer.Trails;
+import robosim.viewer.WorldRenderer;
+
+/**
+ * Draws the 3D view of a frame: the sky, the floor with its heat sources and the robots' trails,
+ * then every visible face of the walls, obstacles and robots from the farthest to the nearest
+ * (the painter's algorithm), each in its colour shaded by the light, then the robots' names and
+ * the caption. Pure drawing, no state between calls.
+ */
+public final class SolidRenderer implements FramePainter {
+    /** The colour around the world. */
+    public static final Color SKY = new Color(214, 224, 236);
+    private static final Color HEAT = new Color(240, 110, 20);
+    private static final Color TEXT = new Color(20, 20, 20);
+    private static final double[] UP = {0, 0, 1};
+
+    private final SceneOptions options;
+
+    /** @param options how frames are drawn when used as a {@link FramePainter} */
+    public SolidRenderer(SceneOptions options) {
+        if (options == null) {
+            throw new IllegalArgumentException("null was supplied for options: they are required");
+        }
+        this.options = options;
+    }
+
+    @Override
+    public BufferedImage paint(WorldDescription world, ViewerFrame frame, Trails trails) {
+        return render(world, frame, options, trails);
+    }
+
+    /**
+     * Draws a frame into a new image as wide as the options say and as high as suits the camera
+     * (see {@link Projection#heightFor}).
+     *
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null} for the world alone
+     * @param options the width, camera, light and what to show
+     * @param trails  the robots' paths, or {@code null}
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image
+     */
+    public static BufferedImage render(WorldDescription world, ViewerFrame frame, SceneOptions options, Trails trails) {
+        int height = Projection.heightFor(world, options.camera(), options.width());
+        Projection p = Projection.fit(world, options.camera(), options.width(), height, Double.NaN, Double.NaN);
+        BufferedImage image = new BufferedImage(options.width(), height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            draw(g, p, world, frame, options, trails);
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
+    /**
+     * Draws a frame onto any surface, such as a window's component, through a projection.
+     *
+     * @param target  where to draw; its settings are left as they were
+     * @param p       the projection, which also gives the size of the area drawn
+     * @param world   the static world
+     * @param frame   the robots after one step, or {@code null}
+     * @param options the light and what to show; its width and camera are the projection's business
+     * @param trails  the robots' paths, or {@code null}
+     */
+    public static void draw(Graphics2D target, Projection p, WorldDescription world, ViewerFrame frame,
+                            SceneOptions options, Trails trails) {
+        Graphics2D g = (Graphics2D) target.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+            double[] light = options.light().towardsLight();
+            g.setColor(SKY);
+            g.fill(new Rectangle2D.Double(0, 0, p.width(), p.height()));
+            g.setColor(Shading.shade(WorldRenderer.BACKGROUND, UP, light));
+            g.fill(path(p, new double[] {0, 0, 0, world.width(), 0, 0, world.width(), world.height(), 0,
+                0, world.height(), 0}));
+            drawHeat(g, p, world.heat());
+            if (trails != null && options.showTrails()) {
+                drawTrails(g, p, world, frame, trails);
+            }
+            List<Face> faces = SceneBuilder.build(world, frame, p);
+            faces.sort(Comparator.comparingDouble(f -> f.depth(p)));
+            g.setStroke(new BasicStroke(1f));
+            for (Face f : faces) {
+                drawFace(g, p, f, light);
+            }
+            if (frame != null && options.showNames()) {
+                drawNames(g, p, frame);
+            }
+            if (frame != null && options.showCaption()) {
+                WorldRenderer.drawCaption(g, p.width(), WorldRenderer.caption(frame));
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    private static void drawFace(Graphics2D g, Projection p, Face f, double[] light) {
+        Path2D polygon = path(p, f.xyz());
+        Color shaded = Shading.shade(f.base(), f.normal(), light);
+        g.setColor(shaded);
+        g.fill(polygon);
+        // the same colour round the edge closes the hairline seams anti-aliasing leaves between pieces
+        g.draw(polygon);
+        if (f.mark() != null) {
+            g.setColor(new Color(25, 25, 25));
+            g.fill(path(p, f.mark()));
+        }
+        if (f.outline() != null) {
+            g.setColor(f.outline());
+            g.setStroke(new BasicStroke(1.5f));
+            g.draw(polygon);
+            g.setStroke(new BasicStroke(1f));
+        }
+    }
+
+    private static void drawHeat(Graphics2D g, Projection p, List<HeatSource> heat) {
+        g.setColor(HEAT);
+        double r = Math.max(3, 120 * p.scale());
+        for (HeatSource h : heat) {
+            if (h != null && Double.isFinite(h.x()) && Double.isFinite(h.y())) {
+                double x = p.px(h.x(), h.y(), 0);
+                double y = p.py(h.x(), h.y(), 0);
+                g.fill(new Ellipse2D.Double(x - r, y - r / 2, 2 * r, r));
+            }
+        }
+    }
+
+    private static void drawTrails(Graphics2D g, Projection p, WorldDescription world, ViewerFrame frame,
+                                   Trails trails) {
+        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        for (String robot : trails.robots()) {
+            double[] xy = trails.points(robot);
+            if (xy.length < 4) {
+                continue;
+            }
+            Path2D.Double path = new Path2D.Double();
+            path.moveTo(p.px(xy[0], xy[1], 0), p.py(xy[0], xy[1], 0));
+            for (int i = 2; i + 1 < xy.length; i += 2) {
+                path.lineTo(p.px(xy[i], xy[i + 1], 0), p.py(xy[i], xy[i + 1], 0));
+            }
+            Color c = WorldRenderer.colourOf(world, frame, robot);
+            g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 150));
+            g.draw(path);
+        }
+    }
+
+    private static void drawNames(Graphics2D g, Projection p, ViewerFrame frame) {
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, Math.max(10, Math.min(24, p.width() / 70))));
+        g.setColor(TEXT);
+        for (RobotView r : frame.robots()) {
+            if (r.name() != null && Double.isFinite(r.x()) && Double.isFinite(r.y())) {
+                double z = Projection.ROBOT_HEIGHT_MM + 60;
+                g.drawString(r.name(), (float) p.px(r.x(), r.y(), z) + 6, (float) p.py(r.x(), r.y(), z) - 6);
+            }
+        }
+    }
+
+    private static Path2D path(Projection p, double[] xyz) {
+        Path2D.Double path = new Path2D.Double();
+        for (int i = 0; i < xyz.length; i += 3) {
+            double x = p.px(xyz[i], xyz[i + 1], xyz[i + 2]);
+            double y = p.py(xyz[i], xyz[i + 1], xyz[i + 2]);
+            if (i == 0) {
+                path.moveTo(x, y);
+            } else {
+                path.lineTo(x, y);
+            }
+        }
+        path.closePath();
+        return path;
+    }
+}
