@@ -12,6 +12,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.bench.CodecBench;
 import robosim.bench.CoreBench;
+import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
 
@@ -38,6 +39,12 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--skip-laser", description = "do not measure the laser")
     boolean skipLaser;
 
+    @Option(names = "--goldfinder", description = "instead: steps to find the gold with 1, 2, 4 and 8 robots over --mazes generated 10x10 mazes")
+    boolean goldfinder;
+
+    @Option(names = "--mazes", defaultValue = "20", paramLabel = "N", description = "mazes for --goldfinder; default ${DEFAULT-VALUE}")
+    int mazes;
+
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R", description = "runs per robot count; the median is printed too; default ${DEFAULT-VALUE}")
     int repeat;
 
@@ -63,6 +70,11 @@ final class BenchCommand implements Callable<Integer> {
         Files.createDirectories(out);
         o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), System.getProperty("os.arch"));
+        if (goldfinder) {
+            long limit = 60_000;
+            GoldFinderBench.print(o, GoldFinderBench.run(List.of(1, 2, 4, 8), mazes, 10, limit, out.resolve("mazes"), p3dx), limit);
+            return 0;
+        }
         if (!skipCodec) {
             CodecBench.print(o, CodecBench.run(20_000));
         }

@@ -1,0 +1,106 @@
+package robosim.bench;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import robosim.env.core.Simulation;
+import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.env.world.World;
+import robosim.env.world.WorldReader;
+import robosim.examples.goldfinder.GoldFinder;
+import robosim.examples.goldfinder.Maze;
+import robosim.examples.goldfinder.MazeWorldWriter;
+
+/**
+ * Does cooperation pay? Steps until the gold is found, for teams of several sizes, over the same
+ * generated mazes; the Environment in this JVM, the robots as threads of it, over TCP.
+ */
+public final class GoldFinderBench {
+    private GoldFinderBench() {
+    }
+
+    /** The steps each maze took one team size (−1: not found within the limit). */
+    public record Result(int robots, long[] steps) {
+        /** @return the mean over the mazes where the gold was found */
+        public double mean() {
+            return Arrays.stream(steps).filter(s -> s >= 0).average().orElse(Double.NaN);
+        }
+
+        /** @return the median over the mazes where the gold was found */
+        public double median() {
+            long[] f = Arrays.stream(steps).filter(s -> s >= 0).sorted().toArray();
+            return f.length == 0 ? Double.NaN : f[f.length / 2];
+        }
+
+        /** @return the mazes where the gold was found */
+        public long found() {
+            return Arrays.stream(steps).filter(s -> s >= 0).count();
+        }
+    }
+
+    /**
+     * @param teams     team sizes to compare
+     * @param mazes     mazes (seeds 1..mazes)
+     * @param size      cells across and up
+     * @param maxSteps  the step limit of a run
+     * @param dir       where the mazes are written
+     * @param robotFile the p3dx parameter file
+     * @return one result per team size
+     * @throws IOException          if a maze cannot be written
+     * @throws InterruptedException if interrupted
+     */
+    public static List<Result> run(List<Integer> teams, int mazes, int size, long maxSteps, Path dir, Path robotFile)
+            throws IOException, InterruptedException {
+        Files.createDirectories(dir);
+        int most = teams.stream().mapToInt(Integer::intValue).max().orElse(1);
+        Result[] out = new Result[teams.size()];
+        for (int t = 0; t < teams.size(); t++) {
+            out[t] = new Result(teams.get(t), new long[mazes]);
+        }
+        for (int seed = 1; seed <= mazes; seed++) {
+            Path file = dir.resolve("maze-" + size + "-" + seed + ".xml");
+            Files.writeString(file, MazeWorldWriter.write(Maze.generate(size, size, seed), "maze-" + seed, 1500,
+                    most, robotFile.toAbsolutePath().toString()), StandardCharsets.UTF_8);
+            World world = WorldReader.read(file);
+            for (int t = 0; t < teams.size(); t++) {
+                out[t].steps()[seed - 1] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps);
+            }
+        }
+        return List.of(out);
+    }
+
+    private static long steps(World world, long seed, long maxSteps) throws IOException, InterruptedException {
+        try (EnvironmentServer server = new EnvironmentServer(new Simulation(world, seed),
+                ServerOptions.loopback().withMaxSteps(maxSteps))) {
+            server.bind();
+            List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), world.robots().size(), 1500, seed);
+            RunReport report = server.run();
+            for (Thread t : team) {
+                t.join(10_000);
+            }
+            return report.find() == null ? -1 : report.find().step();
+        }
+    }
+
+    /**
+     * @param out     where
+     * @param results the figures
+     * @param maxSteps the step limit of each run
+     */
+    public static void print(PrintWriter out, List<Result> results, long maxSteps) {
+        double alone = results.get(0).mean();
+        for (Result r : results) {
+            out.printf(Locale.ROOT, "goldfinder: %d robot(s): found in %d of %d mazes within %d steps; mean %.0f steps, median %.0f; %.2fx the first team's mean; per maze %s%n",
+                    r.robots(), r.found(), r.steps().length, maxSteps, r.mean(), r.median(), r.mean() / alone,
+                    Arrays.toString(r.steps()));
+        }
+        out.flush();
+    }
+}
