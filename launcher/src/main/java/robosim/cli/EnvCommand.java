@@ -104,6 +104,9 @@ final class EnvCommand implements Callable<Integer> {
     static void printReport(PrintWriter out, RunReport report) {
         out.printf(Locale.ROOT, "Run ended after %d steps (%.1f s simulated): %s%n", report.steps(),
                 report.timeMs() / 1000.0, report.endReason());
+        if (report.find() != null) {
+            out.printf(Locale.ROOT, "Gold found by %s at step %d%n", report.find().robot(), report.find().step());
+        }
         for (RobotSummary r : report.robots()) {
             out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d%n",
                     r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions());
