@@ -59,6 +59,31 @@ public final class BodyShape {
         return new BodyShape(xs, ys);
     }
 
+    /**
+     * A round body: a polygon of {@code sides} around a circle of {@code radius}, its faces
+     * touching the circle, with faces (not corners) straight ahead, behind and to the sides, so the
+     * body reaches exactly {@code radius} in those directions and at most {@code radius / cos(π/sides)}.
+     *
+     * @param radius mm, greater than 0
+     * @param sides  a multiple of 4, at least 8
+     * @return the body
+     */
+    public static BodyShape disc(double radius, int sides) {
+        positive("radius", radius);
+        if (sides < 8 || sides % 4 != 0) {
+            throw new IllegalArgumentException(sides + " was supplied for sides: sides must be a multiple of 4, at least 8");
+        }
+        double corner = radius / Math.cos(Math.PI / sides);
+        double[] xs = new double[sides];
+        double[] ys = new double[sides];
+        for (int i = 0; i < sides; i++) {
+            double a = Math.PI / sides + 2 * Math.PI * i / sides;
+            xs[i] = corner * Math.cos(a);
+            ys[i] = corner * Math.sin(a);
+        }
+        return new BodyShape(xs, ys);
+    }
+
     private static void positive(String name, double value) {
         if (!(value > 0) || !Double.isFinite(value)) {
             throw new IllegalArgumentException(value + " was supplied for " + name + ": " + name + " must be greater than 0");

@@ -12,6 +12,7 @@ import org.locationtech.jts.geom.Polygon;
 import org.locationtech.jts.geom.prep.PreparedGeometry;
 import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
 import org.locationtech.jts.index.strtree.STRtree;
+import org.locationtech.jts.operation.distance.DistanceOp;
 
 /**
  * The world as JTS geometry: static obstacles behind spatial indexes, and the bodies of the robots,
@@ -267,6 +268,40 @@ public final class GeometryClient {
             }
         }
         return best;
+    }
+
+    /**
+     * Where a body touches something: for every obstacle or other body within {@code tolerance}
+     * of it, the direction from the body's centre to the nearest point of that obstacle.
+     *
+     * @param id        the body
+     * @param tolerance how near counts as touching, mm
+     * @return world directions in radians, one per touching obstacle or body
+     */
+    public List<Double> contacts(int id, double tolerance) {
+        Body body = bodies.get(id);
+        Envelope env = new Envelope(body.envelope);
+        env.expandBy(tolerance);
+        List<Double> out = new ArrayList<>();
+        for (Object o : obstacleIndex.query(env)) {
+            Geometry g = ((PreparedGeometry) o).getGeometry();
+            addContact(body, g, tolerance, out);
+        }
+        for (int i = 0; i < bodies.size(); i++) {
+            Body other = bodies.get(i);
+            if (i != id && other.envelope.intersects(env)) {
+                addContact(body, other.polygon, tolerance, out);
+            }
+        }
+        return out;
+    }
+
+    private static void addContact(Body body, Geometry other, double tolerance, List<Double> out) {
+        if (body.polygon.isWithinDistance(other, tolerance)) {
+            Coordinate[] nearest = DistanceOp.nearestPoints(body.polygon, other);
+            Coordinate p = nearest[1];
+            out.add(Math.atan2(p.y - body.pose.y(), p.x - body.pose.x()));
+        }
     }
 
     /**

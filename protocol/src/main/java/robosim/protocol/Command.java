@@ -26,6 +26,8 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.LeaveGroup.class, name = "leave"),
         @JsonSubTypes.Type(value = Command.ReportFound.class, name = "found"),
         @JsonSubTypes.Type(value = Command.Say.class, name = "say"),
+        @JsonSubTypes.Type(value = Command.MoveWheels.class, name = "moveWheels"),
+        @JsonSubTypes.Type(value = Command.SetAccel.class, name = "accel"),
 })
 public sealed interface Command {
     /** @param vel translational velocity, mm/s */
@@ -116,4 +118,20 @@ public sealed interface Command {
 
     /** @param text text the robot says: shown by viewers, kept in recordings and the log */
     record Say(String text) implements Command { }
+
+    /**
+     * Moves each wheel by a distance (the Nomad's {@code pr}): both wheels start and finish together.
+     *
+     * @param left  mm for the left wheel, negative backwards
+     * @param right mm for the right wheel
+     */
+    record MoveWheels(double left, double right) implements Command { }
+
+    /**
+     * Sets the accelerations, within nothing but being positive (the Nomad's {@code ac}).
+     *
+     * @param trans translational acceleration and deceleration, mm/s²
+     * @param rot   rotational acceleration and deceleration, deg/s²
+     */
+    record SetAccel(double trans, double rot) implements Command { }
 }

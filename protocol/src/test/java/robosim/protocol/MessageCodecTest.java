@@ -202,7 +202,9 @@ class MessageCodecTest {
                 + "{\"cmd\":\"join\",\"group\":\"explorers\"},"
                 + "{\"cmd\":\"leave\",\"group\":\"explorers\"},"
                 + "{\"cmd\":\"found\",\"object\":\"gold\"},"
-                + "{\"cmd\":\"say\",\"text\":\"found it\"}]}", json);
+                + "{\"cmd\":\"say\",\"text\":\"found it\"},"
+                + "{\"cmd\":\"moveWheels\",\"left\":-120.5,\"right\":300.0},"
+                + "{\"cmd\":\"accel\",\"trans\":250.0,\"rot\":60.0}]}", json);
     }
 
     @Test

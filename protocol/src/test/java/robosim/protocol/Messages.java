@@ -40,7 +40,7 @@ final class Messages {
                 new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400, 4301, 650, 640},
                 3, new int[] {8000, 7999, 1234, 20}, new HeatReading(12.5, -30.25, 2200),
                 List.of(new MessageDelivery("robot2", Command.Addressing.GROUP, "explorers", "text", "hello ✓", 40, 7)),
-                List.of("message 3 is addressed to 'nobody', but there is no robot of that name"));
+                List.of("message 3 is addressed to 'nobody', but there is no robot of that name"), 0b100001);
     }
 
     static RobotHello robotHello() {
@@ -74,7 +74,9 @@ final class Messages {
                 new Command.JoinGroup("explorers"),
                 new Command.LeaveGroup("explorers"),
                 new Command.ReportFound("gold"),
-                new Command.Say("found it")));
+                new Command.Say("found it"),
+                new Command.MoveWheels(-120.5, 300),
+                new Command.SetAccel(250, 60)));
     }
 
     static ViewerHello viewerHello() {

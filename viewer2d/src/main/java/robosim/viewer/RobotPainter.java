@@ -116,7 +116,7 @@ final class RobotPainter {
     }
 
     private static boolean hasRectangle(RobotParameters p) {
-        return p != null && p.robotWidth() > 0 && p.robotLengthFront() + p.robotLengthRear() > 0;
+        return p != null && !p.isRound() && p.robotWidth() > 0 && p.robotLengthFront() + p.robotLengthRear() > 0;
     }
 
     /** The enclosing radius from the parameters, or a fallback when they do not give one. */

@@ -28,6 +28,10 @@ public final class CommandRules {
             return finite("heading", h.heading());
         } else if (c instanceof Command.SetDeltaHeading h) {
             return finite("delta", h.delta());
+        } else if (c instanceof Command.MoveWheels m) {
+            return first(finite("left", m.left()), finite("right", m.right()));
+        } else if (c instanceof Command.SetAccel a) {
+            return first(positive("trans accel", a.trans()), positive("rot accel", a.rot()));
         } else if (c instanceof Command.SetMaxTransVel v) {
             return finite("maxVel", v.vel());
         } else if (c instanceof Command.SetMaxRotVel v) {

@@ -19,7 +19,7 @@ final class DriveController {
     /** A heading is held when within this, degrees. */
     static final double HEADING_DONE = 0.05;
 
-    private enum Trans { VEL, MOVE, VEL2 }
+    private enum Trans { VEL, MOVE, VEL2, WHEEL_MOVE }
 
     private enum Rot { VEL, HEADING, WHEELS }
 
@@ -37,11 +37,21 @@ final class DriveController {
     private double moveDistance;
     private double heading;
     private boolean stopNow;
+    private double leftToGo;
+    private double rightToGo;
+    private double transAccel;
+    private double transDecel;
+    private double rotAccel;
+    private double rotDecel;
 
     DriveController(RobotParameters params) {
         this.params = params;
         this.maxVel = params.maxVelocity();
         this.maxRotVel = params.maxRVelocity();
+        this.transAccel = params.transAccel();
+        this.transDecel = params.transDecel();
+        this.rotAccel = params.rotAccel();
+        this.rotDecel = params.rotDecel();
     }
 
     /** Applies one command; the pose is the robot's pose as the command arrives. */
@@ -75,6 +85,16 @@ final class DriveController {
             rot = Rot.VEL;
             transVel = 0;
             rotVel = 0;
+        } else if (command instanceof Command.MoveWheels c) {
+            trans = Trans.WHEEL_MOVE;
+            rot = Rot.WHEELS;
+            leftToGo = c.left();
+            rightToGo = c.right();
+        } else if (command instanceof Command.SetAccel c) {
+            transAccel = c.trans();
+            transDecel = c.trans();
+            rotAccel = c.rot();
+            rotDecel = c.rot();
         } else if (command instanceof Command.SetMaxTransVel c) {
             maxVel = Math.max(0, Math.min(c.vel(), params.maxVelocity()));
         } else if (command instanceof Command.SetMaxRotVel c) {
@@ -90,7 +110,10 @@ final class DriveController {
 
     /** Leaving wheel-velocity mode for rotation: translation keeps the wheels' mean speed. */
     private void releaseTranslation() {
-        if (trans == Trans.VEL2) {
+        if (trans == Trans.WHEEL_MOVE) {
+            trans = Trans.VEL;
+            transVel = 0;
+        } else if (trans == Trans.VEL2) {
             trans = Trans.VEL;
             transVel = (left + right) / 2;
         }
@@ -120,6 +143,7 @@ final class DriveController {
         double v = switch (trans) {
             case VEL -> transVel;
             case VEL2 -> (left + right) / 2;
+            case WHEEL_MOVE -> planWheels(dt);
             case MOVE -> {
                 double toGo = Math.abs(moveDistance) - Math.hypot(x - moveStartX, y - moveStartY);
                 if (toGo < MOVE_DONE) {
@@ -134,11 +158,64 @@ final class DriveController {
         return clamp(v, maxVel);
     }
 
+    /**
+     * Sets this step's wheel speeds for a wheel move: the wheel with farther to go follows the move
+     * profile, the other keeps the same proportion, so both finish together.
+     *
+     * @return the translational velocity wanted, mm/s
+     */
+    private double planWheels(double dt) {
+        double far = Math.max(Math.abs(leftToGo), Math.abs(rightToGo));
+        if (far < MOVE_DONE) {
+            trans = Trans.VEL;
+            transVel = 0;
+            rot = Rot.VEL;
+            rotVel = 0;
+            left = 0;
+            right = 0;
+            return 0;
+        }
+        double speed = Math.min(Math.min(maxVel, Math.sqrt(2 * MOVE_PROFILE_DECEL * far)), far / dt);
+        left = speed * leftToGo / far;
+        right = speed * rightToGo / far;
+        return (left + right) / 2;
+    }
+
+    /**
+     * Tells a wheel move how far the wheels actually went this step (less than planned when the
+     * accelerations or a collision held the robot back).
+     *
+     * @param leftMm  the left wheel's travel
+     * @param rightMm the right wheel's travel
+     */
+    void travelled(double leftMm, double rightMm) {
+        if (trans == Trans.WHEEL_MOVE) {
+            leftToGo -= leftMm;
+            rightToGo -= rightMm;
+        }
+    }
+
+    double transAccel() {
+        return transAccel;
+    }
+
+    double transDecel() {
+        return transDecel;
+    }
+
+    double rotAccel() {
+        return rotAccel;
+    }
+
+    double rotDecel() {
+        return rotDecel;
+    }
+
     /** The rotational velocity wanted now, deg/s. */
     double wantedRotVel(double th, double dt, double rotDecel) {
         double w = switch (rot) {
             case VEL -> rotVel;
-            case WHEELS -> Math.toDegrees((right - left) * params.diffConvFactor());
+            case WHEELS -> Math.toDegrees((right - left) / 2 * params.diffConvFactor());
             case HEADING -> {
                 double err = Angles.fix(heading - th);
                 if (Math.abs(err) < HEADING_DONE) {

@@ -32,6 +32,7 @@ final class SimRobot {
     private boolean stalled;
     private int collisions;
     private double distance;
+    private int bumpers;
     private final Sensors sensors;
     private final Odometry odometry;
     boolean connected;
@@ -53,7 +54,7 @@ final class SimRobot {
 
     /** The body shape a robot's parameters describe. */
     static BodyShape bodyOf(RobotParameters p) {
-        return BodyShape.rectangle(p.robotLengthFront(), p.robotLengthRear(), p.robotWidth());
+        return robosim.env.world.RobotSpec.bodyOf(p);
     }
 
     void apply(List<Command> commands) {
@@ -72,10 +73,11 @@ final class SimRobot {
         }
         // the controller steers by odometry, as a robot's firmware does
         double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt);
-        double wantW = drive.wantedRotVel(odometry.th(), dt, params.rotDecel());
-        vel = approach(vel, wantV, params.transAccel(), params.transDecel(), dt);
-        rotVel = approach(rotVel, wantW, params.rotAccel(), params.rotDecel(), dt);
+        double wantW = drive.wantedRotVel(odometry.th(), dt, drive.rotDecel());
+        vel = approach(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
+        rotVel = approach(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
         if (vel == 0 && rotVel == 0) {
+            bumpers = bumpers(geometry);
             return;
         }
         SweepResult r = geometry.sweep(bodyId, vel * dt, Math.toRadians(rotVel) * dt);
@@ -86,6 +88,8 @@ final class SimRobot {
         th = Angles.fix(Math.toDegrees(p.th()));
         geometry.moveBody(bodyId, pose());
         odometry.travel(vel * dt * r.fraction(), Math.toRadians(rotVel) * dt * r.fraction(), x, y, th);
+        double half = Math.toRadians(rotVel) / params.diffConvFactor() * dt * r.fraction();
+        drive.travelled(vel * dt * r.fraction() - half, vel * dt * r.fraction() + half);
         if (r.blocked()) {
             if (!stalled) {
                 collisions++;
@@ -96,6 +100,21 @@ final class SimRobot {
         } else {
             stalled = false;
         }
+        bumpers = bumpers(geometry);
+    }
+
+    /** A body this near something touches it, mm. */
+    static final double CONTACT_TOLERANCE = 1.0;
+
+    /** The bumper ring: bit i for contact in 60° sector i, sector 0 centred dead ahead. */
+    private int bumpers(GeometryClient geometry) {
+        int bits = 0;
+        for (double a : geometry.contacts(bodyId, CONTACT_TOLERANCE)) {
+            double relative = Angles.fix(Math.toDegrees(a) - th);
+            int sector = Math.floorMod((int) Math.floor((relative + 30) / 60), RobotState.BUMPER_SECTORS);
+            bits |= 1 << sector;
+        }
+        return bits;
     }
 
     /**
@@ -118,10 +137,10 @@ final class SimRobot {
     }
 
     RobotState state(long step, long timeMs, List<MessageDelivery> messages, List<String> errors) {
-        double diff = Math.toRadians(rotVel) / params.diffConvFactor() / 2;
+        double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors);
+                messages, errors, bumpers);
     }
 
     double x() {

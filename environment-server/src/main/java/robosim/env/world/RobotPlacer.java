@@ -24,7 +24,7 @@ import robosim.protocol.params.RobotParametersReader;
  */
 final class RobotPlacer {
     /** The robot types a world may name; {@code scout} is reserved for the Scout API. */
-    static final List<String> TYPES = List.of("pioneer");
+    static final List<String> TYPES = List.of("pioneer", "scout");
 
     private final Attributes attributes;
     private final double width;

@@ -23,9 +23,25 @@ public record RobotSpec(String name, String type, double x, double y, double th,
 
     /** @return the robot's body: the rectangle its parameter file gives */
     public BodyShape body() {
-        return BodyShape.rectangle(parameters.robotLengthFront(), parameters.robotLengthRear(),
-                parameters.robotWidth());
+        return bodyOf(parameters);
     }
+
+    /**
+     * The body a robot's parameters describe: a rectangle (length front and rear, width), or for a
+     * round robot a 24-sided polygon whose sides touch the circle of its radius.
+     *
+     * @param p the robot's parameters
+     * @return its body
+     */
+    public static BodyShape bodyOf(robosim.protocol.params.RobotParameters p) {
+        if (p.isRound()) {
+            return BodyShape.disc(p.robotRadius(), ROUND_SIDES);
+        }
+        return BodyShape.rectangle(p.robotLengthFront(), p.robotLengthRear(), p.robotWidth());
+    }
+
+    /** The sides of the polygon a round body is simulated as. */
+    public static final int ROUND_SIDES = 24;
 
     /** @return the start pose, with the heading in radians as {@link Pose2D} has it */
     public Pose2D pose() {

@@ -80,8 +80,8 @@ class KinematicsTest {
         assertEquals(5000, s.x(), 1e-6);
         assertEquals(5000, s.y(), 1e-6);
         assertTrue(s.th() > 5, "turned counter-clockwise: " + s.th());
-        double expected = Math.toDegrees(200 * 0.0056);
-        assertEquals(expected, s.rotVel(), 1e-6, "(right - left) x DiffConvFactor");
+        double expected = Math.toDegrees(200 / 2.0 * 0.0056);
+        assertEquals(expected, s.rotVel(), 1e-6, "ARIA: (right - left) / 2 x DiffConvFactor");
     }
 
     @Test

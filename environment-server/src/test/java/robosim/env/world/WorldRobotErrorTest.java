@@ -73,8 +73,8 @@ class WorldRobotErrorTest {
 
     @Test
     void unknownRobotType() {
-        fixtures.fails("type.xml", world(robot("r2", "scout", 4000, 4000, "../robots/p3dx.p")), 4,
-                "robot 'r2' has unknown type 'scout'", "pioneer");
+        fixtures.fails("type.xml", world(robot("r2", "khepera", 4000, 4000, "../robots/p3dx.p")), 4,
+                "robot 'r2' has unknown type 'khepera'", "pioneer, scout");
     }
 
     @Test

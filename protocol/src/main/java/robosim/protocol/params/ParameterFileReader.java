@@ -76,6 +76,7 @@ public final class ParameterFileReader {
                 case "section" -> laterLaser = LATER_LASER.matcher(line).matches();
                 case "class" -> rules.robotClass(value(file, lineNo, words));
                 case "subclass" -> rules.subclass(value(file, lineNo, words));
+                case "robotshape" -> rules.shape(value(file, lineNo, words), lineNo);
                 case "sonarnum" -> rules.sonarNum(value(file, lineNo, words), lineNo);
                 case "sonarunit" -> {
                     if (words.length != 5) {

@@ -64,6 +64,7 @@ final class ParameterRules {
     private final Map<String, Double> numbers = new HashMap<>();
     private String robotClass = "Pioneer";
     private String subclass;
+    private String shape = RobotParameters.RECTANGLE;
     private Integer sonarNum;
     private int sonarNumLine;
     private final Map<Integer, SonarUnit> sonars = new TreeMap<>();
@@ -99,6 +100,15 @@ final class ParameterRules {
 
     void subclass(String value) {
         subclass = value;
+    }
+
+    /** Sets the body's shape: {@code rectangle} or {@code round}. */
+    void shape(String value, int line) {
+        String v = value.toLowerCase(java.util.Locale.ROOT);
+        if (!v.equals(RobotParameters.RECTANGLE) && !v.equals(RobotParameters.ROUND)) {
+            throw error(line, "RobotShape '" + value + "' must be rectangle or round");
+        }
+        shape = v;
     }
 
     /**
@@ -208,7 +218,7 @@ final class ParameterRules {
                 numbers.get("diffconvfactor"), numbers.get("sonarmaxrange"),
                 List.copyOf(sonars.values()),
                 numbers.get("laserx"), numbers.get("lasery"), numbers.get("laserth"),
-                laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange);
+                laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange, shape);
     }
 
     private double parse(String what, String text, int line) {

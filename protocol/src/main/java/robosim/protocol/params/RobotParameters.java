@@ -1,5 +1,6 @@
 package robosim.protocol.params;
 
+import com.fasterxml.jackson.annotation.JsonIgnore;
 import java.util.List;
 
 /**
@@ -21,13 +22,15 @@ import java.util.List;
  * @param transDecel       translational deceleration
  * @param rotAccel         rotational acceleration
  * @param rotDecel         rotational deceleration
- * @param diffConvFactor   rad/s of rotation per mm/s of wheel-speed difference (right − left)
+ * @param diffConvFactor   ARIA's factor: the rotation is (right − left) / 2 · diffConvFactor rad/s
  * @param sonarMaxRange    the sonars' maximum range
  * @param sonarUnits       the sonar transducers, ordered by index
  * @param laserX           the laser's mounting position, mm forward of the centre
  * @param laserY           the laser's mounting position, mm left of the centre
  * @param laserTh          the laser's mounting heading, degrees
  * @param laserMaxRange    the laser's maximum range, mm (a SICK LMS200: 8000)
+ * @param shape            the body: {@value #RECTANGLE} (length front and rear, width) or
+ *                         {@value #ROUND} (a disc of {@code robotRadius}, as the Nomadic Scout)
  */
 public record RobotParameters(
         String robotClass,
@@ -48,14 +51,61 @@ public record RobotParameters(
         double laserX,
         double laserY,
         double laserTh,
-        double laserMaxRange) {
+        double laserMaxRange,
+        String shape) {
+
+    /** A body given by its length front and rear and its width. */
+    public static final String RECTANGLE = "rectangle";
+    /** A round body of {@code robotRadius}. */
+    public static final String ROUND = "round";
 
     /** The laser's range when a parameter file names none: a SICK LMS200's 8000 mm. */
     public static final double DEFAULT_LASER_MAX_RANGE = 8000;
 
-    /** Copies the sonar list so the record stays immutable. */
+    /** Copies the sonar list so the record stays immutable; a missing shape is a rectangle. */
     public RobotParameters {
         sonarUnits = List.copyOf(sonarUnits);
+        shape = shape == null ? RECTANGLE : shape;
+    }
+
+    /**
+     * Rectangular-bodied parameters with a laser pose.
+     *
+     * @param robotClass       the robot's class
+     * @param subclass         the robot's subclass
+     * @param robotRadius      enclosing radius
+     * @param robotWidth       body width
+     * @param robotLengthFront body extent ahead of the centre
+     * @param robotLengthRear  body extent behind the centre
+     * @param maxVelocity      maximum translational speed
+     * @param maxRVelocity     maximum rotational speed
+     * @param transAccel       translational acceleration
+     * @param transDecel       translational deceleration
+     * @param rotAccel         rotational acceleration
+     * @param rotDecel         rotational deceleration
+     * @param diffConvFactor   ARIA's wheel factor
+     * @param sonarMaxRange    the sonars' maximum range
+     * @param sonarUnits       the sonar transducers
+     * @param laserX           laser x, mm
+     * @param laserY           laser y, mm
+     * @param laserTh          laser heading, degrees
+     * @param laserMaxRange    laser range, mm
+     */
+    public RobotParameters(String robotClass, String subclass, double robotRadius, double robotWidth,
+                           double robotLengthFront, double robotLengthRear, double maxVelocity,
+                           double maxRVelocity, double transAccel, double transDecel, double rotAccel,
+                           double rotDecel, double diffConvFactor, double sonarMaxRange,
+                           List<SonarUnit> sonarUnits, double laserX, double laserY, double laserTh,
+                           double laserMaxRange) {
+        this(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear, maxVelocity,
+                maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
+                sonarUnits, laserX, laserY, laserTh, laserMaxRange, RECTANGLE);
+    }
+
+    /** @return whether the body is round */
+    @JsonIgnore
+    public boolean isRound() {
+        return ROUND.equals(shape);
     }
 
     /**
@@ -84,7 +134,7 @@ public record RobotParameters(
                            List<SonarUnit> sonarUnits) {
         this(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear, maxVelocity,
                 maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
-                sonarUnits, 0, 0, 0, DEFAULT_LASER_MAX_RANGE);
+                sonarUnits, 0, 0, 0, DEFAULT_LASER_MAX_RANGE, RECTANGLE);
     }
 
     /** @return the body length, front plus rear */
