@@ -10,7 +10,6 @@ import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
 
 /**
  * The Pioneer Robot-Object, with ARIA's {@code ArRobot} semantics (see ARIA-SEMANTICS.md): units
@@ -36,8 +35,7 @@ public class ArRobot extends AbstractRobot {
     /** ARIA's {@code isStopped} rotational threshold, deg/s. */
     public static final double STOPPED_ROT_VEL = 1;
 
-    private final List<SonarUnit> sonarUnits;
-    private final ArSensorReading[] sonarReadings;
+    private final SonarRing sonar;
     private final ReentrantLock lock = new ReentrantLock();
     private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
     private final TaskList userTasks = new TaskList("user");
@@ -69,13 +67,9 @@ public class ArRobot extends AbstractRobot {
      */
     public ArRobot(String name, String host, int port, RobotParameters parameters) {
         super(name, host, port, "pioneer", parameters);
-        this.sonarUnits = parameters.sonarUnits();
         this.maxTransVel = parameters.maxVelocity();
         this.maxRotVel = parameters.maxRVelocity();
-        this.sonarReadings = new ArSensorReading[sonarUnits.size()];
-        for (SonarUnit u : sonarUnits) {
-            sonarReadings[u.index()] = new ArSensorReading(u.x(), u.y(), u.th(), (int) parameters.sonarMaxRange());
-        }
+        this.sonar = new SonarRing(parameters.sonarUnits(), parameters.sonarMaxRange());
     }
 
     /**
@@ -105,13 +99,7 @@ public class ArRobot extends AbstractRobot {
             super.responded(response);
             counter++;
             RobotState s = response.state();
-            int[] ranges = s.sonar();
-            if (ranges.length == sonarReadings.length) {
-                ArPose pose = new ArPose(s.x(), s.y(), s.th());
-                for (int i = 0; i < ranges.length; i++) {
-                    sonarReadings[i].newData(ranges[i], pose, counter, s.timeMs());
-                }
-            }
+            sonar.update(s.sonar(), new ArPose(s.x(), s.y(), s.th()), counter, s.timeMs());
             sensorInterpTasks.runAll(getName());
             userTasks.runAll(getName());
         } finally {
@@ -467,7 +455,7 @@ public class ArRobot extends AbstractRobot {
 
     /** @return the number of sonar units in the parameter file */
     public int getNumSonar() {
-        return sonarUnits.size();
+        return sonar.size();
     }
 
     /**
@@ -476,7 +464,7 @@ public class ArRobot extends AbstractRobot {
      *         bad index
      */
     public int getSonarRange(int num) {
-        return num < 0 || num >= sonarReadings.length ? -1 : sonarReadings[num].getRange();
+        return sonar.range(num);
     }
 
     /**
@@ -484,7 +472,7 @@ public class ArRobot extends AbstractRobot {
      * @return its reading, or null for a bad index
      */
     public ArSensorReading getSonarReading(int num) {
-        return num < 0 || num >= sonarReadings.length ? null : sonarReadings[num];
+        return sonar.reading(num);
     }
 
     /**
@@ -493,8 +481,7 @@ public class ArRobot extends AbstractRobot {
      *         false for a bad index
      */
     public boolean isSonarNew(int num) {
-        return num >= 0 && num < sonarReadings.length && !sonarReadings[num].getIgnoreThisReading()
-                && sonarReadings[num].isNew(counter);
+        return sonar.isNew(num, counter);
     }
 
     /** Turns the sonars on (they are on after connecting). */
@@ -534,13 +521,6 @@ public class ArRobot extends AbstractRobot {
      *         index), or −1 if none
      */
     public int getClosestSonarNumber(double startAngle, double endAngle) {
-        int best = -1;
-        for (SonarUnit u : sonarUnits) {
-            if (ArMath.angleBetween(u.th(), startAngle, endAngle)
-                    && (best < 0 || getSonarRange(u.index()) < getSonarRange(best))) {
-                best = u.index();
-            }
-        }
-        return best;
+        return sonar.closest(startAngle, endAngle);
     }
 }

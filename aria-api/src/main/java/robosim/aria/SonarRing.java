@@ -1,0 +1,57 @@
+package robosim.aria;
+
+import java.util.List;
+import robosim.protocol.params.SonarUnit;
+
+/**
+ * A robot's sonar ring as ARIA keeps it: one {@link ArSensorReading} per transducer, updated when
+ * a cycle brings readings, and ARIA's rule for the closest sonar within an angle interval.
+ */
+final class SonarRing {
+    private final List<SonarUnit> units;
+    private final ArSensorReading[] readings;
+
+    SonarRing(List<SonarUnit> units, double maxRange) {
+        this.units = units;
+        this.readings = new ArSensorReading[units.size()];
+        for (SonarUnit u : units) {
+            readings[u.index()] = new ArSensorReading(u.x(), u.y(), u.th(), (int) maxRange);
+        }
+    }
+
+    int size() {
+        return readings.length;
+    }
+
+    /** Takes a cycle's ranges; a cycle without sonar readings (the sonars are off) changes nothing. */
+    void update(int[] ranges, ArPose pose, long counter, long timeMs) {
+        if (ranges.length == readings.length) {
+            for (int i = 0; i < ranges.length; i++) {
+                readings[i].newData(ranges[i], pose, counter, timeMs);
+            }
+        }
+    }
+
+    int range(int num) {
+        return num < 0 || num >= readings.length ? -1 : readings[num].getRange();
+    }
+
+    ArSensorReading reading(int num) {
+        return num < 0 || num >= readings.length ? null : readings[num];
+    }
+
+    boolean isNew(int num, long counter) {
+        return num >= 0 && num < readings.length && !readings[num].getIgnoreThisReading() && readings[num].isNew(counter);
+    }
+
+    /** ARIA's rule: strictly inside the wrapping interval; ties to the lowest index; −1 if none. */
+    int closest(double startAngle, double endAngle) {
+        int best = -1;
+        for (SonarUnit u : units) {
+            if (ArMath.angleBetween(u.th(), startAngle, endAngle) && (best < 0 || range(u.index()) < range(best))) {
+                best = u.index();
+            }
+        }
+        return best;
+    }
+}
