@@ -113,15 +113,22 @@ public final class StepGate {
     }
 
     /**
-     * Publishes a new step: runs {@code update} (which installs the new state) and wakes the
-     * participants whose condition now holds, atomically.
+     * Publishes a new step: waits until every participant has yielded (the first step can arrive
+     * while the robot's code still runs after connecting, and the state must not change under it),
+     * then runs {@code update} (which installs the new state) and wakes the participants whose
+     * condition now holds, atomically.
      *
      * @param newStep the step the state belongs to
      * @param newTime its simulated time, ms
      * @param update  installs the new state
      * @return true if nobody woke, so the caller must send the step's requests now
+     * @throws InterruptedException if interrupted while waiting for the participants to yield
      */
-    public synchronized boolean advance(long newStep, long newTime, Runnable update) {
+    public synchronized boolean advance(long newStep, long newTime, Runnable update) throws InterruptedException {
+        while (!closed && !allYielded()) {
+            // a participant that ends without yielding sends no notification: look again soon
+            wait(20);
+        }
         update.run();
         step = newStep;
         timeMs = newTime;
@@ -150,16 +157,17 @@ public final class StepGate {
     }
 
     private boolean claim() {
-        if (closed || unsentSince < 0) {
-            return false;
-        }
-        participants.removeIf(t -> !t.isAlive());
-        waiting.keySet().removeIf(t -> !t.isAlive());
-        if (!waiting.keySet().containsAll(participants)) {
+        if (closed || unsentSince < 0 || !allYielded()) {
             return false;
         }
         unsentSince = -1;
         return true;
+    }
+
+    private boolean allYielded() {
+        participants.removeIf(t -> !t.isAlive());
+        waiting.keySet().removeIf(t -> !t.isAlive());
+        return waiting.keySet().containsAll(participants);
     }
 
     /**

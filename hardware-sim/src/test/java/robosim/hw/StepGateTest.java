@@ -106,28 +106,47 @@ class StepGateTest {
             sentBy.set(Thread.currentThread().getName());
             sent.countDown();
         });
-        CountDownLatch joined = new CountDownLatch(2);
         CountDownLatch mayYield = new CountDownLatch(1);
-        Thread first = start("yields-at-once", () -> {
+        Thread sleeper = start("sleeps-on", () -> {
             gate.join(Thread.currentThread());
-            joined.countDown();
             gate.await(time -> false);
         });
-        start("yields-later", () -> {
+        Thread woken = start("woken-at-100", () -> {
+            gate.join(Thread.currentThread());
+            gate.await(time -> time >= 100);
+            assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
+            gate.await(time -> false);
+        });
+        awaitWaiting(sleeper);
+        awaitWaiting(woken);
+
+        assertFalse(gate.advance(1, 100, () -> { }), "one participant woke: nobody sends yet");
+        assertFalse(sent.await(150, TimeUnit.MILLISECONDS), "sent while a participant was still running");
+        mayYield.countDown();
+        assertTrue(sent.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        assertEquals("woken-at-100", sentBy.get());
+        assertFalse(gate.claimIfYielded(), "a step is sent once");
+    }
+
+    @Test
+    void aStepWaitsForCodeThatHasNotYieldedBeforeItsStateIsInstalled() throws Exception {
+        CountDownLatch joined = new CountDownLatch(1);
+        CountDownLatch mayYield = new CountDownLatch(1);
+        start("still-running", () -> {
             gate.join(Thread.currentThread());
             joined.countDown();
             assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
             gate.await(time -> false);
         });
         assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
-        awaitWaiting(first);
-
-        assertFalse(gate.advance(1, 0, () -> { }), "one participant is still running: nobody sends yet");
-        assertFalse(sent.await(150, TimeUnit.MILLISECONDS), "sent while a participant was still running");
+        AtomicReference<String> state = new AtomicReference<>("old");
+        Thread hardware = start("hardware", () -> gate.advance(1, 100, () -> state.set("new")));
+        Thread.sleep(150);
+        assertEquals("old", state.get(), "the state must not change while the robot's code runs");
+        assertTrue(hardware.isAlive());
         mayYield.countDown();
-        assertTrue(sent.await(WAIT_MS, TimeUnit.MILLISECONDS));
-        assertEquals("yields-later", sentBy.get());
-        assertFalse(gate.claimIfYielded(), "a step is sent once");
+        hardware.join(WAIT_MS);
+        assertEquals("new", state.get());
     }
 
     @Test

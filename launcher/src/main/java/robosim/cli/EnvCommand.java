@@ -18,6 +18,7 @@ import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
 import robosim.env.world.WorldFileException;
 import robosim.env.world.WorldReader;
+import robosim.protocol.recording.RecordingWriter;
 
 /** {@code robosim env}: loads a world, waits for its robots, runs the lockstep steps. */
 @Command(name = "env", mixinStandardHelpOptions = true,
@@ -53,6 +54,12 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--connect-timeout", defaultValue = "600", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
     long connectTimeoutS;
 
+    @Option(names = "--record", paramLabel = "FILE", description = "record every step to FILE (see robosim replay)")
+    Path record;
+
+    @Option(names = "--record-sensors", description = "keep the sonar and laser readings in the recording")
+    boolean recordSensors;
+
     @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
@@ -84,6 +91,16 @@ final class EnvCommand implements Callable<Integer> {
                         + e.getMessage());
                 return 1;
             }
+            RecordingWriter recorder = null;
+            if (record != null) {
+                try {
+                    recorder = RecordingWriter.create(record, recordSensors);
+                } catch (IOException e) {
+                    err.println("robosim env: cannot create recording " + record + ": " + e.getMessage());
+                    return 1;
+                }
+                server.addFrameListener(recorder);
+            }
             out.printf(Locale.ROOT, "Seed: %d%n", seed);
             out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,
                     server.robotPort(), bind, server.viewerPort());
@@ -97,6 +114,9 @@ final class EnvCommand implements Callable<Integer> {
                 return 1;
             }
             printReport(out, report);
+            if (recorder != null) {
+                return Recordings.report(out, err, "env", record, recorder);
+            }
         }
         return 0;
     }

@@ -1,15 +1,38 @@
 package robosim.cli;
 
+import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.RecordingWriter;
+import robosim.viewer.PngFrameWriter;
+import robosim.viewer.RenderedFrames;
+import robosim.viewer.ViewerClient;
+import robosim.viewer.ViewerException;
+import robosim.viewer.ViewerOptions;
+import robosim.viewer.ViewerSummary;
+import robosim.viewer.window.LiveFeed;
+import robosim.viewer.window.ViewModel;
+import robosim.viewer.window.ViewState;
+import robosim.viewer.window.ViewerPane;
+import robosim.viewer.window.ViewerWindow;
 
-/** {@code robosim viewer}: attaches to a running Environment and writes PNG frames. */
+/** {@code robosim viewer}: attaches to a running Environment; writes PNG frames, records, or shows a window. */
 @Command(name = "viewer", mixinStandardHelpOptions = true,
-        description = "Attach to a running Environment and write its frames as PNG files.")
+        description = "Attach to a running Environment: write its frames as PNG files (--png-dir), record the run (--record), show it in a window (--window), or all at once.")
 final class ViewerCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -20,23 +43,117 @@ final class ViewerCommand implements Callable<Integer> {
     @Option(names = "--port", defaultValue = "3000", description = "the Environment's viewer port; default ${DEFAULT-VALUE}")
     int port;
 
-    @Option(names = "--png-dir", required = true, paramLabel = "DIR", description = "where to write frame-NNNNNN.png")
+    @Option(names = "--png-dir", paramLabel = "DIR", description = "where to write frame-NNNNNN.png")
     Path pngDir;
 
     @Option(names = "--every", defaultValue = "1", paramLabel = "K", description = "write every K-th step; default ${DEFAULT-VALUE}")
     int every;
 
-    @Option(names = "--width", defaultValue = "800", paramLabel = "PX", description = "frame width in pixels; default ${DEFAULT-VALUE}")
-    int width;
+    @Option(names = "--record", paramLabel = "FILE", description = "record every step to FILE (see robosim replay)")
+    Path record;
 
-    @Option(names = "--sonar", description = "draw the sonar rays")
-    boolean sonar;
+    @Option(names = "--record-sensors", description = "keep the sonar and laser readings in the recording")
+    boolean recordSensors;
 
-    @Option(names = "--no-names", description = "do not label the robots")
-    boolean noNames;
+    @Option(names = "--window", description = "show the run in a window: wheel zooms, drag pans (turns the camera in 3D)")
+    boolean window;
+
+    @Mixin
+    DrawingOptions drawing;
 
     @Override
-    public Integer call() {
-        return Viewers.run(spec, host, port, pngDir, every, width, sonar, !noNames);
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (pngDir == null && record == null && !window) {
+            throw new ParameterException(spec.commandLine(),
+                    "Missing required option: at least one of '--png-dir=DIR', '--record=FILE' or '--window'");
+        }
+        List<FrameListener> listeners = new ArrayList<>();
+        ViewerOptions options;
+        try {
+            drawing.validate();
+            options = ViewerOptions.of(host, port).withName(name()).withEvery(every).withRender(drawing.render())
+                    .withReadTimeout(Duration.ofMinutes(10));
+        } catch (IllegalArgumentException e) {
+            err.println("robosim viewer: " + e.getMessage());
+            return 2;
+        }
+        if (window) {
+            // before anything graphical: the first AWT class loaded fixes whether Java runs headless
+            String why = Windows.prepare();
+            if (why != null) {
+                err.println("robosim viewer: " + why);
+                return 1;
+            }
+        }
+        if (pngDir != null) {
+            listeners.add(new RenderedFrames(drawing.painter(), new PngFrameWriter(pngDir), every, drawing.trails));
+        }
+        RecordingWriter recorder = null;
+        if (record != null) {
+            try {
+                recorder = RecordingWriter.create(record, recordSensors);
+            } catch (IOException e) {
+                err.println("robosim viewer: cannot create recording " + record + ": " + e.getMessage());
+                return 1;
+            }
+            listeners.add(recorder);
+        }
+        ViewModel model = new ViewModel();
+        if (window) {
+            listeners.add(new LiveFeed(model));
+        }
+        ViewerClient client = new ViewerClient(options, listeners);
+        ViewerSummary s;
+        try {
+            s = window ? runWithWindow(client, model) : client.run();
+        } catch (ViewerException | IllegalStateException e) {
+            err.println("robosim viewer: " + e.getMessage());
+            return 1;
+        }
+        if (pngDir != null) {
+            out.printf(Locale.ROOT, "Viewer: world %s, %d frames received, %d PNG frames written to %s (%s)%n",
+                    s.world(), s.framesReceived(), s.framesWritten(), pngDir.toAbsolutePath(), s.endReason());
+        } else {
+            out.printf(Locale.ROOT, "Viewer: world %s, %d frames received (%s)%n", s.world(), s.framesReceived(),
+                    s.endReason());
+        }
+        out.flush();
+        return recorder == null ? 0 : Recordings.report(out, err, "viewer", record, recorder);
+    }
+
+    private String name() {
+        return window ? "window" : pngDir != null ? "png:" + pngDir.getFileName() : "recorder";
+    }
+
+    /** Shows the window, runs the client beside it, and stops the client when the window closes. */
+    private ViewerSummary runWithWindow(ViewerClient client, ViewModel model) throws Exception {
+        ViewState state = drawing.windowState();
+        model.source("live from " + client.options().peer());
+        ViewerWindow w = Windows.open("RoboSim viewer - " + client.options().peer(), () -> new ViewerPane(model, state));
+        CompletableFuture<ViewerSummary> run = CompletableFuture.supplyAsync(() -> {
+            try {
+                return client.run();
+            } catch (ViewerException e) {
+                throw new CompletionException(e);
+            }
+        });
+        run.whenComplete((summary, failure) -> {
+            if (failure != null) {
+                Throwable cause = failure.getCause() == null ? failure : failure.getCause();
+                javax.swing.SwingUtilities.invokeLater(() -> model.ended(cause.getMessage()));
+            }
+        });
+        w.awaitClosed();
+        client.stop();
+        try {
+            return run.join();
+        } catch (CompletionException e) {
+            if (e.getCause() instanceof ViewerException v) {
+                throw v;
+            }
+            throw e;
+        }
     }
 }

@@ -262,7 +262,7 @@ public final class WorldRenderer {
      * Writes a caption on a translucent box in the top left corner, as frames carry it, so that
      * views drawn elsewhere (the 3D view, a window) label their frames alike.
      *
-     * @param g          where to draw
+     * @param target     where to draw; its settings are left as they were
      * @param imageWidth the width of the image, which sets the font size
      * @param text       the caption
      */

@@ -1,0 +1,61 @@
+package robosim.cli;
+
+import java.awt.AWTError;
+import java.awt.HeadlessException;
+import java.util.Locale;
+import javax.swing.SwingUtilities;
+import robosim.viewer.window.ViewerPane;
+import robosim.viewer.window.ViewerWindow;
+
+/** Opens the viewer's window for the commands that offer {@code --window}. */
+final class Windows {
+    private Windows() {
+    }
+
+    /** A pane built on the Swing event thread. */
+    @FunctionalInterface
+    interface PaneMaker {
+        ViewerPane make();
+    }
+
+    /**
+     * Turns off headless mode (the launcher starts Java headless) when a display is there; must be
+     * called before anything graphical.
+     *
+     * @return null if a window can be opened, or why not
+     */
+    static String prepare() {
+        String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
+        boolean x11 = !os.contains("win") && !os.contains("mac");
+        if (x11 && isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))) {
+            return "--window needs a display, and DISPLAY is not set (draw PNG files with --png-dir instead)";
+        }
+        System.setProperty("java.awt.headless", "false");
+        return null;
+    }
+
+    private static boolean isBlank(String s) {
+        return s == null || s.isBlank();
+    }
+
+    /**
+     * Builds the pane on the event thread and opens it in a window.
+     *
+     * @param title the window's title
+     * @param maker builds the pane
+     * @return the window
+     * @throws IllegalStateException with the reason if no window can be opened
+     * @throws InterruptedException  if interrupted
+     */
+    static ViewerWindow open(String title, PaneMaker maker) throws InterruptedException {
+        try {
+            ViewerPane[] pane = new ViewerPane[1];
+            SwingUtilities.invokeAndWait(() -> pane[0] = maker.make());
+            return ViewerWindow.open(title, pane[0]);
+        } catch (HeadlessException | AWTError e) {
+            throw new IllegalStateException("cannot open a window: " + e.getMessage(), e);
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            throw new IllegalStateException("cannot build the window: " + e.getCause(), e.getCause());
+        }
+    }
+}

@@ -1,0 +1,96 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.env.net.RunReport;
+import robosim.protocol.recording.RecordingReader;
+import robosim.protocol.recording.RecordingWriter;
+import robosim.viewer.FramePainter;
+import robosim.viewer.PngFrameWriter;
+import robosim.viewer.RenderedFrames;
+import robosim.viewer.WorldRenderer;
+import robosim.viewer.replay.Replay;
+import robosim.viewer.replay.ReplayRange;
+
+/**
+ * A run recorded and replayed: the replay draws what the live viewer drew, pixel for pixel, and the
+ * same deterministic run recorded twice gives the same bytes.
+ */
+@Timeout(value = 4, unit = TimeUnit.MINUTES)
+class RecordReplayTest {
+    private static final int STEPS = 60;
+
+    @TempDir
+    Path dir;
+
+    private static int[] pixels(Path png) throws IOException {
+        BufferedImage image = ImageIO.read(png.toFile());
+        return image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth());
+    }
+
+    private static Replay.Result replay(Path recording, Path pngDir) throws IOException {
+        RenderedFrames out = new RenderedFrames(FramePainter.flat(new WorldRenderer(), RecordedRun.RENDER),
+                new PngFrameWriter(pngDir), 1, false);
+        try (RecordingReader reader = RecordingReader.open(recording)) {
+            return Replay.run(reader, out, ReplayRange.ALL);
+        }
+    }
+
+    @Test
+    void replayedFramesEqualTheLiveViewersPixelForPixel() throws Exception {
+        Path live = dir.resolve("live");
+        Path envRecording = dir.resolve("env.rsr");
+        Path viewerRecording = dir.resolve("viewer.rsr");
+        RunReport report = RecordedRun.run(STEPS, envRecording, List.of(
+                new RenderedFrames(FramePainter.flat(new WorldRenderer(), RecordedRun.RENDER), new PngFrameWriter(live), 1, false),
+                RecordingWriter.create(viewerRecording, true)));
+        assertTrue(report.robots().get(0).distance() > 500, "r1 drove: " + report.robots().get(0));
+        Replay.Result fromEnv = replay(envRecording, dir.resolve("from-env"));
+        Replay.Result fromViewer = replay(viewerRecording, dir.resolve("from-viewer"));
+        assertEquals(STEPS + 1, fromEnv.framesDrawn());
+        assertEquals(STEPS + 1, fromViewer.framesDrawn());
+        PngFrameWriter names = new PngFrameWriter(live);
+        for (int step = 0; step <= STEPS; step++) {
+            String file = names.fileFor(step).getFileName().toString();
+            int[] drawnLive = pixels(live.resolve(file));
+            assertArrayEquals(drawnLive, pixels(dir.resolve("from-viewer").resolve(file)),
+                    "step " + step + " replayed from the viewer's recording");
+            // The viewer drew step 0 when it attached, before the robots had connected; the
+            // Environment records step 0 as the run starts, with every robot connected.
+            if (step > 0) {
+                assertArrayEquals(drawnLive, pixels(dir.resolve("from-env").resolve(file)),
+                        "step " + step + " replayed from the Environment's recording");
+            }
+        }
+    }
+
+    @Test
+    void theSameRunRecordedTwiceIsByteIdentical() throws Exception {
+        Path first = dir.resolve("first.rsr");
+        Path second = dir.resolve("second.rsr");
+        RecordedRun.run(STEPS, first, List.of());
+        RecordedRun.run(STEPS, second, List.of());
+        assertTrue(Files.size(first) > 1000, "a real recording: " + Files.size(first) + " bytes");
+        assertEquals(-1, Files.mismatch(first, second), "the two recordings differ at this byte offset");
+        try (RecordingReader reader = RecordingReader.open(first)) {
+            long frames = 0;
+            while (reader.next() != null) {
+                frames++;
+            }
+            assertEquals(STEPS + 1, frames);
+            assertEquals("done: step limit " + STEPS + " reached", reader.endReason());
+        }
+    }
+}

@@ -1,0 +1,86 @@
+package robosim.cli;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import robosim.aria.ArRobot;
+import robosim.env.core.Simulation;
+import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.env.world.WorldReader;
+import robosim.examples.wander.Wander;
+import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.RecordingWriter;
+import robosim.viewer.RenderOptions;
+import robosim.viewer.ViewerClient;
+import robosim.viewer.ViewerOptions;
+import robosim.viewer.ViewerSummary;
+
+/**
+ * A deterministic run for the recording tests, all in this JVM: the Environment on the small maze
+ * recording every step, two wander robots as threads, and optionally a live viewer attached before
+ * the first step. Every wait is bounded; every thread ends with the run.
+ */
+final class RecordedRun {
+    /** The drawing both the live viewer and the replays use. */
+    static final RenderOptions RENDER = new RenderOptions(480, true, true);
+
+    private RecordedRun() {
+    }
+
+    /**
+     * Runs the maze for some steps.
+     *
+     * @param steps     steps to run
+     * @param recording where the Environment records, with sensors
+     * @param viewer    what a live viewer passes the run to, or none for no viewer
+     * @return the Environment's report
+     */
+    static RunReport run(int steps, Path recording, List<FrameListener> viewer) throws Exception {
+        Simulation sim = new Simulation(WorldReader.read(Harness.root().resolve("testLoadFiles/environment/small-maze.xml")));
+        ServerOptions options = ServerOptions.loopback().withMaxSteps(steps).withWaitViewers(viewer.isEmpty() ? 0 : 1);
+        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
+            server.bind();
+            server.addFrameListener(RecordingWriter.create(recording, true));
+            CompletableFuture<RunReport> report = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return server.run();
+                } catch (InterruptedException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            CompletableFuture<ViewerSummary> live = viewer.isEmpty() ? CompletableFuture.completedFuture(null)
+                    : CompletableFuture.supplyAsync(() -> {
+                        try {
+                            ViewerOptions o = ViewerOptions.of("127.0.0.1", server.viewerPort()).withName("live")
+                                    .withRender(RENDER).withReadTimeout(Duration.ofSeconds(60));
+                            return new ViewerClient(o, viewer).run();
+                        } catch (Exception e) {
+                            throw new IllegalStateException(e);
+                        }
+                    });
+            List<Thread> robots = new ArrayList<>();
+            for (String name : sim.robotNames()) {
+                Thread t = new Thread(() -> {
+                    ArRobot robot = new ArRobot(name, "127.0.0.1", server.robotPort(), "p3dx");
+                    if (robot.blockingConnect()) {
+                        new Wander(robot).run();
+                    }
+                }, "wander-" + name);
+                t.setDaemon(true);
+                t.start();
+                robots.add(t);
+            }
+            RunReport r = report.get(120, TimeUnit.SECONDS);
+            live.get(60, TimeUnit.SECONDS);
+            for (Thread t : robots) {
+                t.join(10_000);
+            }
+            return r;
+        }
+    }
+}

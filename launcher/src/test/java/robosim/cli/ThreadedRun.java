@@ -1,0 +1,85 @@
+package robosim.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import robosim.env.core.Simulation;
+import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunReport;
+import robosim.env.net.ServerOptions;
+import robosim.env.world.WorldReader;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.recording.FrameListener;
+
+/**
+ * An Environment on loopback, in this JVM, with robot programs as threads of their own (not pool
+ * threads: each robot blocks for the whole run). Keeps every frame. Every wait is bounded.
+ */
+final class ThreadedRun implements AutoCloseable {
+    final EnvironmentServer server;
+    final List<ViewerFrame> frames = new ArrayList<>();
+    private final ExecutorService threads = Executors.newCachedThreadPool(r -> {
+        Thread t = new Thread(r, "robot-program");
+        t.setDaemon(true);
+        return t;
+    });
+    private final Future<RunReport> report;
+
+    /**
+     * @param world    the world file
+     * @param seed     the run's seed
+     * @param maxSteps steps to run, 0 until every robot has left
+     */
+    ThreadedRun(Path world, long seed, long maxSteps) throws Exception {
+        server = new EnvironmentServer(new Simulation(WorldReader.read(world), seed),
+                ServerOptions.loopback().withMaxSteps(maxSteps));
+        server.bind();
+        server.addFrameListener(new FrameListener() {
+            @Override
+            public void world(WorldDescription w) {
+            }
+
+            @Override
+            public void frame(ViewerFrame f) {
+                synchronized (frames) {
+                    frames.add(f);
+                }
+            }
+        });
+        report = threads.submit(server::run);
+    }
+
+    /** Writes a world file into {@code dir}; {@code %s} in the text stands for the robots/ folder. */
+    static Path world(Path dir, String name, String xml) throws Exception {
+        String robots = Harness.root().resolve("testLoadFiles/robots").toString();
+        return Files.writeString(dir.resolve(name), xml.replace("%ROBOTS%", robots));
+    }
+
+    /** @return the Environment's robot port */
+    int port() {
+        return server.robotPort();
+    }
+
+    /** Starts a robot program on a thread of its own. */
+    <T> Future<T> robot(Callable<T> program) {
+        return threads.submit(program);
+    }
+
+    /** @return the report, once the run has ended */
+    RunReport await() throws Exception {
+        return report.get(120, TimeUnit.SECONDS);
+    }
+
+    @Override
+    public void close() {
+        server.close();
+        threads.shutdownNow();
+    }
+}

@@ -1,0 +1,112 @@
+package robosim.viewer.window;
+
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.awt.geom.Rectangle2D;
+import javax.swing.JComponent;
+import robosim.protocol.ViewerFrame;
+import robosim.protocol.WorldDescription;
+import robosim.viewer.WorldRenderer;
+import robosim.viewer.view3d.SolidRenderer;
+
+/**
+ * The drawing area: the world in 2D through the {@link WorldRenderer} or in 3D through the
+ * {@link SolidRenderer}, exactly as the PNG frames are drawn, placed by the {@link ViewState}.
+ * The mouse wheel zooms about the pointer; a drag pans the 2D view or turns the 3D camera.
+ */
+public final class WorldView extends JComponent {
+    private static final long serialVersionUID = 1L;
+    /** The colour around the world in the 2D view. */
+    public static final Color SURROUND = new Color(200, 200, 196);
+    private static final double WHEEL_STEP = 1.2;
+
+    private final transient ViewModel model;
+    private final transient ViewState state;
+    private final transient WorldRenderer renderer = new WorldRenderer();
+
+    /**
+     * @param model what to show
+     * @param state how to show it
+     */
+    public WorldView(ViewModel model, ViewState state) {
+        this.model = model;
+        this.state = state;
+        setPreferredSize(new Dimension(800, 600));
+        setOpaque(true);
+        model.observe(this::repaint);
+        Gestures gestures = new Gestures();
+        addMouseListener(gestures);
+        addMouseMotionListener(gestures);
+        addMouseWheelListener(gestures);
+    }
+
+    @Override
+    protected void paintComponent(Graphics graphics) {
+        Graphics2D g = (Graphics2D) graphics.create();
+        try {
+            int w = getWidth();
+            int h = getHeight();
+            WorldDescription world = model.world();
+            ViewerFrame frame = model.frame();
+            if (world == null || w < 1 || h < 1) {
+                g.setColor(SURROUND);
+                g.fill(new Rectangle2D.Double(0, 0, Math.max(1, w), Math.max(1, h)));
+                g.setColor(Color.DARK_GRAY);
+                g.drawString("waiting for the world...", 12, 24);
+                return;
+            }
+            if (state.threeD()) {
+                SolidRenderer.draw(g, state.project(world, frame, w, h), world, frame, state.scene(w), model.trails());
+                return;
+            }
+            g.setColor(SURROUND);
+            g.fill(new Rectangle2D.Double(0, 0, w, h));
+            ViewState.Placement place = state.place(world, frame, w, h);
+            Graphics2D inner = (Graphics2D) g.create();
+            inner.translate(place.originX(), place.originY());
+            renderer.draw(inner, place.view(), world, frame, state.render(), model.trails());
+            inner.dispose();
+            if (frame != null) {
+                WorldRenderer.drawCaption(g, Math.min(w, place.view().width()), WorldRenderer.caption(frame));
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Wheel, press and drag. */
+    private final class Gestures extends MouseAdapter {
+        private int lastX;
+        private int lastY;
+
+        @Override
+        public void mousePressed(MouseEvent e) {
+            lastX = e.getX();
+            lastY = e.getY();
+        }
+
+        @Override
+        public void mouseDragged(MouseEvent e) {
+            state.drag(e.getX() - lastX, e.getY() - lastY);
+            lastX = e.getX();
+            lastY = e.getY();
+            firePropertyChange("view", 0, 1);
+            repaint();
+        }
+
+        @Override
+        public void mouseWheelMoved(MouseWheelEvent e) {
+            if (model.world() == null) {
+                return;
+            }
+            double factor = Math.pow(WHEEL_STEP, -e.getPreciseWheelRotation());
+            state.zoomAbout(factor, e.getX(), e.getY(), model.world(), model.frame(), getWidth(), getHeight());
+            repaint();
+        }
+    }
+}

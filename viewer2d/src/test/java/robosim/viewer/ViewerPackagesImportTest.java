@@ -1,0 +1,41 @@
+package robosim.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The 3D renderer draws and does no I/O; the window neither opens files nor sockets (the launcher
+ * feeds it); nothing in the viewer prints (STYLE.md rules 3 and 11).
+ */
+@Timeout(value = 30, unit = TimeUnit.SECONDS)
+class ViewerPackagesImportTest {
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+        "view3d | import java.io.;import java.net.;import java.nio.;import javax.imageio.;import java.util.logging.;System.out;System.err",
+        "window | import java.net.;import java.nio.;import javax.imageio.;System.out;System.err",
+        "replay | import java.net.;System.out;System.err"})
+    void packageKeepsToItsRole(String pkg, String forbidden) throws IOException {
+        Path dir = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer", pkg);
+        List<String> rules = List.of(forbidden.split(";"));
+        try (Stream<Path> files = Files.list(dir)) {
+            List<String> offending = files.flatMap(f -> {
+                try {
+                    return Files.readAllLines(f).stream().filter(l -> rules.stream().anyMatch(l::contains))
+                            .map(l -> f.getFileName() + ": " + l.strip());
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+            }).toList();
+            assertEquals(List.of(), offending, pkg + " must keep to its role");
+        }
+    }
+}
