@@ -5,6 +5,7 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -22,11 +23,8 @@ final class CommsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--host", defaultValue = "localhost", description = "the Environment's host; default ${DEFAULT-VALUE}")
-    String host;
-
-    @Option(names = "--port", defaultValue = "3000", description = "the Environment's viewer port; default ${DEFAULT-VALUE}")
-    int port;
+    @Mixin
+    ViewerPortOptions at;
 
     @Option(names = "--range", paramLabel = "MM", description = "the farthest a message reaches (0: no limit)")
     Double range;
@@ -50,7 +48,7 @@ final class CommsCommand implements Callable<Integer> {
             return 2;
         }
         try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(host, port), 10_000);
+            s.connect(new InetSocketAddress(at.host, at.port), 10_000);
             s.setSoTimeout(10_000);
             MessageCodec codec = new MessageCodec();
             FrameWriter w = new FrameWriter(s.getOutputStream(), codec);
@@ -69,7 +67,7 @@ final class CommsCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim comms: the Environment refused the settings (its log says why)");
             return 1;
         } catch (IOException e) {
-            spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + host + ":" + port
+            spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + at.host + ":" + at.port
                     + ": " + e.getMessage());
             return 1;
         }

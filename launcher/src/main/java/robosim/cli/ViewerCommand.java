@@ -37,11 +37,8 @@ final class ViewerCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--host", defaultValue = "localhost", description = "the Environment's host; default ${DEFAULT-VALUE}")
-    String host;
-
-    @Option(names = "--port", defaultValue = "3000", description = "the Environment's viewer port; default ${DEFAULT-VALUE}")
-    int port;
+    @Mixin
+    ViewerPortOptions at;
 
     @Option(names = "--png-dir", paramLabel = "DIR", description = "where to write frame-NNNNNN.png")
     Path pngDir;
@@ -73,7 +70,7 @@ final class ViewerCommand implements Callable<Integer> {
         ViewerOptions options;
         try {
             drawing.validate();
-            options = ViewerOptions.of(host, port).withName(name()).withEvery(every).withRender(drawing.render())
+            options = ViewerOptions.of(at.host, at.port).withName(name()).withEvery(every).withRender(drawing.render())
                     .withReadTimeout(Duration.ofMinutes(10));
         } catch (IllegalArgumentException e) {
             err.println("robosim viewer: " + e.getMessage());
