@@ -6,6 +6,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
+import robosim.hw.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;

@@ -19,7 +19,7 @@ import robosim.protocol.params.RobotParameters;
  * ArSick sick = new ArSick();
  * robot.addRangeDevice(sick);
  * robot.blockingConnect();
- * if (!sick.blockingConnect()) System.err.println(sick.getConnectionError());
+ * if (!sick.blockingConnect()) throw new IllegalStateException(sick.getConnectionError());
  * }</pre>
  *
  * <p>Unlike ARIA's, {@link #blockingConnect()} does not wait for the first scan: it switches the

@@ -11,6 +11,7 @@ import java.util.function.BiConsumer;
 import java.util.logging.Logger;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
+import robosim.hw.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
@@ -43,6 +44,8 @@ import robosim.protocol.params.RobotParameters;
 public class Scout extends AbstractRobot {
     /** The Scout's rotation constant: 1/10 inch of wheel travel per 1/10 degree of turn. */
     public static final double ROTATION_CONSTANT = 0.118597;
+    /** The shipped Scout's parameter file. */
+    public static final String DEFAULT_PARAMETERS = "scout";
     /** A wheel slower than this, mm/s, counts as stopped. */
     static final double MOVING_MM_S = 0.01;
     private static final Logger LOG = Logger.getLogger(Scout.class.getName());
@@ -71,7 +74,7 @@ public class Scout extends AbstractRobot {
      * @param port the Environment's robot port
      */
     public Scout(String name, String host, int port) {
-        this(name, host, port, ScoutParameterFiles.DEFAULT);
+        this(name, host, port, DEFAULT_PARAMETERS);
     }
 
     /**
@@ -81,7 +84,7 @@ public class Scout extends AbstractRobot {
      * @param paramFile the robot's parameter file: a path, or a shipped name such as {@code scout}
      */
     public Scout(String name, String host, int port, String paramFile) {
-        this(name, host, port, ScoutParameterFiles.load(paramFile));
+        this(name, host, port, RobotParameterFiles.load(paramFile));
     }
 
     /**

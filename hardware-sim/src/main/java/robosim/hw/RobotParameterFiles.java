@@ -1,4 +1,4 @@
-package robosim.aria;
+package robosim.hw;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,15 +13,28 @@ import robosim.protocol.params.RobotParametersReader;
  * {@code testLoadFiles/robots/} under the RoboSim root (system property {@code robosim.root},
  * else the working directory). A name without an extension means ARIA's {@code .p} form.
  */
-final class RobotParameterFiles {
+public final class RobotParameterFiles {
     private RobotParameterFiles() {
     }
 
-    static RobotParameters load(String file) {
+    /**
+     * Finds and reads a parameter file.
+     *
+     * @param file a path, or a shipped name such as {@code p3dx} or {@code scout.xml}
+     * @return the robot's parameters
+     * @throws IllegalArgumentException if no such file is found
+     * @throws robosim.protocol.params.ParameterFileException if the file breaks a rule
+     */
+    public static RobotParameters load(String file) {
         return RobotParametersReader.read(resolve(file));
     }
 
-    static Path resolve(String file) {
+    /**
+     * @param file a path, or a shipped name
+     * @return the file it names
+     * @throws IllegalArgumentException if no such file is found
+     */
+    public static Path resolve(String file) {
         Path given = Paths.get(file);
         if (Files.isRegularFile(given)) {
             return given;
