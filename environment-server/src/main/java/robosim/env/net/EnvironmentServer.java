@@ -233,6 +233,7 @@ public final class EnvironmentServer implements AutoCloseable {
         try {
             SocketChannel ch = server.accept();
             if (ch != null) {
+                all.removeIf(Connection::isClosed);
                 long limit = kind == Connection.Kind.ROBOT ? MAX_QUEUED_ROBOT : MAX_QUEUED_VIEWER;
                 all.add(new Connection(kind, ch, selector, codec, options.maxFrame(), limit));
             }

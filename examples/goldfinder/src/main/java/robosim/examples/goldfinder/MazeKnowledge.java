@@ -82,7 +82,6 @@ final class MazeKnowledge {
      * @return the direction of the first step, or -1 if no frontier is reachable
      */
     int towardsFrontier(int x, int y, int[] order, Set<Long> avoid) {
-        Map<Long, Integer> firstStep = new HashMap<>();
         ArrayDeque<int[]> queue = new ArrayDeque<>();
         Set<Long> seen = new HashSet<>();
         seen.add(key(x, y));
@@ -102,7 +101,6 @@ final class MazeKnowledge {
                 }
             }
         }
-        firstStep.clear();
         return -1;
     }
 
