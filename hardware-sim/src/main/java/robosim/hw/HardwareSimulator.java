@@ -212,9 +212,6 @@ public final class HardwareSimulator {
             reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
         } catch (IOException e) {
             reason = endReason != null ? endReason : e.getMessage();
-        } catch (InterruptedException e) {
-            reason = "interrupted";
-            Thread.currentThread().interrupt();
         }
         end(reason);
     }

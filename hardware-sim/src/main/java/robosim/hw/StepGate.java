@@ -23,6 +23,9 @@ public final class StepGate {
     private long timeMs;
     private long step;
     private long unsentSince = -1;
+    private Runnable pending;
+    private long pendingStep;
+    private long pendingTime;
     private boolean closed;
 
     /**
@@ -113,29 +116,35 @@ public final class StepGate {
     }
 
     /**
-     * Publishes a new step: waits until every participant has yielded (the first step can arrive
-     * while the robot's code still runs after connecting, and the state must not change under it),
-     * then runs {@code update} (which installs the new state) and wakes the participants whose
-     * condition now holds, atomically.
+     * Publishes a new step. If every participant has yielded, runs {@code update} (which installs
+     * the new state) and wakes the participants whose condition now holds, atomically. If the
+     * robot's code is still running (the first step can arrive while it runs after connecting), the
+     * step is held and installed by the last participant to yield, so the state never changes under
+     * running code; the caller goes back to listening meanwhile.
      *
      * @param newStep the step the state belongs to
      * @param newTime its simulated time, ms
      * @param update  installs the new state
      * @return true if nobody woke, so the caller must send the step's requests now
-     * @throws InterruptedException if interrupted while waiting for the participants to yield
      */
-    public synchronized boolean advance(long newStep, long newTime, Runnable update) throws InterruptedException {
-        while (!closed && !allYielded()) {
-            // a participant that ends without yielding sends no notification: look again soon
-            wait(20);
+    public synchronized boolean advance(long newStep, long newTime, Runnable update) {
+        unsentSince = System.nanoTime();
+        if (!allYielded()) {
+            pending = update;
+            pendingStep = newStep;
+            pendingTime = newTime;
+            return false;
         }
+        install(newStep, newTime, update);
+        return claim();
+    }
+
+    private void install(long newStep, long newTime, Runnable update) {
         update.run();
         step = newStep;
         timeMs = newTime;
-        unsentSince = System.nanoTime();
         waiting.entrySet().removeIf(e -> e.getValue().test(newTime));
         notifyAll();
-        return claim();
     }
 
     /**
@@ -159,6 +168,14 @@ public final class StepGate {
     private boolean claim() {
         if (closed || unsentSince < 0 || !allYielded()) {
             return false;
+        }
+        if (pending != null) {
+            Runnable update = pending;
+            pending = null;
+            install(pendingStep, pendingTime, update);
+            if (!allYielded()) {
+                return false;
+            }
         }
         unsentSince = -1;
         return true;

@@ -129,7 +129,7 @@ class StepGateTest {
     }
 
     @Test
-    void aStepWaitsForCodeThatHasNotYieldedBeforeItsStateIsInstalled() throws Exception {
+    void aStepThatArrivesWhileCodeRunsIsHeldUntilTheCodeYields() throws Exception {
         CountDownLatch joined = new CountDownLatch(1);
         CountDownLatch mayYield = new CountDownLatch(1);
         start("still-running", () -> {
@@ -140,13 +140,17 @@ class StepGateTest {
         });
         assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
         AtomicReference<String> state = new AtomicReference<>("old");
-        Thread hardware = start("hardware", () -> gate.advance(1, 100, () -> state.set("new")));
+        assertFalse(gate.advance(1, 100, () -> state.set("new")), "held: nobody may send yet");
         Thread.sleep(150);
         assertEquals("old", state.get(), "the state must not change while the robot's code runs");
-        assertTrue(hardware.isAlive());
+        assertEquals(0, gate.step());
         mayYield.countDown();
-        hardware.join(WAIT_MS);
-        assertEquals("new", state.get());
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
+        while (!"new".equals(state.get()) && System.nanoTime() < deadline) {
+            Thread.sleep(2);
+        }
+        assertEquals("new", state.get(), "installed by the thread that yielded");
+        assertEquals(1, gate.step());
     }
 
     @Test

@@ -29,6 +29,7 @@ class StepDeadlineTest {
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 500, 30_000, 0, 4 << 20);
         AtomicBoolean spinning = new AtomicBoolean(true);
         AtomicBoolean r2Connected = new AtomicBoolean();
+        AtomicBoolean r2SawItsEnd = new AtomicBoolean();
         Thread r1 = null;
         Thread r2 = null;
         try (LogCapture log = new LogCapture("robosim.env.net");
@@ -45,9 +46,10 @@ class StepDeadlineTest {
                     r2Connected.set(true);
                     robot.setVel(200);
                     AtomicLong work = new AtomicLong();
-                    while (spinning.get()) {
+                    while (spinning.get() && robot.isConnected()) {
                         work.incrementAndGet(); // busy computing, never yielding to the simulation
                     }
+                    r2SawItsEnd.set(!robot.isConnected());
                 }
             }, "robot-r2");
             for (Thread t : List.of(r1, r2)) {
@@ -67,6 +69,8 @@ class StepDeadlineTest {
             assertTrue(aboutR2.get(0).contains("did not send its requests for step"), aboutR2.get(0));
             assertTrue(log.warnings().stream().noneMatch(w -> w.contains("robot r1")), "r1 was not dropped: "
                     + log.warnings());
+            r2.join(10_000);
+            assertTrue(r2SawItsEnd.get(), "r2's program learnt that the Environment dropped it");
         } finally {
             spinning.set(false);
             for (Thread t : new Thread[] {r1, r2}) {
