@@ -120,8 +120,8 @@ class CommandLineTest {
     }
 
     @ParameterizedTest
-    @CsvSource({"--port, -5, robotPort", "--port, 70000, robotPort", "--viewer-port, -1, viewerPort",
-            "--connect-timeout, 0, connectTimeoutMs", "--step-timeout, 0, stepTimeoutMs"})
+    @CsvSource({"--port, -5, --port", "--port, 70000, --port", "--viewer-port, -1, --viewer-port",
+            "--connect-timeout, 0, --connect-timeout", "--step-timeout, 0, --step-timeout"})
     void envWithAnInvalidOptionExitsWith2AndSaysWhy(String option, String value, String named) {
         Run r = execute("env", option, value, emptyRoom());
         assertEquals(2, r.exit(), r.err());
