@@ -53,8 +53,13 @@ public final class Surroundings {
         double dx = Math.cos(th);
         double dy = Math.sin(th);
         double best = maxRange;
-        for (Segment s : segments) {
-            best = Math.min(best, s.rayHit(x, y, dx, dy));
+        double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+        for (int i = 0; i < segments.length; i++) {
+            // no edge farther from the centre can be hit nearer than this
+            if (nearest[i] - offset > best) {
+                break;
+            }
+            best = Math.min(best, segments[i].rayHit(x, y, dx, dy));
         }
         return best;
     }

@@ -35,33 +35,6 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
     /** The bumper ring's sectors, 60° each. */
     public static final int BUMPER_SECTORS = 6;
 
-    /**
-     * A state without bumper contacts.
-     *
-     * @param step       the step
-     * @param timeMs     simulated time, ms
-     * @param x          odometry x, mm
-     * @param y          odometry y, mm
-     * @param th         odometry heading, degrees
-     * @param vel        mm/s
-     * @param rotVel     deg/s
-     * @param leftVel    mm/s
-     * @param rightVel   mm/s
-     * @param stalled    whether stalled
-     * @param sonar      sonar ranges, mm
-     * @param collisions collisions so far
-     * @param laser      laser scan, mm
-     * @param heat       heat reading or null
-     * @param messages   messages delivered
-     * @param errors     refused requests
-     */
-    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, 0);
-    }
-
     /** Copies the lists so the record stays immutable. */
     public RobotState {
         messages = messages == null ? List.of() : List.copyOf(messages);

@@ -212,7 +212,7 @@ final class DriveController {
     }
 
     /** The rotational velocity wanted now, deg/s. */
-    double wantedRotVel(double th, double dt, double rotDecel) {
+    double wantedRotVel(double th, double dt) {
         double w = switch (rot) {
             case VEL -> rotVel;
             case WHEELS -> Math.toDegrees((right - left) / 2 * params.diffConvFactor());

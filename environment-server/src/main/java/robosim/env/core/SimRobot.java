@@ -52,11 +52,6 @@ final class SimRobot {
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
     }
 
-    /** The body shape a robot's parameters describe. */
-    static BodyShape bodyOf(RobotParameters p) {
-        return robosim.env.world.RobotSpec.bodyOf(p);
-    }
-
     void apply(List<Command> commands) {
         for (Command c : commands) {
             if (!sensors.apply(c)) {
@@ -73,7 +68,7 @@ final class SimRobot {
         }
         // the controller steers by odometry, as a robot's firmware does
         double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt);
-        double wantW = drive.wantedRotVel(odometry.th(), dt, drive.rotDecel());
+        double wantW = drive.wantedRotVel(odometry.th(), dt);
         vel = approach(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
         rotVel = approach(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
         if (vel == 0 && rotVel == 0) {

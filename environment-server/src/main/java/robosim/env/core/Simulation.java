@@ -62,7 +62,7 @@ public final class Simulation {
         this.world = world;
         this.seed = seed;
         for (Obstacle o : world.obstacles()) {
-            obstacles.add(GeometryClient.polygon(o.xy()));
+            obstacles.add(o.polygon());
         }
         rebuild(Map.of());
         // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
@@ -80,7 +80,7 @@ public final class Simulation {
             SplittableRandom random = streams.split();
             SimRobot prev = old.get(spec.name());
             RobotParameters p = replaced.getOrDefault(spec.name(), prev != null ? prev.params : spec.parameters());
-            BodyShape body = SimRobot.bodyOf(p);
+            BodyShape body = RobotSpec.bodyOf(p);
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
             SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, id, spec.x(), spec.y(), spec.th(),
                     world.noise(), random);
@@ -108,7 +108,7 @@ public final class Simulation {
             return;
         }
         GeometryClient check = geometry;
-        BodyShape body = SimRobot.bodyOf(params);
+        BodyShape body = RobotSpec.bodyOf(params);
         if (check.overlaps(body, r.pose(), r.bodyId)) {
             throw new IllegalArgumentException("robot " + name + " with its body of " + params.robotLength()
                     + " x " + params.robotWidth() + " mm overlaps something at its start pose");

@@ -68,10 +68,6 @@ final class Connection {
         return closed;
     }
 
-    /** @return whether everything queued has been written */
-    boolean flushed() {
-        return outgoing.isEmpty();
-    }
 
     /**
      * Reads what has arrived.
@@ -98,7 +94,17 @@ final class Connection {
         if (closed || closeWhenFlushed) {
             return;
         }
-        ByteBuffer frame = FrameDecoder.frame(codec, m);
+        sendFrame(FrameDecoder.frame(codec, m));
+    }
+
+    /**
+     * Queues a frame already encoded (the same frame can go to many peers: pass each a duplicate)
+     * and writes what the peer can take now.
+     */
+    void sendFrame(ByteBuffer frame) {
+        if (closed || closeWhenFlushed) {
+            return;
+        }
         queuedBytes += frame.remaining();
         outgoing.add(frame);
         if (queuedBytes > maxQueuedBytes) {

@@ -175,9 +175,12 @@ public final class EnvironmentServer implements AutoCloseable {
             }
             Map<String, List<Command>> commands = collect(current);
             sim.step(commands);
-            ViewerFrame frame = sim.frame();
-            rules.broadcastFrame(frame);
-            listeners.frame(frame);
+            // the frame is built only when someone watches: benchmarks and headless runs skip it
+            if (rules.viewerCount() > 0 || listeners.size() > 0) {
+                ViewerFrame frame = sim.frame();
+                rules.broadcastFrame(frame, codec);
+                listeners.frame(frame);
+            }
         }
     }
 

@@ -33,7 +33,7 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
      * @return the options
      */
     public static ServerOptions loopback() {
-        return new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 60_000, 0, 4 << 20);
+        return new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 60_000, 0, robosim.protocol.FrameReader.DEFAULT_MAX_FRAME);
     }
 
     /** @param steps the step limit @return a copy with it */

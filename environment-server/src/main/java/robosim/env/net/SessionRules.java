@@ -1,5 +1,6 @@
 package robosim.env.net;
 
+import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -12,6 +13,8 @@ import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.comms.CommsSettings;
 import robosim.protocol.Command;
+import robosim.protocol.FrameDecoder;
+import robosim.protocol.MessageCodec;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
@@ -78,10 +81,15 @@ final class SessionRules {
         waiting.clear();
     }
 
-    void broadcastFrame(ViewerFrame frame) {
+    /** Sends a frame to every viewer, encoded once. */
+    void broadcastFrame(ViewerFrame frame, MessageCodec codec) {
         viewers.removeIf(Connection::isClosed);
+        if (viewers.isEmpty()) {
+            return;
+        }
+        ByteBuffer encoded = FrameDecoder.frame(codec, frame);
         for (Connection v : viewers) {
-            v.send(frame);
+            v.sendFrame(encoded.duplicate());
         }
     }
 

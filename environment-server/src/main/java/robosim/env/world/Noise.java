@@ -20,8 +20,4 @@ public record Noise(double sonarSigma, double laserSigma, double odometryError) 
         }
     }
 
-    /** @return whether any noise is on */
-    public boolean any() {
-        return sonarSigma > 0 || laserSigma > 0 || odometryError > 0;
-    }
 }

@@ -28,25 +28,6 @@ public record World(String name, Path source, double width, double height, int s
                     CommsSettings comms, HeatSource gold) {
 
     /**
-     * A world without gold.
-     *
-     * @param name      the world's name
-     * @param source    the file it was read from
-     * @param width     mm
-     * @param height    mm
-     * @param stepMs    step length, ms
-     * @param obstacles walls and polygons
-     * @param robots    the robots
-     * @param heat      the heat sources
-     * @param noise     the noise
-     * @param comms     how messages travel
-     */
-    public World(String name, Path source, double width, double height, int stepMs, List<Obstacle> obstacles,
-                 List<RobotSpec> robots, List<HeatSource> heat, Noise noise, CommsSettings comms) {
-        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, null);
-    }
-
-    /**
      * The same world with only its first robots: a team smaller than the world has places for.
      *
      * @param count how many of the robots to keep, from 1 to the number there are
