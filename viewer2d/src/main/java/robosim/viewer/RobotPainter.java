@@ -19,7 +19,6 @@ import robosim.protocol.params.SonarUnit;
  */
 final class RobotPainter {
     /** Radius drawn for a robot whose body the world does not describe. */
-    static final double FALLBACK_RADIUS_MM = 200;
     /** How far the odometry may be from the true position before its ghost is drawn, mm. */
     static final double ODOMETRY_TOLERANCE_MM = 1;
     /** How far the odometry's heading may be from the true heading before its ghost is drawn, degrees. */
@@ -36,7 +35,7 @@ final class RobotPainter {
         g.setColor(outline);
         g.setStroke(new BasicStroke(robot.stalled() ? 3f : 1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         g.draw(body);
-        double front = hasRectangle(p) ? p.robotLengthFront() : radius(p);
+        double front = BodyOutline.front(p);
         g.setColor(robot.connected() ? HEADING : outline);
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
@@ -54,7 +53,7 @@ final class RobotPainter {
         }
         Pose2D believed = new Pose2D(robot.odoX(), robot.odoY(), Math.toRadians(robot.odoTh()));
         RobotParameters p = info == null ? null : info.parameters();
-        double front = hasRectangle(p) ? p.robotLengthFront() : radius(p);
+        double front = BodyOutline.front(p);
         g.setColor(colour);
         g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
                 new float[] {6f, 4f}, 0f));
@@ -106,7 +105,7 @@ final class RobotPainter {
         if (robot.name() == null) {
             return;
         }
-        double r = view.scale() * radius(info == null ? null : info.parameters());
+        double r = view.scale() * BodyOutline.radius(info == null ? null : info.parameters());
         g.setColor(colour);
         g.drawString(robot.name(), (float) (view.px(robot.x()) + r * 0.8), (float) (view.py(robot.y()) - r * 0.8));
     }
@@ -115,25 +114,9 @@ final class RobotPainter {
         return new Pose2D(robot.x(), robot.y(), Math.toRadians(robot.th()));
     }
 
-    private static boolean hasRectangle(RobotParameters p) {
-        return p != null && !p.isRound() && p.robotWidth() > 0 && p.robotLengthFront() + p.robotLengthRear() > 0;
-    }
-
-    /** The enclosing radius from the parameters, or a fallback when they do not give one. */
-    private static double radius(RobotParameters p) {
-        if (p == null) {
-            return FALLBACK_RADIUS_MM;
-        }
-        if (p.robotRadius() > 0) {
-            return p.robotRadius();
-        }
-        double r = Math.hypot(Math.max(p.robotLengthFront(), p.robotLengthRear()), p.robotWidth() / 2);
-        return r > 0 ? r : FALLBACK_RADIUS_MM;
-    }
-
     /** @return the body's rectangle, or its enclosing circle when the parameters give no rectangle */
     private static Shape body(ViewTransform view, Pose2D pose, RobotParameters p) {
-        return hasRectangle(p) ? rectangle(view, pose, p) : circle(view, pose, radius(p));
+        return BodyOutline.isRectangle(p) ? rectangle(view, pose, p) : circle(view, pose, BodyOutline.radius(p));
     }
 
     private static Shape rectangle(ViewTransform view, Pose2D pose, RobotParameters p) {

@@ -10,6 +10,7 @@ import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.params.RobotParameters;
+import robosim.viewer.BodyOutline;
 import robosim.viewer.RobotPalette;
 import robosim.viewer.WorldRenderer;
 
@@ -144,14 +145,14 @@ final class SceneBuilder {
         return xyz;
     }
 
-    /** The body's rectangle from its parameters, or a circle when they give none; counter-clockwise. */
+    /** The body as {@link BodyOutline} draws it: its rectangle, or a disc; counter-clockwise. */
     private static double[] footprint(Pose2D pose, RobotParameters p) {
-        if (p != null && p.robotWidth() > 0 && p.robotLengthFront() + p.robotLengthRear() > 0) {
+        if (BodyOutline.isRectangle(p)) {
             double half = p.robotWidth() / 2;
             return place(pose, new double[] {p.robotLengthFront(), -half, p.robotLengthFront(), half,
                 -p.robotLengthRear(), half, -p.robotLengthRear(), -half});
         }
-        double r = p != null && p.robotRadius() > 0 ? p.robotRadius() : 200;
+        double r = BodyOutline.radius(p);
         double[] local = new double[2 * CIRCLE_SIDES];
         for (int i = 0; i < CIRCLE_SIDES; i++) {
             double a = 2 * Math.PI * i / CIRCLE_SIDES;
