@@ -156,8 +156,20 @@ public class ArRangeDevice {
      * @param y the echo's global y, mm
      */
     public synchronized void addReading(double x, double y) {
-        ArPose pose = robotPose();
-        ArPoseWithTime reading = new ArPoseWithTime(x, y, nowMs(), pose);
+        addReading(x, y, robotPose(), nowMs());
+    }
+
+    /**
+     * Adds a reading taken at a known pose and time: for devices that add many readings from one
+     * cycle's state.
+     *
+     * @param x      the echo's global x, mm
+     * @param y      the echo's global y, mm
+     * @param pose   the robot's pose when it was taken
+     * @param timeMs simulated time when it was taken
+     */
+    protected synchronized void addReading(double x, double y, ArPose pose, long timeMs) {
+        ArPoseWithTime reading = new ArPoseWithTime(x, y, timeMs, pose);
         current.add(reading);
         if (cumulative.getSize() == 0
                 || maxDistToKeepCumulative > 0 && reading.distanceTo(pose.getX(), pose.getY()) > maxDistToKeepCumulative) {

@@ -183,7 +183,7 @@ public class ArSick extends ArRangeDevice {
             r.newData(scan[i], pose, robot.getCounter(), s.timeMs());
             readings.add(r);
             if (scan[i] < max) {
-                addReading(r.getX(), r.getY());
+                addReading(r.getX(), r.getY(), pose, s.timeMs());
             }
         }
         rawScan = scan;

@@ -37,10 +37,12 @@ public class ArSonarDevice extends ArRangeDevice {
             return;
         }
         double max = getMaxRange();
+        ArPose pose = robotPose();
+        long timeMs = robot.currentState().timeMs();
         for (int i = 0; i < robot.getNumSonar(); i++) {
             ArSensorReading r = robot.getSonarReading(i);
             if (robot.isSonarNew(i) && r.getRange() < max) {
-                addReading(r.getX(), r.getY());
+                addReading(r.getX(), r.getY(), pose, timeMs);
             }
         }
     }

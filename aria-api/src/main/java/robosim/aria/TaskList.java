@@ -38,9 +38,6 @@ final class TaskList {
         return tasks.removeIf(t -> t.name().equals(name));
     }
 
-    synchronized List<String> names() {
-        return tasks.stream().map(Task::name).toList();
-    }
 
     void runAll(String robot) {
         List<Task> snapshot;

@@ -2,6 +2,7 @@ package robosim.bench;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.IntUnaryOperator;
 import robosim.aria.ArRobot;
 import robosim.aria.ArUtil;
 
@@ -39,19 +40,31 @@ public final class BenchRobots {
             throw new IllegalStateException(robot.getName() + ": " + robot.getConnectionError());
         }
         while (robot.isConnected()) {
-            int nearest = Integer.MAX_VALUE;
-            int nearestIndex = 0;
-            for (int i = 0; i < robot.getNumSonar(); i++) {
-                int r = robot.getSonarRange(i);
-                if (r < nearest) {
-                    nearest = r;
-                    nearestIndex = i;
-                }
-            }
-            boolean ahead = nearestIndex <= 7;
-            robot.setVel(nearest < 600 && ahead ? 0 : 300);
-            robot.setRotVel(nearest < 600 && ahead ? 30 : 0);
+            boolean blocked = blocked(robot::getSonarRange, robot.getNumSonar());
+            robot.setVel(blocked ? 0 : 300);
+            robot.setRotVel(blocked ? 30 : 0);
             ArUtil.sleep(100);
         }
+    }
+
+    /**
+     * The benchmark robots' one decision, shared with {@link CoreBench} so both measure the same
+     * logic: blocked when the nearest sonar echo is under 600 mm and comes from a front sonar (0–7).
+     *
+     * @param range the range of sonar i, mm
+     * @param count how many sonars
+     * @return whether to stop and turn (30 deg/s) instead of driving (300 mm/s)
+     */
+    static boolean blocked(IntUnaryOperator range, int count) {
+        int nearest = Integer.MAX_VALUE;
+        int nearestIndex = 0;
+        for (int i = 0; i < count; i++) {
+            int r = range.applyAsInt(i);
+            if (r < nearest) {
+                nearest = r;
+                nearestIndex = i;
+            }
+        }
+        return nearest < 600 && nearestIndex <= 7;
     }
 }

@@ -8,7 +8,6 @@ import java.util.Map;
 import robosim.env.core.Simulation;
 import robosim.env.world.WorldReader;
 import robosim.protocol.Command;
-import robosim.protocol.RobotState;
 
 /**
  * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
@@ -34,16 +33,8 @@ public final class CoreBench {
         for (long s = 0; s < steps; s++) {
             Map<String, List<Command>> commands = new HashMap<>();
             for (String name : names) {
-                RobotState st = sim.state(name);
-                int nearest = Integer.MAX_VALUE;
-                int index = 0;
-                for (int i = 0; i < st.sonar().length; i++) {
-                    if (st.sonar()[i] < nearest) {
-                        nearest = st.sonar()[i];
-                        index = i;
-                    }
-                }
-                boolean blocked = nearest < 600 && index <= 7;
+                int[] sonar = sim.state(name).sonar();
+                boolean blocked = BenchRobots.blocked(i -> sonar[i], sonar.length);
                 commands.put(name, List.of(new Command.SetVel(blocked ? 0 : 300), new Command.SetRotVel(blocked ? 30 : 0)));
             }
             sim.step(commands);

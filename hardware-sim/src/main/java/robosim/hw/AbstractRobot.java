@@ -76,7 +76,7 @@ public abstract class AbstractRobot {
      */
     protected void connect(HardwareOptions options) throws IOException {
         hardware = new HardwareSimulator(new RobotHello(name, robotType, parameters), gate,
-                r -> onResponse(r), options);
+                this::responded, options);
         Welcome w = hardware.connect(host, port);
         stepMs = w.stepMs();
         state = w.state();
@@ -92,10 +92,6 @@ public abstract class AbstractRobot {
      * @param initial the robot's state before the first step
      */
     protected void welcomed(RobotState initial) {
-    }
-
-    private void onResponse(RobotSensorResponse r) {
-        responded(r);
     }
 
     /**

@@ -64,7 +64,6 @@ public final class HardwareSimulator {
     private Socket socket;
     private FrameWriter writer;
     private FrameReader reader;
-    private Thread thread;
     private volatile String endReason;
     private volatile long openStep;
     private volatile Thread keeper;
@@ -137,7 +136,7 @@ public final class HardwareSimulator {
     /** Starts the robot's hardware thread; call after {@link #connect}. */
     public void start() {
         WATCHED.add(this);
-        thread = new Thread(this::run, "hw-" + hello.name());
+        Thread thread = new Thread(this::run, "hw-" + hello.name());
         thread.setDaemon(true);
         thread.start();
     }
@@ -197,7 +196,7 @@ public final class HardwareSimulator {
                 if (m instanceof TimeStep ts) {
                     openStep = ts.step();
                     RobotSensorResponse r = new RobotSensorResponse(ts.state());
-                    if (gate.advance(ts.state().step(), ts.state().timeMs(), () -> responses.accept(r))) {
+                    if (gate.advance(r.step(), r.timeMs(), () -> responses.accept(r))) {
                         sendRequests();
                     }
                 } else if (m instanceof Bye bye) {

@@ -30,6 +30,13 @@ public final class RobotParameterFiles {
     }
 
     /**
+     * @return the RoboSim root: system property {@code robosim.root}, else the working directory
+     */
+    public static Path root() {
+        return Paths.get(System.getProperty("robosim.root", "."));
+    }
+
+    /**
      * @param file a path, or a shipped name
      * @return the file it names
      * @throws IllegalArgumentException if no such file is found
@@ -40,7 +47,7 @@ public final class RobotParameterFiles {
             return given;
         }
         String name = file.endsWith(".p") || file.endsWith(".xml") ? file : file + ".p";
-        Path root = Paths.get(System.getProperty("robosim.root", "."));
+        Path root = root();
         Path shipped = root.resolve("testLoadFiles").resolve("robots").resolve(name);
         if (Files.isRegularFile(shipped)) {
             return shipped;

@@ -15,6 +15,7 @@ import robosim.bench.CoreBench;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
+import robosim.hw.RobotParameterFiles;
 
 /** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
@@ -65,8 +66,8 @@ final class BenchCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
             return 2;
         }
-        Path root = Path.of(System.getProperty("robosim.root", "."));
-        Path p3dx = root.resolve("testLoadFiles/robots/p3dx.p");
+        Path root = RobotParameterFiles.root();
+        Path p3dx = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Files.createDirectories(out);
         o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), System.getProperty("os.arch"));

@@ -6,6 +6,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.hw.RobotParameterFiles;
 
 /**
  * {@code robosim demo}: GoldFinder with 3 Pioneers, each in a JVM of its own, on the medium maze;
@@ -33,7 +34,7 @@ final class DemoCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         GoldfinderCommand gold = new GoldfinderCommand();
         gold.spec = spec;
-        gold.world = Path.of(System.getProperty("robosim.root", ".")).resolve("testLoadFiles/environment/maze-medium.xml");
+        gold.world = RobotParameterFiles.root().resolve("testLoadFiles/environment/maze-medium.xml");
         gold.robots = 3;
         gold.separateJvms = true;
         gold.seed = 1;

@@ -18,6 +18,7 @@ import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
 import robosim.env.world.WorldFileException;
 import robosim.env.world.WorldReader;
+import robosim.protocol.FrameReader;
 import robosim.protocol.recording.RecordingWriter;
 
 /** {@code robosim env}: loads a world, waits for its robots, runs the lockstep steps. */
@@ -78,7 +79,7 @@ final class EnvCommand implements Callable<Integer> {
         try {
             checkFlags();
             options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
-                    connectTimeoutS * 1000, waitViewers, 4 << 20);
+                    connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME);
         } catch (IllegalArgumentException e) {
             err.println("robosim env: " + e.getMessage());
             return 2;

@@ -110,7 +110,7 @@ final class GoldfinderCommand implements Callable<Integer> {
                     GoldFinder.start("127.0.0.1", server.robotPort(), robots, cellSize, seed);
                 }
                 RunReport report = server.run();
-                summary(o, report);
+                summary(o, report, w.stepMs());
                 if (viewer != null) {
                     ViewerSummary v = viewer.get(60, TimeUnit.SECONDS);
                     o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", v.framesWritten(), frames.toAbsolutePath());
@@ -122,10 +122,10 @@ final class GoldfinderCommand implements Callable<Integer> {
         }
     }
 
-    static void summary(PrintWriter o, RunReport report) {
+    static void summary(PrintWriter o, RunReport report, int stepMs) {
         if (report.find() != null) {
             o.printf(Locale.ROOT, "Gold found by %s at step %d (%.1f s simulated)%n", report.find().robot(),
-                    report.find().step(), report.find().step() / 10.0);
+                    report.find().step(), report.find().step() * stepMs / 1000.0);
         } else {
             o.printf(Locale.ROOT, "Gold not found: %s%n", report.endReason());
         }

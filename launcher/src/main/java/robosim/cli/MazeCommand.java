@@ -11,6 +11,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.world.WorldReader;
 import robosim.examples.goldfinder.Maze;
 import robosim.examples.goldfinder.MazeWorldWriter;
+import robosim.hw.RobotParameterFiles;
 
 /** {@code robosim maze}: writes a perfect maze as a world file for GoldFinder. */
 @Command(name = "maze", mixinStandardHelpOptions = true,
@@ -49,8 +50,7 @@ final class MazeCommand implements Callable<Integer> {
 
     /** Writes a maze world and reads it back, so a file that breaks a world rule is never left. */
     static Path write(int w, int h, int cellSize, long seed, int robots, Path out) throws java.io.IOException {
-        Path root = Path.of(System.getProperty("robosim.root", ".")).toAbsolutePath();
-        Path params = root.resolve("testLoadFiles/robots/p3dx.p");
+        Path params = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Path dir = out.toAbsolutePath().getParent();
         String rel = dir.relativize(params).toString().replace('\\', '/');
         String name = "maze-" + w + "x" + h + "-" + seed;

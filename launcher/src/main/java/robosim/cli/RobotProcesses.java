@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import robosim.hw.RobotParameterFiles;
 
 /** Starts robot programs in JVMs of their own, with this JVM's classpath, and stops them. */
 public final class RobotProcesses {
@@ -24,7 +25,7 @@ public final class RobotProcesses {
      */
     public static Process start(String className, String name, int port, Path log, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(javaBinary(), "-Djava.awt.headless=true",
-                "-Drobosim.root=" + System.getProperty("robosim.root", "."),
+                "-Drobosim.root=" + RobotParameterFiles.root(),
                 "-cp", System.getProperty("java.class.path"), Main.class.getName(),
                 "robot", className, name, "127.0.0.1", Integer.toString(port)));
         cmd.addAll(List.of(args));

@@ -13,6 +13,7 @@ import javax.imageio.ImageIO;
  */
 public final class PngFrameWriter implements FrameSink {
     private final Path directory;
+    private boolean created;
     private int framesWritten;
 
     /** @param directory where the PNG files go; created, with its parents, if missing */
@@ -54,7 +55,10 @@ public final class PngFrameWriter implements FrameSink {
      * @throws IOException if the directory cannot be created or the file written
      */
     public synchronized Path write(long step, BufferedImage image) throws IOException {
-        Files.createDirectories(directory);
+        if (!created) {
+            Files.createDirectories(directory);
+            created = true;
+        }
         Path file = fileFor(step);
         if (!ImageIO.write(image, "png", file.toFile())) {
             throw new IOException("no PNG writer accepts an image of type " + image.getType()

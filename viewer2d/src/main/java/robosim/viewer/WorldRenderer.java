@@ -235,7 +235,8 @@ public final class WorldRenderer {
 
     /**
      * A robot's colour as the robots are drawn: by its index in the world, or after the world's
-     * robots by its index in the frame; grey when it is not connected or not known.
+     * robots by its index in the frame; grey when it is not known. Whether it is connected is left to
+     * the caller, which draws a disconnected robot grey.
      *
      * @param world the world
      * @param frame the frame, or {@code null}

@@ -47,7 +47,6 @@ public class Gold extends ArRobot {
     private double startX;
     private double startY;
     private String finder;
-    private long foundStep = -1;
 
     /**
      * @param name     the robot's name, {@code r<number>}: lower numbers go first where robots meet
@@ -119,7 +118,7 @@ public class Gold extends ArRobot {
         }
         if (heat.senses() && heat.getDistance() <= FOUND_DISTANCE) {
             finder = getName();
-            foundStep = getStep();
+            long foundStep = getStep();
             stop();
             reportFound("gold");
             tell(-1, -1, true);
