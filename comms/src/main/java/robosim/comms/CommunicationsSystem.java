@@ -10,6 +10,8 @@ import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
 import java.util.TreeMap;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 
 /**
  * The CommunicationsSystem: carries messages between robots point to point, to groups (multicast)
@@ -24,7 +26,7 @@ public final class CommunicationsSystem {
     private final SplittableRandom random;
     private CommsSettings settings;
 
-    private record InFlight(long due, long sentStep, String from, Outgoing message) { }
+    private record InFlight(long due, long sentStep, String from, Command.SendMessage message) { }
 
     /**
      * @param robots   every robot of the world, in the world's order
@@ -91,7 +93,7 @@ public final class CommunicationsSystem {
      * @param message the message
      * @return what is wrong with it (it is then not sent), or null
      */
-    public String submit(long step, String from, Outgoing message) {
+    public String submit(long step, String from, Command.SendMessage message) {
         // an unknown sender has no position, so delivery would fail for every message of the step
         if (from == null || !robots.contains(from)) {
             return "message " + message.id() + " is from '" + from + "', but there is no robot of that name";
@@ -102,7 +104,7 @@ public final class CommunicationsSystem {
                     + settings.maxMessageBytes() + " bytes";
         }
         switch (message.mode()) {
-            case POINT_TO_POINT -> {
+            case ROBOT -> {
                 if (message.to() == null) {
                     return "message " + message.id() + " names no robot to send it to";
                 }
@@ -111,7 +113,7 @@ public final class CommunicationsSystem {
                             + "', but there is no robot of that name";
                 }
             }
-            case MULTICAST -> {
+            case GROUP -> {
                 if (message.to() == null) {
                     return "message " + message.id() + " names no group to send it to";
                 }
@@ -120,7 +122,7 @@ public final class CommunicationsSystem {
                             + "', which no robot has joined";
                 }
             }
-            case BROADCAST -> { }
+            case ALL -> { }
         }
         inFlight.add(new InFlight(step + settings.latencySteps() - 1, step, from, message));
         return null;
@@ -134,8 +136,8 @@ public final class CommunicationsSystem {
      * @param connected the robots whose programs are connected (the others receive nothing)
      * @return each recipient's deliveries, in order; robots with none are absent
      */
-    public Map<String, List<Delivery>> deliver(long step, Positions positions, Set<String> connected) {
-        Map<String, List<Delivery>> out = new LinkedHashMap<>();
+    public Map<String, List<MessageDelivery>> deliver(long step, Positions positions, Set<String> connected) {
+        Map<String, List<MessageDelivery>> out = new LinkedHashMap<>();
         Iterator<InFlight> it = inFlight.iterator();
         while (it.hasNext()) {
             InFlight f = it.next();
@@ -143,12 +145,12 @@ public final class CommunicationsSystem {
                 continue;
             }
             it.remove();
-            Outgoing m = f.message();
-            String to = m.mode() == Outgoing.Mode.BROADCAST ? "*" : m.to();
+            Command.SendMessage m = f.message();
+            String to = m.mode() == Command.Addressing.ALL ? "*" : m.to();
             for (String r : recipients(f)) {
                 if (connected.contains(r) && reaches(f.from(), r, positions)) {
                     out.computeIfAbsent(r, k -> new ArrayList<>())
-                            .add(new Delivery(f.from(), m.mode(), to, m.kind(), m.body(), f.sentStep(), m.id()));
+                            .add(new MessageDelivery(f.from(), m.mode(), to, m.kind(), m.body(), f.sentStep(), m.id()));
                 }
             }
         }
@@ -157,9 +159,9 @@ public final class CommunicationsSystem {
 
     private List<String> recipients(InFlight f) {
         return switch (f.message().mode()) {
-            case POINT_TO_POINT -> List.of(f.message().to());
-            case MULTICAST -> members(f.message().to()).stream().filter(r -> !r.equals(f.from())).toList();
-            case BROADCAST -> robots.stream().filter(r -> !r.equals(f.from())).toList();
+            case ROBOT -> List.of(f.message().to());
+            case GROUP -> members(f.message().to()).stream().filter(r -> !r.equals(f.from())).toList();
+            case ALL -> robots.stream().filter(r -> !r.equals(f.from())).toList();
         };
     }
 

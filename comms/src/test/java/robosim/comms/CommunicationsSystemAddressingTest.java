@@ -10,6 +10,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 
 /** Who receives a message: point to point, multicast groups, broadcast, connected robots only. */
 class CommunicationsSystemAddressingTest {
@@ -32,9 +34,9 @@ class CommunicationsSystemAddressingTest {
         comms.join("c", "blue");
         comms.join("d", "red");
         comms.submit(1, "a", toGroup(7, "blue"));
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, ALL);
         assertEquals(List.of("b", "c"), List.copyOf(out.keySet()), "not the sender a, not d of another group");
-        assertEquals(new Delivery("a", Outgoing.Mode.MULTICAST, "blue", "text", "m7", 1, 7), out.get("b").get(0));
+        assertEquals(new MessageDelivery("a", Command.Addressing.GROUP, "blue", "text", "m7", 1, 7), out.get("b").get(0));
     }
 
     @Test
@@ -63,16 +65,16 @@ class CommunicationsSystemAddressingTest {
         comms.join("c", "blue");
         comms.deliver(1, positions, ALL);
         comms.join("d", "blue");
-        Map<String, List<Delivery>> out = comms.deliver(2, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(2, positions, ALL);
         assertEquals(List.of("c", "d"), List.copyOf(out.keySet()), "b left before delivery, c and d joined before it");
     }
 
     @Test
     void broadcastReachesEveryRobotButTheSender() {
         comms.submit(1, "b", toAll(7));
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, ALL);
         assertEquals(List.of("a", "c", "d"), List.copyOf(out.keySet()));
-        assertEquals(new Delivery("b", Outgoing.Mode.BROADCAST, "*", "text", "m7", 1, 7), out.get("d").get(0));
+        assertEquals(new MessageDelivery("b", Command.Addressing.ALL, "*", "text", "m7", 1, 7), out.get("d").get(0));
     }
 
     @Test
@@ -82,7 +84,7 @@ class CommunicationsSystemAddressingTest {
         comms.submit(1, "a", toAll(7));
         comms.submit(1, "a", toRobot(8, "b"));
         comms.submit(1, "a", toGroup(9, "blue"));
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, Set.of("a", "c", "d"));
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, Set.of("a", "c", "d"));
         assertEquals(List.of(), ids(out, "b"));
         assertEquals(List.of(7L, 9L), ids(out, "c"));
     }

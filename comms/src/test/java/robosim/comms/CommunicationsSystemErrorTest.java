@@ -10,6 +10,7 @@ import static robosim.comms.Messages.toRobot;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.Command;
 
 /** Messages the CommunicationsSystem refuses, and that it goes on after them. */
 class CommunicationsSystemErrorTest {
@@ -41,16 +42,16 @@ class CommunicationsSystemErrorTest {
     @Test
     void oversizeMessageIsRefusedNamingItsSizeAndTheLimit() {
         // five two-byte characters: 10 bytes is at the limit, 12 over it
-        assertNull(comms.submit(1, "a", new Outgoing(7, Outgoing.Mode.POINT_TO_POINT, "b", "text", "ééééé")));
+        assertNull(comms.submit(1, "a", new Command.SendMessage(7, Command.Addressing.ROBOT, "b", "text", "ééééé")));
         assertEquals("message 8 of 12 bytes is over the limit of 10 bytes",
-                comms.submit(1, "a", new Outgoing(8, Outgoing.Mode.POINT_TO_POINT, "b", "text", "éééééé")));
+                comms.submit(1, "a", new Command.SendMessage(8, Command.Addressing.ROBOT, "b", "text", "éééééé")));
     }
 
     @Test
     void refusedMessageIsNotDeliveredAndTheNextOneIs() {
         comms.submit(1, "a", toRobot(6, "zed"));
         comms.submit(1, "a", toGroup(7, "blue"));
-        comms.submit(1, "a", new Outgoing(8, Outgoing.Mode.POINT_TO_POINT, "b", "text", "more than ten bytes"));
+        comms.submit(1, "a", new Command.SendMessage(8, Command.Addressing.ROBOT, "b", "text", "more than ten bytes"));
         comms.submit(1, "a", toRobot(9, "b"));
         assertEquals(1, comms.inFlight());
         assertEquals(List.of(9L), ids(comms.deliver(1, positions, ALL), "b"));

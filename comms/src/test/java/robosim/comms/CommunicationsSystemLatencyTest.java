@@ -8,6 +8,8 @@ import static robosim.comms.Messages.toRobot;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 
 /** When a message arrives: latency steps after the step it was sent in. */
 class CommunicationsSystemLatencyTest {
@@ -44,8 +46,8 @@ class CommunicationsSystemLatencyTest {
     void deliveryCarriesTheStepItWasSentIn() {
         CommunicationsSystem comms = new CommunicationsSystem(ROBOTS, latency(3), 1);
         comms.submit(5, "a", toRobot(7, "b"));
-        Delivery d = comms.deliver(7, positions, ALL).get("b").get(0);
-        assertEquals(new Delivery("a", Outgoing.Mode.POINT_TO_POINT, "b", "text", "m7", 5, 7), d);
+        MessageDelivery d = comms.deliver(7, positions, ALL).get("b").get(0);
+        assertEquals(new MessageDelivery("a", Command.Addressing.ROBOT, "b", "text", "m7", 5, 7), d);
     }
 
     @Test

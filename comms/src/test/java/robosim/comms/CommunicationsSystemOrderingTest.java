@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.MessageDelivery;
 
 /** The order of deliveries, and that the same calls give the same deliveries. */
 class CommunicationsSystemOrderingTest {
@@ -54,13 +55,13 @@ class CommunicationsSystemOrderingTest {
     }
 
     /** A mixed run with range, walls, latency and loss; @return each step's deliveries, in order */
-    private List<List<Map.Entry<String, List<Delivery>>>> run() {
+    private List<List<Map.Entry<String, List<MessageDelivery>>>> run() {
         CommunicationsSystem comms = new CommunicationsSystem(ROBOTS, new CommsSettings(2500, true, 2, 0.5, 100), 99);
         FakePositions moving = new FakePositions()
                 .put("a", 0, 0).put("b", 1000, 0).put("c", 2000, 0).put("d", 3000, 0).block("a", "c");
         comms.join("a", "blue");
         comms.join("d", "blue");
-        List<List<Map.Entry<String, List<Delivery>>>> steps = new ArrayList<>();
+        List<List<Map.Entry<String, List<MessageDelivery>>>> steps = new ArrayList<>();
         for (long step = 1; step <= 20; step++) {
             comms.submit(step, "a", toAll(step * 10));
             comms.submit(step, "b", toGroup(step * 10 + 1, "blue"));

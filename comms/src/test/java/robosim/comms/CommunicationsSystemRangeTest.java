@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.MessageDelivery;
 
 /** How far a message reaches. */
 class CommunicationsSystemRangeTest {
@@ -21,7 +22,7 @@ class CommunicationsSystemRangeTest {
         CommunicationsSystem comms = new CommunicationsSystem(ROBOTS, range(5000), 1);
         FakePositions positions = new FakePositions().put("a", 0, 0).put("b", 3000, 4000).put("c", 3000, 4001);
         comms.submit(1, "a", toAll(7));
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, ALL);
         assertEquals(List.of(7L), ids(out, "b"), "b is exactly 5000 mm away");
         assertEquals(List.of(), ids(out, "c"), "c is 5000.6 mm away");
     }
@@ -40,7 +41,7 @@ class CommunicationsSystemRangeTest {
         FakePositions positions = new FakePositions().put("a", 0, 0).put("b", 500, 0).put("c", 9000, 0);
         comms.submit(1, "a", toAll(7));
         positions.put("b", 9000, 0).put("c", 500, 0);
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, ALL);
         assertEquals(List.of(), ids(out, "b"), "b moved out of range");
         assertEquals(List.of(7L), ids(out, "c"), "c moved into range");
     }

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.MessageDelivery;
 
 /** Whether walls stop messages. */
 class CommunicationsSystemWallsTest {
@@ -20,7 +21,7 @@ class CommunicationsSystemWallsTest {
     void wallBetweenSenderAndRecipientStopsTheMessageWhenWallsBlock() {
         CommunicationsSystem comms = new CommunicationsSystem(ROBOTS, new CommsSettings(0, true, 1, 0, 65536), 1);
         comms.submit(1, "a", toAll(7));
-        Map<String, List<Delivery>> out = comms.deliver(1, positions, ALL);
+        Map<String, List<MessageDelivery>> out = comms.deliver(1, positions, ALL);
         assertEquals(List.of(), ids(out, "b"), "a wall stands between a and b");
         assertEquals(List.of(7L), ids(out, "c"), "nothing stands between a and c");
     }

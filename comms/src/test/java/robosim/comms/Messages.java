@@ -2,22 +2,24 @@ package robosim.comms;
 
 import java.util.List;
 import java.util.Map;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
 
 /** Short ways to build messages and read deliveries in tests. */
 final class Messages {
     private Messages() {
     }
 
-    static Outgoing toRobot(long id, String robot) {
-        return new Outgoing(id, Outgoing.Mode.POINT_TO_POINT, robot, "text", "m" + id);
+    static Command.SendMessage toRobot(long id, String robot) {
+        return new Command.SendMessage(id, Command.Addressing.ROBOT, robot, "text", "m" + id);
     }
 
-    static Outgoing toGroup(long id, String group) {
-        return new Outgoing(id, Outgoing.Mode.MULTICAST, group, "text", "m" + id);
+    static Command.SendMessage toGroup(long id, String group) {
+        return new Command.SendMessage(id, Command.Addressing.GROUP, group, "text", "m" + id);
     }
 
-    static Outgoing toAll(long id) {
-        return new Outgoing(id, Outgoing.Mode.BROADCAST, null, "text", "m" + id);
+    static Command.SendMessage toAll(long id) {
+        return new Command.SendMessage(id, Command.Addressing.ALL, null, "text", "m" + id);
     }
 
     static CommsSettings range(double maxRange) {
@@ -33,7 +35,7 @@ final class Messages {
     }
 
     /** @return the ids {@code robot} received, in order; empty if it received nothing */
-    static List<Long> ids(Map<String, List<Delivery>> deliveries, String robot) {
-        return deliveries.getOrDefault(robot, List.of()).stream().map(Delivery::id).toList();
+    static List<Long> ids(Map<String, List<MessageDelivery>> deliveries, String robot) {
+        return deliveries.getOrDefault(robot, List.of()).stream().map(MessageDelivery::id).toList();
     }
 }

@@ -7,8 +7,6 @@ import java.util.Map;
 import java.util.Set;
 import robosim.comms.CommsSettings;
 import robosim.comms.CommunicationsSystem;
-import robosim.comms.Delivery;
-import robosim.comms.Outgoing;
 import robosim.comms.Positions;
 import robosim.protocol.Command;
 import robosim.protocol.MessageDelivery;
@@ -32,7 +30,7 @@ final class MessageRouter {
     /** @return whether the command was a messaging command, now taken */
     boolean take(long step, String robot, Command c) {
         if (c instanceof Command.SendMessage m) {
-            String problem = comms.submit(step, robot, new Outgoing(m.id(), mode(m.mode()), m.to(), m.kind(), m.body()));
+            String problem = comms.submit(step, robot, m);
             if (problem != null) {
                 error(robot, problem);
             } else {
@@ -57,13 +55,7 @@ final class MessageRouter {
     /** Delivers what is due after {@code step}; what each robot reads next replaces what it read. */
     void deliver(long step, Positions positions, Set<String> connected) {
         delivered.clear();
-        for (Map.Entry<String, List<Delivery>> e : comms.deliver(step, positions, connected).entrySet()) {
-            List<MessageDelivery> list = new ArrayList<>();
-            for (Delivery d : e.getValue()) {
-                list.add(new MessageDelivery(d.from(), addressing(d.mode()), d.to(), d.kind(), d.body(), d.sentStep(), d.id()));
-            }
-            delivered.put(e.getKey(), list);
-        }
+        delivered.putAll(comms.deliver(step, positions, connected));
         errors.clear();
         errors.putAll(pendingErrors);
         pendingErrors.clear();
@@ -91,21 +83,5 @@ final class MessageRouter {
 
     void setSettings(CommsSettings settings) {
         comms.setSettings(settings);
-    }
-
-    private static Outgoing.Mode mode(Command.Addressing a) {
-        return switch (a) {
-            case ROBOT -> Outgoing.Mode.POINT_TO_POINT;
-            case GROUP -> Outgoing.Mode.MULTICAST;
-            case ALL -> Outgoing.Mode.BROADCAST;
-        };
-    }
-
-    private static Command.Addressing addressing(Outgoing.Mode m) {
-        return switch (m) {
-            case POINT_TO_POINT -> Command.Addressing.ROBOT;
-            case MULTICAST -> Command.Addressing.GROUP;
-            case BROADCAST -> Command.Addressing.ALL;
-        };
     }
 }
