@@ -21,11 +21,8 @@ public final class FrameDecoder {
      * @param maxFrame the largest payload accepted, in bytes
      */
     public FrameDecoder(MessageCodec codec, int maxFrame) {
-        if (maxFrame <= 0) {
-            throw new IllegalArgumentException(maxFrame + " was supplied for maxFrame: it must be greater than 0");
-        }
         this.codec = codec;
-        this.maxFrame = maxFrame;
+        this.maxFrame = Frames.checkMaxFrame(maxFrame);
     }
 
     /**
@@ -47,13 +44,7 @@ public final class FrameDecoder {
                 }
                 int length = header.getInt(0);
                 header.clear();
-                if (length == 0) {
-                    throw new FrameException("frame of 0 bytes: a frame holds at least 1 byte");
-                }
-                if (length < 0 || length > maxFrame) {
-                    throw new FrameException("frame of " + Integer.toUnsignedString(length)
-                            + " bytes exceeds the limit of " + maxFrame + " bytes");
-                }
+                Frames.checkLength(length, maxFrame);
                 payload = new byte[length];
                 filled = 0;
             }
@@ -72,19 +63,5 @@ public final class FrameDecoder {
     /** @return whether a frame has been started and not finished */
     public boolean midFrame() {
         return payload != null || header.position() > 0;
-    }
-
-    /**
-     * Encodes one message as a whole frame.
-     *
-     * @param codec   encodes the payload
-     * @param message the message
-     * @return the frame, ready to write
-     */
-    public static ByteBuffer frame(MessageCodec codec, Message message) {
-        byte[] p = codec.encode(message);
-        ByteBuffer b = ByteBuffer.allocate(4 + p.length);
-        b.putInt(p.length).put(p).flip();
-        return b;
     }
 }

@@ -24,12 +24,9 @@ public final class FrameReader {
      * @param maxFrame the largest payload accepted, in bytes
      */
     public FrameReader(InputStream in, MessageCodec codec, int maxFrame) {
-        if (maxFrame <= 0) {
-            throw new IllegalArgumentException(maxFrame + " was supplied for maxFrame: it must be greater than 0");
-        }
+        this.maxFrame = Frames.checkMaxFrame(maxFrame);
         this.in = new DataInputStream(new BufferedInputStream(in, 1 << 16));
         this.codec = codec;
-        this.maxFrame = maxFrame;
     }
 
     /**
@@ -50,13 +47,7 @@ public final class FrameReader {
         } catch (EOFException e) {
             throw new FrameException("stream ended inside a frame header");
         }
-        if (length == 0) {
-            throw new FrameException("frame of 0 bytes: a frame holds at least 1 byte");
-        }
-        if (length < 0 || length > maxFrame) {
-            throw new FrameException("frame of " + Integer.toUnsignedString(length)
-                    + " bytes exceeds the limit of " + maxFrame + " bytes");
-        }
+        Frames.checkLength(length, maxFrame);
         byte[] payload = new byte[length];
         try {
             in.readFully(payload);

@@ -3,6 +3,7 @@ package robosim.protocol;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.ByteBuffer;
 
 /** Writes length-prefixed frames (see {@link FrameReader}); one flush per message. */
 public final class FrameWriter {
@@ -25,13 +26,20 @@ public final class FrameWriter {
      * @throws IOException if the stream fails
      */
     public synchronized void write(Message message) throws IOException {
-        byte[] payload = codec.encode(message);
-        int n = payload.length;
-        out.write(n >>> 24);
-        out.write(n >>> 16);
-        out.write(n >>> 8);
-        out.write(n);
-        out.write(payload);
+        ByteBuffer frame = frame(codec, message);
+        out.write(frame.array(), 0, frame.limit());
         out.flush();
+    }
+
+    /**
+     * Encodes one message as a whole frame, for non-blocking writers (the same frame can go to
+     * many peers: give each a duplicate).
+     *
+     * @param codec   encodes the payload
+     * @param message the message
+     * @return the frame, ready to write
+     */
+    public static ByteBuffer frame(MessageCodec codec, Message message) {
+        return Frames.frame(codec.encode(message));
     }
 }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.FrameDecoder;
+import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 
@@ -94,7 +95,7 @@ final class Connection {
         if (closed || closeWhenFlushed) {
             return;
         }
-        sendFrame(FrameDecoder.frame(codec, m));
+        sendFrame(FrameWriter.frame(codec, m));
     }
 
     /**

@@ -13,7 +13,7 @@ import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.comms.CommsSettings;
 import robosim.protocol.Command;
-import robosim.protocol.FrameDecoder;
+import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.Message;
@@ -87,7 +87,7 @@ final class SessionRules {
         if (viewers.isEmpty()) {
             return;
         }
-        ByteBuffer encoded = FrameDecoder.frame(codec, frame);
+        ByteBuffer encoded = FrameWriter.frame(codec, frame);
         for (Connection v : viewers) {
             v.sendFrame(encoded.duplicate());
         }
