@@ -253,16 +253,15 @@ public final class EnvironmentServer implements AutoCloseable {
             if (key.isValid() && key.isReadable()) {
                 List<Message> messages = c.read(readBuffer);
                 if (messages == null) {
-                    rules.handle(new ServerEvent.Closed(c, SessionRules.DISCONNECTED));
-                    c.shut();
+                    rules.closed(c, SessionRules.DISCONNECTED);
                     return;
                 }
                 for (Message m : messages) {
-                    rules.handle(new ServerEvent.Received(c, m));
+                    rules.received(c, m);
                 }
             }
         } catch (IOException e) {
-            rules.handle(new ServerEvent.Closed(c, e.getMessage()));
+            rules.closed(c, e.getMessage());
             c.close(e.getMessage());
         }
     }

@@ -93,15 +93,12 @@ final class SessionRules {
         }
     }
 
-    void handle(ServerEvent event) {
-        if (event instanceof ServerEvent.Received r) {
-            if (r.from().kind == Connection.Kind.ROBOT) {
-                fromRobot(r.from(), r.message());
-            } else {
-                fromViewer(r.from(), r.message());
-            }
-        } else if (event instanceof ServerEvent.Closed c) {
-            closed(c.from(), c.reason());
+    /** A peer sent a message. */
+    void received(Connection from, Message m) {
+        if (from.kind == Connection.Kind.ROBOT) {
+            fromRobot(from, m);
+        } else {
+            fromViewer(from, m);
         }
     }
 
@@ -224,7 +221,8 @@ final class SessionRules {
         }
     }
 
-    private void closed(Connection c, String reason) {
+    /** A peer's connection ended, cleanly ({@link #DISCONNECTED}) or for the reason given. */
+    void closed(Connection c, String reason) {
         if (DISCONNECTED.equals(reason)) {
             c.shut();
         }
