@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -55,11 +56,8 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--connect-timeout", defaultValue = "600", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
     long connectTimeoutS;
 
-    @Option(names = "--record", paramLabel = "FILE", description = "record every step to FILE (see robosim replay)")
-    Path record;
-
-    @Option(names = "--record-sensors", description = "keep the sonar and laser readings in the recording")
-    boolean recordSensors;
+    @Mixin
+    RecordOptions recording;
 
     @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
@@ -94,11 +92,9 @@ final class EnvCommand implements Callable<Integer> {
                 return 1;
             }
             RecordingWriter recorder = null;
-            if (record != null) {
-                try {
-                    recorder = RecordingWriter.create(record, recordSensors);
-                } catch (IOException e) {
-                    err.println("robosim env: cannot create recording " + record + ": " + e.getMessage());
+            if (recording.requested()) {
+                recorder = recording.create(err, "env");
+                if (recorder == null) {
                     return 1;
                 }
                 server.addFrameListener(recorder);
@@ -117,7 +113,7 @@ final class EnvCommand implements Callable<Integer> {
             }
             printReport(out, report);
             if (recorder != null) {
-                return Recordings.report(out, err, "env", record, recorder);
+                return recording.report(out, err, "env", recorder);
             }
         }
         return 0;

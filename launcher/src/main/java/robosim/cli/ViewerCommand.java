@@ -1,6 +1,5 @@
 package robosim.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -46,11 +45,8 @@ final class ViewerCommand implements Callable<Integer> {
     @Option(names = "--every", defaultValue = "1", paramLabel = "K", description = "write every K-th step; default ${DEFAULT-VALUE}")
     int every;
 
-    @Option(names = "--record", paramLabel = "FILE", description = "record every step to FILE (see robosim replay)")
-    Path record;
-
-    @Option(names = "--record-sensors", description = "keep the sonar and laser readings in the recording")
-    boolean recordSensors;
+    @Mixin
+    RecordOptions recording;
 
     @Option(names = "--window", description = "show the run in a window: wheel zooms, drag pans (turns the camera in 3D)")
     boolean window;
@@ -62,7 +58,7 @@ final class ViewerCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        if (pngDir == null && record == null && !window) {
+        if (pngDir == null && !recording.requested() && !window) {
             throw new ParameterException(spec.commandLine(),
                     "Missing required option: at least one of '--png-dir=DIR', '--record=FILE' or '--window'");
         }
@@ -88,11 +84,9 @@ final class ViewerCommand implements Callable<Integer> {
             listeners.add(new RenderedFrames(drawing.painter(), new PngFrameWriter(pngDir), every, drawing.trails));
         }
         RecordingWriter recorder = null;
-        if (record != null) {
-            try {
-                recorder = RecordingWriter.create(record, recordSensors);
-            } catch (IOException e) {
-                err.println("robosim viewer: cannot create recording " + record + ": " + e.getMessage());
+        if (recording.requested()) {
+            recorder = recording.create(err, "viewer");
+            if (recorder == null) {
                 return 1;
             }
             listeners.add(recorder);
@@ -117,7 +111,7 @@ final class ViewerCommand implements Callable<Integer> {
                     s.endReason());
         }
         out.flush();
-        return recorder == null ? 0 : Recordings.report(out, err, "viewer", record, recorder);
+        return recorder == null ? 0 : recording.report(out, err, "viewer", recorder);
     }
 
     private String name() {
