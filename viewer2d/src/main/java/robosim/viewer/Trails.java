@@ -71,6 +71,28 @@ public final class Trails {
         paths.clear();
     }
 
+    /** Reads one robot's path without copying it. */
+    @FunctionalInterface
+    public interface PathVisitor {
+        /**
+         * @param robot the robot's name
+         * @param xy    its path as x0, y0, x1, y1, ... in mm; read-only, valid during the call
+         * @param size  how many points of {@code xy} are in use
+         */
+        void visit(String robot, double[] xy, int size);
+    }
+
+    /**
+     * Visits every path in the order the robots first appeared, without copying the points.
+     *
+     * @param visitor reads each path
+     */
+    public void forEach(PathVisitor visitor) {
+        for (Map.Entry<String, Path> e : paths.entrySet()) {
+            visitor.visit(e.getKey(), e.getValue().xy, e.getValue().size / 2);
+        }
+    }
+
     /** @return the robots that have a path, in the order they first appeared */
     public List<String> robots() {
         return new ArrayList<>(paths.keySet());

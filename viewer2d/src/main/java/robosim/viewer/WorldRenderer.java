@@ -43,7 +43,6 @@ public final class WorldRenderer {
     private final RobotPainter robots = new RobotPainter();
     private final LaserPainter lasers = new LaserPainter();
     private final HeatPainter heat = new HeatPainter();
-    private final TrailPainter trailPainter = new TrailPainter();
 
     /** A renderer; it holds no state, so one can be shared. */
     public WorldRenderer() {
@@ -122,7 +121,10 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             drawWorld(g, view, world);
             if (trails != null && options.showTrails()) {
-                trailPainter.draw(g, view, trails, name -> colourOf(world, frame, name));
+                TrailPainter.draw(g, trails, name -> colourOf(world, frame, name), (x, y, out) -> {
+                    out[0] = view.px(x);
+                    out[1] = view.py(y);
+                });
             }
             if (frame != null) {
                 drawRobots(g, view, world, frame, options);

@@ -16,6 +16,7 @@ import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
 import robosim.viewer.FramePainter;
+import robosim.viewer.TrailPainter;
 import robosim.viewer.Trails;
 import robosim.viewer.WorldRenderer;
 
@@ -147,21 +148,10 @@ public final class SolidRenderer implements FramePainter {
 
     private static void drawTrails(Graphics2D g, Projection p, WorldDescription world, ViewerFrame frame,
                                    Trails trails) {
-        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-        for (String robot : trails.robots()) {
-            double[] xy = trails.points(robot);
-            if (xy.length < 4) {
-                continue;
-            }
-            Path2D.Double path = new Path2D.Double();
-            path.moveTo(p.px(xy[0], xy[1], 0), p.py(xy[0], xy[1], 0));
-            for (int i = 2; i + 1 < xy.length; i += 2) {
-                path.lineTo(p.px(xy[i], xy[i + 1], 0), p.py(xy[i], xy[i + 1], 0));
-            }
-            Color c = WorldRenderer.colourOf(world, frame, robot);
-            g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 150));
-            g.draw(path);
-        }
+        TrailPainter.draw(g, trails, robot -> WorldRenderer.colourOf(world, frame, robot), (x, y, out) -> {
+            out[0] = p.px(x, y, 0);
+            out[1] = p.py(x, y, 0);
+        });
     }
 
     private static void drawNames(Graphics2D g, Projection p, ViewerFrame frame) {
