@@ -6,11 +6,11 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * The Pioneer Robot-Object, with ARIA's {@code ArRobot} semantics (see ARIA-SEMANTICS.md): units

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * A SICK LMS200 laser as a range device (ARIA 2.x's {@code ArSick}), named {@code laser}: it scans

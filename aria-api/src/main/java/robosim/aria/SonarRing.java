@@ -1,7 +1,7 @@
 package robosim.aria;
 
 import java.util.List;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.SonarUnit;
 
 /**
  * A robot's sonar ring as ARIA keeps it: one {@link ArSensorReading} per transducer, updated when

@@ -12,7 +12,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.ParameterFileReader;
+import robosim.params.ParameterFileReader;
 
 /** ARIA's rules for the robot's cycle, its counter, sonar readings and tasks. */
 class ArRobotCycleTest {

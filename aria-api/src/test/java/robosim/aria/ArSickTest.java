@@ -12,7 +12,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /** ArSick: a SICK LMS200's scan turned into raw readings and range-device readings. */
 class ArSickTest {

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.ParameterFileReader;
+import robosim.params.ParameterFileReader;
 
 /** ARIA's angle-interval rule for getClosestSonarRange / getClosestSonarNumber, on a p3dx. */
 class ClosestSonarTest {

@@ -2,8 +2,8 @@ package robosim.aria;
 
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.ParameterFileReader;
-import robosim.protocol.params.RobotParameters;
+import robosim.params.ParameterFileReader;
+import robosim.protocol.RobotParameters;
 
 /** Robots whose cycles a test drives by hand, with no Environment. */
 final class Cycles {

@@ -11,7 +11,7 @@ import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
 import robosim.protocol.Welcome;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * What every Robot-Object shares, whatever its API (ARIA's Pioneer, the Nomadic Scout): its name,

@@ -15,7 +15,7 @@ import robosim.bench.CoreBench;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 
 /** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
 @Command(name = "bench", mixinStandardHelpOptions = true,

@@ -6,7 +6,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 
 /**
  * {@code robosim demo}: GoldFinder with 3 Pioneers, each in a JVM of its own, on the medium maze;

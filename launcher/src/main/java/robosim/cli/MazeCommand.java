@@ -11,7 +11,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.world.WorldReader;
 import robosim.examples.goldfinder.Maze;
 import robosim.examples.goldfinder.MazeWorldWriter;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 
 /** {@code robosim maze}: writes a perfect maze as a world file for GoldFinder. */
 @Command(name = "maze", mixinStandardHelpOptions = true,

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 
 /** Starts robot programs in JVMs of their own, with this JVM's classpath, and stops them. */
 public final class RobotProcesses {

@@ -21,7 +21,7 @@ import robosim.protocol.RobotRequests;
 import robosim.protocol.TimeStep;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
-import robosim.protocol.params.ParameterFileReader;
+import robosim.params.ParameterFileReader;
 
 /**
  * A peer that breaks the protocol mid-run is closed with one log line naming it and the reason;

@@ -26,7 +26,7 @@ import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.protocol.ViewerFrame;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /** GoldFinder on generated 8×8 mazes: found, deterministic, and never an overlap. */
 @Timeout(value = 5, unit = TimeUnit.MINUTES)

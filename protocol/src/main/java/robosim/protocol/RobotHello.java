@@ -1,6 +1,5 @@
 package robosim.protocol;
 
-import robosim.protocol.params.RobotParameters;
 
 /**
  * The first message of a robot's connection: who it is and what body it has.

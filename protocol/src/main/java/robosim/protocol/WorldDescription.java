@@ -1,7 +1,6 @@
 package robosim.protocol;
 
 import java.util.List;
-import robosim.protocol.params.RobotParameters;
 
 /**
  * The static world, sent once to every viewer that attaches.

@@ -1,8 +1,6 @@
 package robosim.protocol;
 
 import java.util.List;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
 
 /**
  * Literal messages for the codec and frame tests. Every field holds a value that differs from its

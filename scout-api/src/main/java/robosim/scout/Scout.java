@@ -11,11 +11,11 @@ import java.util.function.BiConsumer;
 import java.util.logging.Logger;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
-import robosim.hw.RobotParameterFiles;
+import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * The Nomadic Scout Robot-Object: the Nomad client library's calls, with their names, arguments and

@@ -9,7 +9,7 @@ import java.util.List;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParametersReader;
+import robosim.params.RobotParametersReader;
 
 /**
  * A Scout with no Environment: it counts as connected, records what it would send, and each time

@@ -1,6 +1,6 @@
 package robosim.viewer;
 
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * How a robot's body is drawn, the same way in every view: the rectangle of its parameters, or a

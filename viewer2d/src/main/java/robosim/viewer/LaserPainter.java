@@ -8,7 +8,7 @@ import java.awt.geom.Rectangle2D;
 import robosim.geometry.Pose2D;
 import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * Draws a robot's latest laser scan as faint rays from the laser to each reading, with a dot where

@@ -10,8 +10,8 @@ import java.awt.geom.Path2D;
 import robosim.geometry.Pose2D;
 import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * Draws one robot's body, heading line, sonar rays, name and odometry ghost; the

@@ -7,8 +7,8 @@ import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * A literal world shared by the tests: 4000 x 2000 mm, one 500 mm square obstacle from (1000, 500)

@@ -11,7 +11,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import robosim.protocol.ViewerFrame.RobotView;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * Laser scans in the fixture world (1 px is 5 mm, y flipped). The robot stands at (3000, 600) mm,

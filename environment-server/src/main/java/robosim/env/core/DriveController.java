@@ -1,7 +1,7 @@
 package robosim.env.core;
 
 import robosim.protocol.Command;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * The motion modes of a Pioneer's controller (see ARIA-SEMANTICS.md): what translational and

@@ -9,8 +9,8 @@ import robosim.geometry.Pose2D;
 import robosim.geometry.Surroundings;
 import robosim.protocol.Command;
 import robosim.protocol.HeatReading;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * One robot's sensors as the Environment computes them from the robot's true pose: the sonar ring

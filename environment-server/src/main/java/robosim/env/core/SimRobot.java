@@ -11,7 +11,7 @@ import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * One robot's simulated state: its true pose and its odometry, velocities within its limits, stall,

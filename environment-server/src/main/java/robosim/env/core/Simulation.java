@@ -22,7 +22,7 @@ import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 import robosim.protocol.ViewerFrame;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * The simulation core: the world, its robots, and one {@link #step} at a time. No sockets,

@@ -13,9 +13,9 @@ import org.locationtech.jts.geom.Polygon;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
-import robosim.protocol.params.ParameterFileException;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.RobotParametersReader;
+import robosim.params.ParameterFileException;
+import robosim.protocol.RobotParameters;
+import robosim.params.RobotParametersReader;
 
 /**
  * Turns {@code <robot>} elements into {@link RobotSpec}s: reads each robot's parameter file

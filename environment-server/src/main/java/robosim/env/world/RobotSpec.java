@@ -3,7 +3,7 @@ package robosim.env.world;
 import java.nio.file.Path;
 import robosim.geometry.BodyShape;
 import robosim.geometry.Pose2D;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * A robot that must connect before the run starts, with its start pose and the parameters read
@@ -33,7 +33,7 @@ public record RobotSpec(String name, String type, double x, double y, double th,
      * @param p the robot's parameters
      * @return its body
      */
-    public static BodyShape bodyOf(robosim.protocol.params.RobotParameters p) {
+    public static BodyShape bodyOf(robosim.protocol.RobotParameters p) {
         if (p.isRound()) {
             return BodyShape.disc(p.robotRadius(), ROUND_SIDES);
         }

@@ -8,8 +8,8 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Command;
-import robosim.protocol.params.ParameterFileReader;
-import robosim.protocol.params.RobotParameters;
+import robosim.params.ParameterFileReader;
+import robosim.protocol.RobotParameters;
 
 /** The body, limits and sensor poses simulated are those the robot's program sent. */
 class RobotParametersInUseTest {

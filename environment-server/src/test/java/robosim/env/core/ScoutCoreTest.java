@@ -11,8 +11,8 @@ import org.junit.jupiter.api.Test;
 import robosim.env.world.RobotSpec;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.RobotParametersReader;
+import robosim.protocol.RobotParameters;
+import robosim.params.RobotParametersReader;
 
 /** What the Environment does for a Scout: a round body, a bumper ring, wheel moves, accelerations. */
 class ScoutCoreTest {

@@ -7,8 +7,8 @@ import java.util.List;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
-import robosim.protocol.params.ParameterFileReader;
-import robosim.protocol.params.RobotParameters;
+import robosim.params.ParameterFileReader;
+import robosim.protocol.RobotParameters;
 
 /** Literal worlds for the core's tests. */
 final class Worlds {

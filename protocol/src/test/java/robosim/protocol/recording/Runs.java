@@ -9,8 +9,8 @@ import robosim.protocol.MessageDelivery;
 import robosim.protocol.ViewerFrame;
 import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * A literal run for the recording tests: a 6000 x 4000 mm world with one wall and two robots;

@@ -14,7 +14,7 @@ import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 import robosim.viewer.RobotPalette;
 import robosim.viewer.WorldRenderer;
 

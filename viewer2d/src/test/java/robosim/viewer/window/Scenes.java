@@ -9,8 +9,8 @@ import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * A literal world for the window tests, 4000 x 2000 mm with a 500 mm square block from (1000, 500)

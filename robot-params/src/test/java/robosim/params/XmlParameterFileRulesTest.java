@@ -1,4 +1,6 @@
-package robosim.protocol.params;
+package robosim.params;
+
+import robosim.protocol.RobotParameters;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

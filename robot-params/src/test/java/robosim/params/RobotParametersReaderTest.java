@@ -1,4 +1,4 @@
-package robosim.protocol.params;
+package robosim.params;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

@@ -1,4 +1,6 @@
-package robosim.protocol.params;
+package robosim.params;
+
+import robosim.protocol.RobotParameters;
 
 import java.io.UncheckedIOException;
 import java.nio.file.Path;

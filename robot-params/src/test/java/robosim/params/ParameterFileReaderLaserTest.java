@@ -1,4 +1,7 @@
-package robosim.protocol.params;
+package robosim.params;
+
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

@@ -1,4 +1,4 @@
-package robosim.protocol.params;
+package robosim.protocol;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
 import java.util.List;

@@ -1,4 +1,4 @@
-package robosim.protocol.params;
+package robosim.protocol;
 
 /**
  * One sonar transducer's mounting pose in the robot frame (x forward, y left).

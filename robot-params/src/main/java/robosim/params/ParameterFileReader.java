@@ -1,4 +1,7 @@
-package robosim.protocol.params;
+package robosim.params;
+
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;

@@ -1,10 +1,9 @@
-package robosim.hw;
+package robosim.params;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.RobotParametersReader;
+import robosim.protocol.RobotParameters;
 
 /**
  * Finds and reads a robot parameter file, in either form ({@code .p} or {@code .xml}; see
@@ -23,7 +22,7 @@ public final class RobotParameterFiles {
      * @param file a path, or a shipped name such as {@code p3dx} or {@code scout.xml}
      * @return the robot's parameters
      * @throws IllegalArgumentException if no such file is found
-     * @throws robosim.protocol.params.ParameterFileException if the file breaks a rule
+     * @throws robosim.params.ParameterFileException if the file breaks a rule
      */
     public static RobotParameters load(String file) {
         return RobotParametersReader.read(resolve(file));

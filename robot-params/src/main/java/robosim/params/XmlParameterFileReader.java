@@ -1,4 +1,6 @@
-package robosim.protocol.params;
+package robosim.params;
+
+import robosim.protocol.RobotParameters;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonToken;

@@ -1,4 +1,4 @@
-package robosim.protocol.params;
+package robosim.params;
 
 import java.nio.file.Path;
 
