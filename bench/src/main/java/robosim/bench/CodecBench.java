@@ -11,11 +11,11 @@ import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.RobotState;
 import robosim.protocol.TimeStep;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 
 /**
  * The wire formats compared on the messages of every step: a robot's time step (state and 16
- * sonars), its requests (a velocity and a rotation), and a viewer frame of 100 robots. Every
+ * sonars), its requests (a velocity and a rotation), and a viewer snapshot of 100 robots. Every
  * format and message is warmed up first; each figure is the median of five trials.
  */
 public final class CodecBench {
@@ -30,13 +30,13 @@ public final class CodecBench {
     static List<Message> messages() {
         int[] sonar = {812, 1034, 2210, 5000, 5000, 3021, 1500, 700, 650, 900, 1200, 5000, 4000, 2222, 1111, 999};
         RobotState state = new RobotState(1234, 123_400, 2041.53, 7012.25, -37.5, 300, 12.5, 293.4, 306.6, false, sonar, 0);
-        List<ViewerFrame.RobotView> views = new ArrayList<>();
+        List<Snapshot.RobotView> views = new ArrayList<>();
         for (int k = 0; k < 100; k++) {
-            views.add(new ViewerFrame.RobotView("b" + k, 1000.5 + k, 2000.25 + k, k - 50.5, false, true, sonar));
+            views.add(new Snapshot.RobotView("b" + k, 1000.5 + k, 2000.25 + k, k - 50.5, false, true, sonar));
         }
         return List.of(new TimeStep(1235, 123_400, state),
                 new RobotRequests(1235, List.of(new Command.SetVel(300), new Command.SetRotVel(0))),
-                new ViewerFrame(1234, 123_400, views));
+                new Snapshot(1234, 123_400, views));
     }
 
     /**

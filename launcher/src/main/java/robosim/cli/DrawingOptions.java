@@ -1,7 +1,7 @@
 package robosim.cli;
 
 import picocli.CommandLine.Option;
-import robosim.viewer.FramePainter;
+import robosim.viewer.SnapshotPainter;
 import robosim.viewer.RenderOptions;
 import robosim.viewer.WorldRenderer;
 import robosim.viewer.view3d.Camera;
@@ -71,8 +71,8 @@ final class DrawingOptions {
     }
 
     /** @return the painter for PNG and GIF frames; throws IllegalArgumentException naming a bad value */
-    FramePainter painter() {
-        return threeD ? new SolidRenderer(scene()) : FramePainter.flat(new WorldRenderer(), render());
+    SnapshotPainter painter() {
+        return threeD ? new SolidRenderer(scene()) : SnapshotPainter.flat(new WorldRenderer(), render());
     }
 
     /** @return the window's initial state, as these options say */

@@ -97,7 +97,7 @@ final class EnvCommand implements Callable<Integer> {
                 if (recorder == null) {
                     return 1;
                 }
-                server.addFrameListener(recorder);
+                server.addSnapshotListener(recorder);
             }
             out.printf(Locale.ROOT, "Seed: %d%n", seed);
             out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,

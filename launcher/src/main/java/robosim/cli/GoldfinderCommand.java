@@ -113,7 +113,7 @@ final class GoldfinderCommand implements Callable<Integer> {
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
                     ViewerSummary v = viewer.get(60, TimeUnit.SECONDS);
-                    o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", v.framesWritten(), frames.toAbsolutePath());
+                    o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", v.imagesWritten(), frames.toAbsolutePath());
                 }
                 return report.find() != null ? 0 : NOT_FOUND;
             } finally {

@@ -47,12 +47,12 @@ final class RecordOptions {
      */
     int report(PrintWriter out, PrintWriter err, String cmd, RecordingWriter writer) {
         if (writer.failure() != null) {
-            err.println("robosim " + cmd + ": recording " + file + " failed after " + writer.framesWritten()
+            err.println("robosim " + cmd + ": recording " + file + " failed after " + writer.snapshotsWritten()
                     + " steps: " + writer.failure().getMessage() + "; the steps before are readable");
             err.flush();
             return 1;
         }
-        long steps = writer.framesWritten();
+        long steps = writer.snapshotsWritten();
         out.printf(Locale.ROOT, "Recording: %s, %d steps in %d bytes (%.0f bytes per step%s)%n", file.toAbsolutePath(),
                 steps, writer.bytesWritten(), steps == 0 ? 0.0 : (double) writer.bytesWritten() / steps,
                 writer.sensors() ? ", sensors kept" : "");

@@ -16,9 +16,9 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.recording.Recording;
 import robosim.protocol.recording.RecordingException;
 import robosim.protocol.recording.RecordingReader;
-import robosim.viewer.FrameSink;
-import robosim.viewer.PngFrameWriter;
-import robosim.viewer.RenderedFrames;
+import robosim.viewer.ImageSink;
+import robosim.viewer.PngImageWriter;
+import robosim.viewer.RenderedImages;
 import robosim.viewer.replay.GifWriter;
 import robosim.viewer.replay.RecordingSummary;
 import robosim.viewer.replay.Replay;
@@ -131,7 +131,7 @@ final class ReplayCommand implements Callable<Integer> {
         out.printf(Locale.ROOT, "World: %s, %.0f x %.0f mm, %d ms steps, %d walls and obstacles%n", s.world(), s.width(),
                 s.height(), s.stepMs(), s.obstacles());
         out.printf(Locale.ROOT, "Steps: %d to %d (%d frames), %.1f s simulated, %.0f bytes per step%n", s.firstStep(),
-                s.lastStep(), s.frames(), s.timeMs() / 1000.0, s.frames() == 0 ? 0.0 : (double) bytes / s.frames());
+                s.lastStep(), s.snapshots(), s.timeMs() / 1000.0, s.snapshots() == 0 ? 0.0 : (double) bytes / s.snapshots());
         out.printf(Locale.ROOT, "Ended: %s%n", s.endReason() != null ? s.endReason()
                 : "abruptly after step " + s.lastStep() + " (no end record)");
         out.printf(Locale.ROOT, "Messages: %d sent, %d said%n", s.messages(), s.said());
@@ -144,7 +144,7 @@ final class ReplayCommand implements Callable<Integer> {
     }
 
     private int draw(PrintWriter out, PrintWriter err, ReplayRange range) throws IOException {
-        PngFrameWriter png = pngDir == null ? null : new PngFrameWriter(pngDir);
+        PngImageWriter png = pngDir == null ? null : new PngImageWriter(pngDir);
         Replay.Result result;
         GifWriter gifWriter = null;
         try (RecordingReader reader = RecordingReader.open(file)) {
@@ -152,7 +152,7 @@ final class ReplayCommand implements Callable<Integer> {
                 gifWriter = new GifWriter(gif, Math.round(reader.world().stepMs() * (double) every / speed));
             }
             GifWriter g = gifWriter;
-            FrameSink sink = (step, image) -> {
+            ImageSink sink = (step, image) -> {
                 if (png != null) {
                     png.accept(step, image);
                 }
@@ -160,7 +160,7 @@ final class ReplayCommand implements Callable<Integer> {
                     g.accept(step, image);
                 }
             };
-            result = Replay.run(reader, new RenderedFrames(drawing.painter(), sink, every, drawing.trails), range);
+            result = Replay.run(reader, new RenderedImages(drawing.painter(), sink, every, drawing.trails), range);
         } finally {
             if (gifWriter != null) {
                 gifWriter.close();
@@ -168,12 +168,12 @@ final class ReplayCommand implements Callable<Integer> {
         }
         String steps = result.firstStep() < 0 ? "no step in range" : "steps " + result.firstStep() + " to " + result.lastStep();
         if (png != null) {
-            out.printf(Locale.ROOT, "Replay: %d PNG frames (%s) written to %s%n", png.framesWritten(), steps,
+            out.printf(Locale.ROOT, "Replay: %d PNG frames (%s) written to %s%n", png.imagesWritten(), steps,
                     pngDir.toAbsolutePath());
         }
         if (gifWriter != null) {
             out.printf(Locale.ROOT, "GIF: %d frames (%s), %d ms each, looping, written to %s (%d bytes)%n",
-                    gifWriter.frames(), steps, gifWriter.delayCentiseconds() * 10, gif.toAbsolutePath(), Files.size(gif));
+                    gifWriter.images(), steps, gifWriter.delayCentiseconds() * 10, gif.toAbsolutePath(), Files.size(gif));
         }
         out.flush();
         return problem(err, result.problem());

@@ -15,10 +15,10 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.PngFrameWriter;
-import robosim.viewer.RenderedFrames;
+import robosim.viewer.PngImageWriter;
+import robosim.viewer.RenderedImages;
 import robosim.viewer.ViewerClient;
 import robosim.viewer.ViewerException;
 import robosim.viewer.ViewerOptions;
@@ -62,7 +62,7 @@ final class ViewerCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(),
                     "Missing required option: at least one of '--png-dir=DIR', '--record=FILE' or '--window'");
         }
-        List<FrameListener> listeners = new ArrayList<>();
+        List<SnapshotListener> listeners = new ArrayList<>();
         ViewerOptions options;
         try {
             drawing.validate();
@@ -81,7 +81,7 @@ final class ViewerCommand implements Callable<Integer> {
             }
         }
         if (pngDir != null) {
-            listeners.add(new RenderedFrames(drawing.painter(), new PngFrameWriter(pngDir), every, drawing.trails));
+            listeners.add(new RenderedImages(drawing.painter(), new PngImageWriter(pngDir), every, drawing.trails));
         }
         RecordingWriter recorder = null;
         if (recording.requested()) {
@@ -105,9 +105,9 @@ final class ViewerCommand implements Callable<Integer> {
         }
         if (pngDir != null) {
             out.printf(Locale.ROOT, "Viewer: world %s, %d frames received, %d PNG frames written to %s (%s)%n",
-                    s.world(), s.framesReceived(), s.framesWritten(), pngDir.toAbsolutePath(), s.endReason());
+                    s.world(), s.snapshotsReceived(), s.imagesWritten(), pngDir.toAbsolutePath(), s.endReason());
         } else {
-            out.printf(Locale.ROOT, "Viewer: world %s, %d frames received (%s)%n", s.world(), s.framesReceived(),
+            out.printf(Locale.ROOT, "Viewer: world %s, %d frames received (%s)%n", s.world(), s.snapshotsReceived(),
                     s.endReason());
         }
         out.flush();

@@ -2,7 +2,7 @@ package robosim.cli;
 
 import java.nio.file.Path;
 import java.time.Duration;
-import robosim.viewer.PngFrameWriter;
+import robosim.viewer.PngImageWriter;
 import robosim.viewer.RenderOptions;
 import robosim.viewer.ViewerClient;
 import robosim.viewer.ViewerOptions;
@@ -17,6 +17,6 @@ final class Viewers {
         ViewerOptions options = ViewerOptions.of(host, port).withName("png:" + dir.getFileName())
                 .withEvery(every).withRender(new RenderOptions(width, sonar, names))
                 .withReadTimeout(readTimeout);
-        return new ViewerClient(options, new PngFrameWriter(dir));
+        return new ViewerClient(options, new PngImageWriter(dir));
     }
 }

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 
 /** An Environment and two robots, each in a JVM of its own, over TCP on loopback. */
 @Timeout(value = 3, unit = TimeUnit.MINUTES)
@@ -50,14 +50,14 @@ class EndToEndTest {
 
     @Test
     void theSameWorldAndProgramsTwiceGiveIdenticalTrajectories() throws Exception {
-        List<ViewerFrame> first = wanderRun(dir.resolve("one"));
-        List<ViewerFrame> second = wanderRun(dir.resolve("two"));
-        assertEquals(151, first.size(), "frames 0 to 150");
+        List<Snapshot> first = wanderRun(dir.resolve("one"));
+        List<Snapshot> second = wanderRun(dir.resolve("two"));
+        assertEquals(151, first.size(), "snapshots 0 to 150");
         assertEquals(first.size(), second.size());
         boolean moved = false;
         for (int i = 0; i < first.size(); i++) {
-            List<ViewerFrame.RobotView> x = first.get(i).robots();
-            List<ViewerFrame.RobotView> y = second.get(i).robots();
+            List<Snapshot.RobotView> x = first.get(i).robots();
+            List<Snapshot.RobotView> y = second.get(i).robots();
             for (int k = 0; k < x.size(); k++) {
                 String at = "step " + first.get(i).step() + " robot " + x.get(k).name();
                 assertEquals(x.get(k).x(), y.get(k).x(), 0.0, at);
@@ -69,14 +69,14 @@ class EndToEndTest {
         assertTrue(moved, "the robots moved");
     }
 
-    private List<ViewerFrame> wanderRun(Path logs) throws Exception {
+    private List<Snapshot> wanderRun(Path logs) throws Exception {
         Files.createDirectories(logs);
         try (Harness h = new Harness("small-maze.xml", ServerOptions.loopback().withMaxSteps(150).withWaitViewers(1))) {
-            var frames = h.collectFrames();
+            var snapshots = h.collectSnapshots();
             h.robotJvm(DemoCommand.WANDER, "r1", logs.resolve("r1.log"));
             h.robotJvm(DemoCommand.WANDER, "r2", logs.resolve("r2.log"));
             h.await();
-            return frames.get(60, TimeUnit.SECONDS);
+            return snapshots.get(60, TimeUnit.SECONDS);
         }
     }
 }

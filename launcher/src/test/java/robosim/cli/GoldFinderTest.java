@@ -24,7 +24,7 @@ import robosim.examples.goldfinder.GoldFinder;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.RobotParameters;
 
@@ -38,8 +38,8 @@ class GoldFinderTest {
     @TempDir
     Path dir;
 
-    /** One run: its report and every frame a viewer saw. */
-    record Run(RunReport report, WorldDescription world, List<ViewerFrame> frames) { }
+    /** One run: its report and every snapshot a viewer saw. */
+    record Run(RunReport report, WorldDescription world, List<Snapshot> snapshots) { }
 
     Run run(long seed) throws Exception {
         Path file = MazeCommand.write(8, 8, 1500, seed, 8, dir.resolve("maze-" + seed + ".xml"));
@@ -55,13 +55,13 @@ class GoldFinderTest {
                     throw new IllegalStateException(e);
                 }
             });
-            FrameCollector viewer = new FrameCollector(server.viewerPort());
+            SnapshotCollector viewer = new SnapshotCollector(server.viewerPort());
             List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), ROBOTS, 1500, seed);
             RunReport r = report.get(3, TimeUnit.MINUTES);
             for (Thread t : team) {
                 t.join(10_000);
             }
-            return new Run(r, viewer.world(), viewer.frames());
+            return new Run(r, viewer.world(), viewer.snapshots());
         }
     }
 
@@ -88,7 +88,7 @@ class GoldFinderTest {
         assertNotNull(a.report().find());
         assertEquals(a.report().find(), b.report().find());
         assertEquals(a.report().robots(), b.report().robots());
-        assertEquals(a.frames().size(), b.frames().size());
+        assertEquals(a.snapshots().size(), b.snapshots().size());
     }
 
     /** Every step, from the true poses: no body inside a wall, no two bodies overlapping. */
@@ -103,21 +103,21 @@ class GoldFinderTest {
             RobotParameters p = r.parameters();
             shapes.add(BodyShape.rectangle(p.robotLengthFront(), p.robotLengthRear(), p.robotWidth()));
         }
-        assertFalse(run.frames().isEmpty());
+        assertFalse(run.snapshots().isEmpty());
         org.locationtech.jts.geom.GeometryFactory f = new org.locationtech.jts.geom.GeometryFactory();
-        for (ViewerFrame frame : run.frames()) {
+        for (Snapshot snapshot : run.snapshots()) {
             List<Polygon> bodies = new ArrayList<>();
-            for (int i = 0; i < frame.robots().size(); i++) {
-                ViewerFrame.RobotView v = frame.robots().get(i);
+            for (int i = 0; i < snapshot.robots().size(); i++) {
+                Snapshot.RobotView v = snapshot.robots().get(i);
                 Pose2D pose = new Pose2D(v.x(), v.y(), Math.toRadians(v.th()));
-                String at = "seed " + seed + " step " + frame.step() + " robot " + v.name();
+                String at = "seed " + seed + " step " + snapshot.step() + " robot " + v.name();
                 assertFalse(geometry.overlaps(shapes.get(i), pose, -1), at + " overlaps a wall");
                 bodies.add(f.createPolygon(shapes.get(i).ringAt(pose)));
             }
             for (int i = 0; i < bodies.size(); i++) {
                 for (int j = i + 1; j < bodies.size(); j++) {
-                    assertFalse(bodies.get(i).intersects(bodies.get(j)), "seed " + seed + " step " + frame.step()
-                            + ": robots " + frame.robots().get(i).name() + " and " + frame.robots().get(j).name() + " overlap");
+                    assertFalse(bodies.get(i).intersects(bodies.get(j)), "seed " + seed + " step " + snapshot.step()
+                            + ": robots " + snapshot.robots().get(i).name() + " and " + snapshot.robots().get(j).name() + " overlap");
                 }
             }
         }

@@ -18,7 +18,7 @@ import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 
 /** An Environment on loopback for a test, and the tools to watch it. Every wait is bounded. */
@@ -60,26 +60,26 @@ final class Harness implements AutoCloseable {
         return report.get(120, TimeUnit.SECONDS);
     }
 
-    /** Attaches a viewer that keeps every frame, on a thread of its own. */
-    CompletableFuture<List<ViewerFrame>> collectFrames() throws Exception {
+    /** Attaches a viewer that keeps every snapshot, on a thread of its own. */
+    CompletableFuture<List<Snapshot>> collectSnapshots() throws Exception {
         Socket s = new Socket("127.0.0.1", server.viewerPort());
         s.setSoTimeout(60_000);
         MessageCodec codec = new MessageCodec();
         new FrameWriter(s.getOutputStream(), codec).write(new ViewerHello("test"));
         return CompletableFuture.supplyAsync(() -> {
-            List<ViewerFrame> frames = new ArrayList<>();
+            List<Snapshot> snapshots = new ArrayList<>();
             try (s) {
                 FrameReader r = new FrameReader(s.getInputStream(), codec, 1 << 24);
                 Message m;
                 while ((m = r.read()) != null && !(m instanceof Bye)) {
-                    if (m instanceof ViewerFrame f) {
-                        frames.add(f);
+                    if (m instanceof Snapshot f) {
+                        snapshots.add(f);
                     }
                 }
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-            return frames;
+            return snapshots;
         });
     }
 

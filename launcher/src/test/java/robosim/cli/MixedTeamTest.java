@@ -19,7 +19,7 @@ import robosim.env.world.World;
 import robosim.env.world.WorldReader;
 import robosim.examples.scoutwander.ScoutWander;
 import robosim.examples.wander.Wander;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 
 /** The shipped mixed team, one Scout and two Pioneers, over TCP: deterministic per seed. */
 @Timeout(value = 3, unit = TimeUnit.MINUTES)
@@ -52,9 +52,9 @@ class MixedTeamTest {
                 p.get(30, TimeUnit.SECONDS);
             }
             List<String> trajectory = new ArrayList<>();
-            synchronized (run.frames) {
-                for (ViewerFrame f : run.frames) {
-                    for (ViewerFrame.RobotView v : f.robots()) {
+            synchronized (run.snapshots) {
+                for (Snapshot f : run.snapshots) {
+                    for (Snapshot.RobotView v : f.robots()) {
                         trajectory.add(f.step() + " " + v.name() + " " + v.x() + " " + v.y() + " " + v.th());
                     }
                 }

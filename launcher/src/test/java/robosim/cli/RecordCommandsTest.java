@@ -20,7 +20,7 @@ import picocli.CommandLine;
 import robosim.aria.ArRobot;
 import robosim.examples.wander.Wander;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.recording.RecordingReader;
 
 /**
@@ -57,7 +57,7 @@ class RecordCommandsTest {
         MessageCodec codec = new MessageCodec();
         List<byte[]> frames = new ArrayList<>();
         try (RecordingReader reader = RecordingReader.open(recording)) {
-            ViewerFrame f;
+            Snapshot f;
             while ((f = reader.next()) != null) {
                 frames.add(codec.encode(f));
             }

@@ -17,9 +17,9 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.env.net.RunReport;
 import robosim.protocol.recording.RecordingReader;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.FramePainter;
-import robosim.viewer.PngFrameWriter;
-import robosim.viewer.RenderedFrames;
+import robosim.viewer.SnapshotPainter;
+import robosim.viewer.PngImageWriter;
+import robosim.viewer.RenderedImages;
 import robosim.viewer.WorldRenderer;
 import robosim.viewer.replay.Replay;
 import robosim.viewer.replay.ReplayRange;
@@ -41,8 +41,8 @@ class RecordReplayTest {
     }
 
     private static Replay.Result replay(Path recording, Path pngDir) throws IOException {
-        RenderedFrames out = new RenderedFrames(FramePainter.flat(new WorldRenderer(), RecordedRun.RENDER),
-                new PngFrameWriter(pngDir), 1, false);
+        RenderedImages out = new RenderedImages(SnapshotPainter.flat(new WorldRenderer(), RecordedRun.RENDER),
+                new PngImageWriter(pngDir), 1, false);
         try (RecordingReader reader = RecordingReader.open(recording)) {
             return Replay.run(reader, out, ReplayRange.ALL);
         }
@@ -54,14 +54,14 @@ class RecordReplayTest {
         Path envRecording = dir.resolve("env.rsr");
         Path viewerRecording = dir.resolve("viewer.rsr");
         RunReport report = RecordedRun.run(STEPS, envRecording, List.of(
-                new RenderedFrames(FramePainter.flat(new WorldRenderer(), RecordedRun.RENDER), new PngFrameWriter(live), 1, false),
+                new RenderedImages(SnapshotPainter.flat(new WorldRenderer(), RecordedRun.RENDER), new PngImageWriter(live), 1, false),
                 RecordingWriter.create(viewerRecording, true)));
         assertTrue(report.robots().get(0).distance() > 500, "r1 drove: " + report.robots().get(0));
         Replay.Result fromEnv = replay(envRecording, dir.resolve("from-env"));
         Replay.Result fromViewer = replay(viewerRecording, dir.resolve("from-viewer"));
-        assertEquals(STEPS + 1, fromEnv.framesDrawn());
-        assertEquals(STEPS + 1, fromViewer.framesDrawn());
-        PngFrameWriter names = new PngFrameWriter(live);
+        assertEquals(STEPS + 1, fromEnv.imagesDrawn());
+        assertEquals(STEPS + 1, fromViewer.imagesDrawn());
+        PngImageWriter names = new PngImageWriter(live);
         for (int step = 0; step <= STEPS; step++) {
             String file = names.fileFor(step).getFileName().toString();
             int[] drawnLive = pixels(live.resolve(file));
@@ -85,11 +85,11 @@ class RecordReplayTest {
         assertTrue(Files.size(first) > 1000, "a real recording: " + Files.size(first) + " bytes");
         assertEquals(-1, Files.mismatch(first, second), "the two recordings differ at this byte offset");
         try (RecordingReader reader = RecordingReader.open(first)) {
-            long frames = 0;
+            long snapshots = 0;
             while (reader.next() != null) {
-                frames++;
+                snapshots++;
             }
-            assertEquals(STEPS + 1, frames);
+            assertEquals(STEPS + 1, snapshots);
             assertEquals("done: step limit " + STEPS + " reached", reader.endReason());
         }
     }

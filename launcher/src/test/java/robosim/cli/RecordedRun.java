@@ -13,7 +13,7 @@ import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.WorldReader;
 import robosim.examples.wander.Wander;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
 import robosim.viewer.RenderOptions;
 import robosim.viewer.ViewerClient;
@@ -40,12 +40,12 @@ final class RecordedRun {
      * @param viewer    what a live viewer passes the run to, or none for no viewer
      * @return the Environment's report
      */
-    static RunReport run(int steps, Path recording, List<FrameListener> viewer) throws Exception {
+    static RunReport run(int steps, Path recording, List<SnapshotListener> viewer) throws Exception {
         Simulation sim = new Simulation(WorldReader.read(Harness.root().resolve("testLoadFiles/environment/small-maze.xml")));
         ServerOptions options = ServerOptions.loopback().withMaxSteps(steps).withWaitViewers(viewer.isEmpty() ? 0 : 1);
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
-            server.addFrameListener(RecordingWriter.create(recording, true));
+            server.addSnapshotListener(RecordingWriter.create(recording, true));
             CompletableFuture<RunReport> report = CompletableFuture.supplyAsync(() -> {
                 try {
                     return server.run();

@@ -14,17 +14,17 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.WorldReader;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 
 /**
  * An Environment on loopback, in this JVM, with robot programs as threads of their own (not pool
- * threads: each robot blocks for the whole run). Keeps every frame. Every wait is bounded.
+ * threads: each robot blocks for the whole run). Keeps every snapshot. Every wait is bounded.
  */
 final class ThreadedRun implements AutoCloseable {
     final EnvironmentServer server;
-    final List<ViewerFrame> frames = new ArrayList<>();
+    final List<Snapshot> snapshots = new ArrayList<>();
     private final ExecutorService threads = Executors.newCachedThreadPool(r -> {
         Thread t = new Thread(r, "robot-program");
         t.setDaemon(true);
@@ -41,15 +41,15 @@ final class ThreadedRun implements AutoCloseable {
         server = new EnvironmentServer(new Simulation(WorldReader.read(world), seed),
                 ServerOptions.loopback().withMaxSteps(maxSteps));
         server.bind();
-        server.addFrameListener(new FrameListener() {
+        server.addSnapshotListener(new SnapshotListener() {
             @Override
             public void world(WorldDescription w) {
             }
 
             @Override
-            public void frame(ViewerFrame f) {
-                synchronized (frames) {
-                    frames.add(f);
+            public void snapshot(Snapshot f) {
+                synchronized (snapshots) {
+                    snapshots.add(f);
                 }
             }
         });

@@ -15,11 +15,11 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = RobotRequests.class, name = "robotRequests"),
         @JsonSubTypes.Type(value = ViewerHello.class, name = "viewerHello"),
         @JsonSubTypes.Type(value = WorldDescription.class, name = "world"),
-        @JsonSubTypes.Type(value = ViewerFrame.class, name = "frame"),
+        @JsonSubTypes.Type(value = Snapshot.class, name = "snapshot", names = "frame"),
         @JsonSubTypes.Type(value = Bye.class, name = "bye"),
         @JsonSubTypes.Type(value = CommsUpdate.class, name = "commsUpdate"),
 })
 public sealed interface Message
-        permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, ViewerFrame, Bye,
+        permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
         CommsUpdate {
 }

@@ -104,12 +104,12 @@ class FrameReaderTest {
 
     @Test
     void readsBackToBackFramesArrivingOneByteAtATime() throws IOException {
-        byte[] bytes = wire(SMILE, Messages.viewerHello(), Messages.worldDescription(), Messages.viewerFrame());
+        byte[] bytes = wire(SMILE, Messages.viewerHello(), Messages.worldDescription(), Messages.snapshot());
         FrameReader reader = new FrameReader(new TrickleInputStream(bytes), SMILE, FrameReader.DEFAULT_MAX_FRAME);
 
         assertEquals(Messages.viewerHello(), reader.read());
         assertDeepEquals(Messages.worldDescription(), reader.read());
-        assertDeepEquals(Messages.viewerFrame(), reader.read());
+        assertDeepEquals(Messages.snapshot(), reader.read());
         assertNull(reader.read());
     }
 

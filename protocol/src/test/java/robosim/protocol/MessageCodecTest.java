@@ -87,10 +87,10 @@ class MessageCodecTest {
 
     @ParameterizedTest
     @EnumSource(Format.class)
-    void viewerFrameRoundTripsEveryRobotView(Format format) throws FrameException {
-        ViewerFrame frame = Messages.viewerFrame();
+    void snapshotRoundTripsEveryRobotView(Format format) throws FrameException {
+        Snapshot snapshot = Messages.snapshot();
 
-        assertDeepEquals(frame, roundTrip(format, frame));
+        assertDeepEquals(snapshot, roundTrip(format, snapshot));
     }
 
     @ParameterizedTest
@@ -168,7 +168,7 @@ class MessageCodecTest {
         "RobotRequests, robotRequests",
         "ViewerHello, viewerHello",
         "WorldDescription, world",
-        "ViewerFrame, frame",
+        "Snapshot, snapshot",
         "Bye, bye",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {

@@ -3,7 +3,7 @@ package robosim.protocol;
 import java.util.List;
 
 /**
- * Literal messages for the codec and frame tests. Every field holds a value that differs from its
+ * Literal messages for the codec and snapshot tests. Every field holds a value that differs from its
  * type's default, so a field lost on the wire shows up as a difference.
  */
 final class Messages {
@@ -89,14 +89,14 @@ final class Messages {
                 List.of(new WorldDescription.HeatSource(7000, 3000.5, 40)));
     }
 
-    static ViewerFrame viewerFrame() {
-        return new ViewerFrame(42, 4200, List.of(
-                new ViewerFrame.RobotView("robot1", 1234.5, -678.25, 179.5, true, true,
+    static Snapshot snapshot() {
+        return new Snapshot(42, 4200, List.of(
+                new Snapshot.RobotView("robot1", 1234.5, -678.25, 179.5, true, true,
                         new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999}),
-                new ViewerFrame.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101},
+                new Snapshot.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101},
                         8010.5, 8990, -89.5, new int[] {3000, 2999, 2998}, 0.5, -120.5, 3.25)),
                 List.of(new MessageDelivery("robot1", Command.Addressing.ALL, "*", "text", "gold!", 42, 9)),
-                List.of(new ViewerFrame.Said("robot2", "hello")));
+                List.of(new Snapshot.Said("robot2", "hello")));
     }
 
     static Bye bye() {
@@ -110,6 +110,6 @@ final class Messages {
 
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
-                viewerFrame(), bye(), commsUpdate());
+                snapshot(), bye(), commsUpdate());
     }
 }

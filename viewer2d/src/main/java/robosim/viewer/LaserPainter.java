@@ -6,7 +6,7 @@ import java.awt.Graphics2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import robosim.geometry.Pose2D;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
 

@@ -8,7 +8,7 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import robosim.geometry.Pose2D;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
@@ -73,7 +73,7 @@ final class RobotPainter {
 
     /**
      * Draws a ray from each transducer's mounting pose along its heading, as long as the range the
-     * frame reports for it. Transducers without a reading, or with a negative one, are skipped.
+     * snapshot reports for it. Transducers without a reading, or with a negative one, are skipped.
      */
     void drawSonar(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
         int[] ranges = robot.sonar();

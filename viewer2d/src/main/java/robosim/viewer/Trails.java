@@ -5,11 +5,11 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 
 /**
- * The path each robot has taken, from the frames seen so far: its true positions, a point kept
+ * The path each robot has taken, from the snapshots seen so far: its true positions, a point kept
  * whenever it has moved {@value #SPACING_MM} mm from the last one kept. A path longer than
  * {@value #MAX_POINTS} points keeps every other point, so memory stays bounded however long the
  * run. Plain data: fed by one thread, drawn by the {@link WorldRenderer}.
@@ -53,13 +53,13 @@ public final class Trails {
     }
 
     /**
-     * Extends each robot's path to its position in a frame; a robot with a non-finite position is
+     * Extends each robot's path to its position in a snapshot; a robot with a non-finite position is
      * skipped.
      *
-     * @param frame the next frame
+     * @param snapshot the next snapshot
      */
-    public void add(ViewerFrame frame) {
-        for (RobotView r : frame.robots()) {
+    public void add(Snapshot snapshot) {
+        for (RobotView r : snapshot.robots()) {
             if (r.name() != null && Double.isFinite(r.x()) && Double.isFinite(r.y())) {
                 paths.computeIfAbsent(r.name(), n -> new Path()).add(r.x(), r.y());
             }

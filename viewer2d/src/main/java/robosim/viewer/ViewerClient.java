@@ -13,21 +13,21 @@ import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 
 /**
  * The viewer side of the wire: attaches to an Environment's viewer port, says
  * {@link ViewerHello}, takes the {@link WorldDescription} that must come first, then passes the
- * {@link ViewerFrame}s that follow to its {@link FrameListener}s until a {@link Bye} or the end of
+ * {@link Snapshot}s that follow to its {@link SnapshotListener}s until a {@link Bye} or the end of
  * the stream. A later {@code WorldDescription} (a world reloaded by a control panel) is passed on
- * too, and replaces the world for the frames after it.
+ * too, and replaces the world for the snapshots after it.
  *
- * <p>The listeners may draw PNG files ({@link RenderedFrames} with a {@link PngFrameWriter}: the
- * {@link #ViewerClient(ViewerOptions, FrameSink)} constructor sets that up), record the run or feed
- * a window. They are told of the end ({@link FrameListener#end}) only when the Environment says
+ * <p>The listeners may draw PNG files ({@link RenderedImages} with a {@link PngImageWriter}: the
+ * {@link #ViewerClient(ViewerOptions, ImageSink)} constructor sets that up), record the run or feed
+ * a window. They are told of the end ({@link SnapshotListener#end}) only when the Environment says
  * goodbye, and are closed when the run ends however it ends.
  *
  * <p>No wait is unbounded: the connection has {@link ViewerOptions#connectTimeout()} and each
@@ -38,27 +38,27 @@ public final class ViewerClient {
     private static final Logger LOG = Logger.getLogger(ViewerClient.class.getName());
 
     private final ViewerOptions options;
-    private final List<FrameListener> listeners;
+    private final List<SnapshotListener> listeners;
     private final MessageCodec codec = new MessageCodec();
     private volatile Socket socket;
     private volatile boolean stopped;
 
     /**
-     * A client that draws every {@link ViewerOptions#every()}-th frame, and the last, in 2D.
+     * A client that draws every {@link ViewerOptions#every()}-th snapshot, and the last, in 2D.
      *
      * @param options where to attach and what to draw
-     * @param sink    where the rendered frames go, such as a {@link PngFrameWriter}
+     * @param sink    where the rendered images go, such as a {@link PngImageWriter}
      */
-    public ViewerClient(ViewerOptions options, FrameSink sink) {
+    public ViewerClient(ViewerOptions options, ImageSink sink) {
         this(options, sink, new WorldRenderer());
     }
 
     /**
      * @param options  where to attach and what to draw
-     * @param sink     where the rendered frames go
-     * @param renderer draws the frames
+     * @param sink     where the rendered images go
+     * @param renderer draws the snapshots
      */
-    public ViewerClient(ViewerOptions options, FrameSink sink, WorldRenderer renderer) {
+    public ViewerClient(ViewerOptions options, ImageSink sink, WorldRenderer renderer) {
         this(options, List.of(rendering(options, sink, renderer)));
     }
 
@@ -68,7 +68,7 @@ public final class ViewerClient {
      * @param options  where to attach
      * @param listeners what follows the run, in order; each is closed when the run ends
      */
-    public ViewerClient(ViewerOptions options, List<FrameListener> listeners) {
+    public ViewerClient(ViewerOptions options, List<SnapshotListener> listeners) {
         if (options == null || listeners == null || listeners.stream().anyMatch(l -> l == null)) {
             throw new IllegalArgumentException("null was supplied for " + (options == null ? "options" : "listeners")
                     + ": it is required");
@@ -77,12 +77,12 @@ public final class ViewerClient {
         this.listeners = List.copyOf(listeners);
     }
 
-    private static RenderedFrames rendering(ViewerOptions options, FrameSink sink, WorldRenderer renderer) {
+    private static RenderedImages rendering(ViewerOptions options, ImageSink sink, WorldRenderer renderer) {
         if (options == null || sink == null || renderer == null) {
             throw new IllegalArgumentException("null was supplied for "
                     + (options == null ? "options" : sink == null ? "sink" : "renderer") + ": it is required");
         }
-        return new RenderedFrames(FramePainter.flat(renderer, options.render()), sink, options.every(), false);
+        return new RenderedImages(SnapshotPainter.flat(renderer, options.render()), sink, options.every(), false);
     }
 
     /** @return the options this client runs with */
@@ -188,10 +188,10 @@ public final class ViewerClient {
                     ViewerSummary summary = summary(reason);
                     LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": " + summary);
                     return summary;
-                } else if (m instanceof ViewerFrame frame) {
+                } else if (m instanceof Snapshot snapshot) {
                     received++;
-                    lastStep = frame.step();
-                    tell(l -> l.frame(frame));
+                    lastStep = snapshot.step();
+                    tell(l -> l.snapshot(snapshot));
                 } else if (m instanceof WorldDescription reloaded) {
                     accept(reloaded);
                 } else {
@@ -216,8 +216,8 @@ public final class ViewerClient {
 
         ViewerSummary summary(String reason) {
             long written = 0;
-            for (FrameListener l : listeners) {
-                if (l instanceof RenderedFrames r) {
+            for (SnapshotListener l : listeners) {
+                if (l instanceof RenderedImages r) {
                     written += r.written();
                 }
             }
@@ -226,11 +226,11 @@ public final class ViewerClient {
 
         /** A call on a listener, which may fail. */
         private interface Call {
-            void on(FrameListener listener) throws IOException;
+            void on(SnapshotListener listener) throws IOException;
         }
 
         private void tell(Call call) throws ViewerException {
-            for (FrameListener l : listeners) {
+            for (SnapshotListener l : listeners) {
                 try {
                     call.on(l);
                 } catch (IOException | RuntimeException e) {
@@ -242,7 +242,7 @@ public final class ViewerClient {
 
         private void closeListeners() throws ViewerException {
             closed = true;
-            tell(FrameListener::close);
+            tell(SnapshotListener::close);
         }
 
         /** Closes the listeners after a failure, logging rather than hiding it. */
@@ -251,7 +251,7 @@ public final class ViewerClient {
                 return;
             }
             closed = true;
-            for (FrameListener l : listeners) {
+            for (SnapshotListener l : listeners) {
                 try {
                     l.close();
                 } catch (IOException | RuntimeException e) {

@@ -13,14 +13,14 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
- * Draws one frame of the world: background, heat sources, obstacles, border, robots, optional
+ * Draws one snapshot of the world: background, heat sources, obstacles, border, robots, optional
  * laser scans, sonar rays, odometry ghosts and names, and a caption with the step and the
  * simulated time. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
  * renderer may serve several threads, and the window, recorder and replay views can share it.
@@ -49,36 +49,36 @@ public final class WorldRenderer {
     }
 
     /**
-     * Draws a frame into a new image as wide as the options say and as high as the world's aspect
+     * Draws a snapshot into a new image as wide as the options say and as high as the world's aspect
      * ratio makes it.
      *
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
      * @param options the image width and what to show
      * @return a new {@link BufferedImage#TYPE_INT_RGB} image
      * @throws IllegalArgumentException if the world's size is not positive or the image would be
      *                                  too tall (see {@link ViewTransform#fit})
      */
-    public BufferedImage render(WorldDescription world, ViewerFrame frame, RenderOptions options) {
-        return render(world, frame, options, null);
+    public BufferedImage render(WorldDescription world, Snapshot snapshot, RenderOptions options) {
+        return render(world, snapshot, options, null);
     }
 
     /**
-     * Draws a frame, with the robots' paths when the options show trails, into a new image.
+     * Draws a snapshot, with the robots' paths when the options show trails, into a new image.
      *
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
      * @param options the image width and what to show
      * @param trails  the robots' paths so far, or {@code null}
      * @return a new {@link BufferedImage#TYPE_INT_RGB} image
      * @throws IllegalArgumentException if the world cannot be drawn at that width
      */
-    public BufferedImage render(WorldDescription world, ViewerFrame frame, RenderOptions options, Trails trails) {
+    public BufferedImage render(WorldDescription world, Snapshot snapshot, RenderOptions options, Trails trails) {
         ViewTransform view = ViewTransform.fit(world, options.width());
         BufferedImage image = new BufferedImage(view.width(), view.height(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
-            draw(g, view, world, frame, options, trails);
+            draw(g, view, world, snapshot, options, trails);
         } finally {
             g.dispose();
         }
@@ -86,32 +86,32 @@ public final class WorldRenderer {
     }
 
     /**
-     * Draws a frame onto any surface, such as a window's component or an image. Only the
+     * Draws a snapshot onto any surface, such as a window's component or an image. Only the
      * rectangle from (0, 0) to the transform's width and height is drawn; the options' width is
      * ignored in favour of the transform's. The graphics' settings are left as they were.
      *
      * @param target  where to draw
      * @param view    the mapping from world mm to pixels
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
      * @param options what to show
      */
-    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, ViewerFrame frame,
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, Snapshot snapshot,
                      RenderOptions options) {
-        draw(target, view, world, frame, options, null);
+        draw(target, view, world, snapshot, options, null);
     }
 
     /**
-     * Draws a frame onto any surface, with the robots' paths when the options show trails.
+     * Draws a snapshot onto any surface, with the robots' paths when the options show trails.
      *
      * @param target  where to draw
      * @param view    the mapping from world mm to pixels
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null} to draw the world alone
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
      * @param options what to show
      * @param trails  the robots' paths so far, or {@code null}
      */
-    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, ViewerFrame frame,
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, Snapshot snapshot,
                      RenderOptions options, Trails trails) {
         Graphics2D g = (Graphics2D) target.create();
         try {
@@ -121,15 +121,15 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             drawWorld(g, view, world);
             if (trails != null && options.showTrails()) {
-                TrailPainter.draw(g, trails, name -> colourOf(world, frame, name), (x, y, out) -> {
+                TrailPainter.draw(g, trails, name -> colourOf(world, snapshot, name), (x, y, out) -> {
                     out[0] = view.px(x);
                     out[1] = view.py(y);
                 });
             }
-            if (frame != null) {
-                drawRobots(g, view, world, frame, options);
+            if (snapshot != null) {
+                drawRobots(g, view, world, snapshot, options);
                 if (options.showCaption()) {
-                    drawCaption(g, view.width(), caption(frame));
+                    drawCaption(g, view.width(), caption(snapshot));
                 }
             }
         } finally {
@@ -138,13 +138,13 @@ public final class WorldRenderer {
     }
 
     /**
-     * The caption drawn on a frame, for example {@code "step 120  t=12.0 s"}.
+     * The caption drawn on a snapshot, for example {@code "step 120  t=12.0 s"}.
      *
-     * @param frame the frame
+     * @param snapshot the snapshot
      * @return its step and simulated time
      */
-    public static String caption(ViewerFrame frame) {
-        return String.format(Locale.ROOT, "step %d  t=%.1f s", frame.step(), frame.timeMs() / 1000.0);
+    public static String caption(Snapshot snapshot) {
+        return String.format(Locale.ROOT, "step %d  t=%.1f s", snapshot.step(), snapshot.timeMs() / 1000.0);
     }
 
     private void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
@@ -179,14 +179,14 @@ public final class WorldRenderer {
         return path;
     }
 
-    private void drawRobots(Graphics2D g, ViewTransform view, WorldDescription world, ViewerFrame frame,
+    private void drawRobots(Graphics2D g, ViewTransform view, WorldDescription world, Snapshot snapshot,
                             RenderOptions options) {
         Map<String, Integer> indexByName = new HashMap<>();
         List<RobotInfo> infos = world.robots();
         for (int i = 0; i < infos.size(); i++) {
             indexByName.putIfAbsent(infos.get(i).name(), i);
         }
-        List<RobotView> views = frame.robots();
+        List<RobotView> views = snapshot.robots();
         // A robot the world does not list still gets a colour of its own, after the listed ones.
         int[] colourIndex = new int[views.size()];
         RobotInfo[] info = new RobotInfo[views.size()];
@@ -237,22 +237,22 @@ public final class WorldRenderer {
 
     /**
      * A robot's colour as the robots are drawn: by its index in the world, or after the world's
-     * robots by its index in the frame; grey when it is not known. Whether it is connected is left to
+     * robots by its index in the snapshot; grey when it is not known. Whether it is connected is left to
      * the caller, which draws a disconnected robot grey.
      *
      * @param world the world
-     * @param frame the frame, or {@code null}
+     * @param snapshot the snapshot, or {@code null}
      * @param name  the robot's name
      * @return its colour
      */
-    public static Color colourOf(WorldDescription world, ViewerFrame frame, String name) {
+    public static Color colourOf(WorldDescription world, Snapshot snapshot, String name) {
         List<RobotInfo> infos = world.robots();
         for (int i = 0; i < infos.size(); i++) {
             if (infos.get(i).name().equals(name)) {
                 return RobotPalette.colour(i);
             }
         }
-        List<RobotView> views = frame == null ? List.of() : frame.robots();
+        List<RobotView> views = snapshot == null ? List.of() : snapshot.robots();
         for (int i = 0; i < views.size(); i++) {
             if (name.equals(views.get(i).name())) {
                 return RobotPalette.colour(infos.size() + i);
@@ -262,8 +262,8 @@ public final class WorldRenderer {
     }
 
     /**
-     * Writes a caption on a translucent box in the top left corner, as frames carry it, so that
-     * views drawn elsewhere (the 3D view, a window) label their frames alike.
+     * Writes a caption on a translucent box in the top left corner, as snapshots carry it, so that
+     * views drawn elsewhere (the 3D view, a window) label their snapshots alike.
      *
      * @param target     where to draw; its settings are left as they were
      * @param imageWidth the width of the image, which sets the font size

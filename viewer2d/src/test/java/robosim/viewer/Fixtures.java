@@ -1,8 +1,8 @@
 package robosim.viewer;
 
 import java.util.List;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
 import robosim.protocol.WorldDescription.Obstacle;
@@ -27,7 +27,7 @@ final class Fixtures {
                 0.006, 5000, List.of(new SonarUnit(0, 200, 0, 0), new SonarUnit(1, 0, 190, 90)));
     }
 
-    /** As {@link #params()}, with the laser mounted at (x, y) mm heading th degrees in the robot frame. */
+    /** As {@link #params()}, with the laser mounted at (x, y) mm heading th degrees in the robot snapshot. */
     static RobotParameters params(double laserX, double laserY, double laserTh, double laserMaxRange) {
         RobotParameters p = params();
         return new RobotParameters(p.robotClass(), p.subclass(), p.robotRadius(), p.robotWidth(),
@@ -63,7 +63,7 @@ final class Fixtures {
         return robot(3000, 600, 0, false, true);
     }
 
-    static ViewerFrame frame(long step, RobotView... robots) {
-        return new ViewerFrame(step, step * 100, List.of(robots));
+    static Snapshot snapshot(long step, RobotView... robots) {
+        return new Snapshot(step, step * 100, List.of(robots));
     }
 }

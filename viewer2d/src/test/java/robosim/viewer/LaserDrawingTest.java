@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.RobotParameters;
 
 /**
@@ -24,7 +24,7 @@ class LaserDrawingTest {
 
     private BufferedImage render(RobotParameters params, RobotView robot, boolean laser) {
         RenderOptions options = new RenderOptions(Fixtures.WIDTH_PX, false, false).withLaser(laser).withOdometry(false);
-        return renderer.render(Fixtures.world(params, List.of()), Fixtures.frame(1, robot), options);
+        return renderer.render(Fixtures.world(params, List.of()), Fixtures.snapshot(1, robot), options);
     }
 
     private static RobotView scanning(int... ranges) {

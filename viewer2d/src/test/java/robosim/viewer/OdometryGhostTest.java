@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot.RobotView;
 
 /**
  * The dashed ghost of a robot's body where its odometry puts it. The robot stands at (3000, 600) mm,
@@ -23,7 +23,7 @@ class OdometryGhostTest {
 
     private BufferedImage render(RobotView robot, boolean odometry) {
         RenderOptions options = new RenderOptions(Fixtures.WIDTH_PX, false, false).withOdometry(odometry);
-        return renderer.render(Fixtures.world(), Fixtures.frame(1, robot), options);
+        return renderer.render(Fixtures.world(), Fixtures.snapshot(1, robot), options);
     }
 
     private static RobotView believing(double odoX, double odoY, double odoTh) {

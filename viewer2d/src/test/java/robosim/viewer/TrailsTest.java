@@ -14,7 +14,7 @@ class TrailsTest {
     void aPointIsKeptEachTimeTheRobotHasMovedTheSpacing() {
         Trails trails = new Trails();
         for (int step = 0; step <= 10; step++) {
-            trails.add(Fixtures.frame(step, Fixtures.robot(1000 + 7 * step, 1500, 0, false, true)));
+            trails.add(Fixtures.snapshot(step, Fixtures.robot(1000 + 7 * step, 1500, 0, false, true)));
         }
         assertEquals(List.of("r1"), trails.robots());
         assertArrayEquals(new double[] {1000, 1500, 1021, 1500, 1042, 1500, 1063, 1500}, trails.points("r1"));
@@ -27,7 +27,7 @@ class TrailsTest {
     void aLongPathIsThinnedSoMemoryStaysBounded() {
         Trails trails = new Trails();
         for (int i = 0; i < 3 * Trails.MAX_POINTS; i++) {
-            trails.add(Fixtures.frame(i, Fixtures.robot(i * Trails.SPACING_MM % 4000, 1000 + i / 200, 0, false, true)));
+            trails.add(Fixtures.snapshot(i, Fixtures.robot(i * Trails.SPACING_MM % 4000, 1000 + i / 200, 0, false, true)));
         }
         int points = trails.points("r1").length / 2;
         assertTrue(points <= Trails.MAX_POINTS && points > Trails.MAX_POINTS / 4, points + " points");
@@ -37,12 +37,12 @@ class TrailsTest {
     void theRendererDrawsTrailsOnlyWhenAskedAndGiven() {
         Trails trails = new Trails();
         for (int step = 0; step <= 20; step++) {
-            trails.add(Fixtures.frame(step, Fixtures.robot(200 + 100 * step, 1500, 0, false, true)));
+            trails.add(Fixtures.snapshot(step, Fixtures.robot(200 + 100 * step, 1500, 0, false, true)));
         }
         WorldRenderer renderer = new WorldRenderer();
         RenderOptions options = new RenderOptions(800, false, false, false, false).withCaption(false);
-        BufferedImage without = renderer.render(Fixtures.world(), Fixtures.frame(20, Fixtures.robotAtRest()), options, trails);
-        BufferedImage with = renderer.render(Fixtures.world(), Fixtures.frame(20, Fixtures.robotAtRest()),
+        BufferedImage without = renderer.render(Fixtures.world(), Fixtures.snapshot(20, Fixtures.robotAtRest()), options, trails);
+        BufferedImage with = renderer.render(Fixtures.world(), Fixtures.snapshot(20, Fixtures.robotAtRest()),
                 options.withTrails(true), trails);
         // the path runs along y = 1500 mm, pixel row 100, from x = 200 mm (pixel 40)
         assertEquals(WorldRenderer.BACKGROUND, Pixels.at(without, 100, 100));

@@ -13,9 +13,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.Bye;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.Recording;
 import robosim.protocol.recording.RecordingWriter;
 
@@ -31,12 +31,12 @@ class ViewerClientListenersTest {
     }
 
     @Test
-    void aRecorderGetsTheWorldEveryFrameAndTheEnd() throws Exception {
+    void aRecorderGetsTheWorldEverySnapshotAndTheEnd() throws Exception {
         Path file = tmp.resolve("viewer.rsr");
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             out.write(Fixtures.world());
             for (int step = 0; step <= 5; step++) {
-                out.write(Fixtures.frame(step, Fixtures.robot(1000 + 100 * step, 1500, 0, false, true)));
+                out.write(Fixtures.snapshot(step, Fixtures.robot(1000 + 100 * step, 1500, 0, false, true)));
             }
             out.write(new Bye("done: step limit 5 reached"));
         })) {
@@ -46,21 +46,21 @@ class ViewerClientListenersTest {
         Recording r = Recording.read(file);
         assertTrue(r.complete());
         assertEquals("done: step limit 5 reached", r.endReason());
-        assertEquals(6, r.frames().size());
-        assertEquals(1500, r.frames().get(5).frame().robots().get(0).x());
+        assertEquals(6, r.snapshots().size());
+        assertEquals(1500, r.snapshots().get(5).snapshot().robots().get(0).x());
     }
 
     @Test
     void stopFromAnotherThreadEndsTheRunAndClosesTheListeners() throws Exception {
         CountDownLatch framed = new CountDownLatch(1);
         CountDownLatch closed = new CountDownLatch(1);
-        FrameListener listener = new FrameListener() {
+        SnapshotListener listener = new SnapshotListener() {
             @Override
             public void world(WorldDescription world) {
             }
 
             @Override
-            public void frame(ViewerFrame frame) {
+            public void snapshot(Snapshot snapshot) {
                 framed.countDown();
             }
 
@@ -71,7 +71,7 @@ class ViewerClientListenersTest {
         };
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             out.write(Fixtures.world());
-            out.write(Fixtures.frame(1, Fixtures.robotAtRest()));
+            out.write(Fixtures.snapshot(1, Fixtures.robotAtRest()));
         })) {
             ViewerClient client = new ViewerClient(options(env.port()), List.of(listener));
             CompletableFuture<ViewerSummary> run = CompletableFuture.supplyAsync(() -> {

@@ -40,7 +40,7 @@ class ViewerClientTest {
     private static void worldThenTenFrames(FrameWriter out) throws IOException {
         out.write(Fixtures.world());
         for (int step = 1; step <= 10; step++) {
-            out.write(Fixtures.frame(step, Fixtures.robot(1000 + 100 * step, 1500, 0, false, true)));
+            out.write(Fixtures.snapshot(step, Fixtures.robot(1000 + 100 * step, 1500, 0, false, true)));
         }
     }
 
@@ -57,11 +57,11 @@ class ViewerClientTest {
             worldThenTenFrames(out);
             out.write(new Bye("done"));
         })) {
-            PngFrameWriter png = new PngFrameWriter(tmp.resolve("frames"));
+            PngImageWriter png = new PngImageWriter(tmp.resolve("frames"));
             ViewerSummary summary = new ViewerClient(options(env.port()).withEvery(every), png).run();
 
             assertEquals(new ViewerSummary("fixture", 10, expected, 10, "done"), summary);
-            assertEquals(expected, png.framesWritten());
+            assertEquals(expected, png.imagesWritten());
             assertEquals(expected, files(png.directory()).size());
             assertTrue(Files.exists(png.fileFor(10)), "the last frame is always written");
             assertEquals(new ViewerHello("test-viewer"), env.hello());
@@ -75,7 +75,7 @@ class ViewerClientTest {
             worldThenTenFrames(out);
             out.write(new Bye("done"));
         })) {
-            PngFrameWriter png = new PngFrameWriter(tmp);
+            PngImageWriter png = new PngImageWriter(tmp);
             new ViewerClient(options(env.port()).withEvery(3), png).run();
             assertEquals(List.of("frame-000003.png", "frame-000006.png", "frame-000009.png", "frame-000010.png"),
                     files(tmp));
@@ -91,7 +91,7 @@ class ViewerClientTest {
             worldThenTenFrames(out);
             socket.shutdownOutput();
         })) {
-            ViewerSummary summary = new ViewerClient(options(env.port()).withEvery(4), new PngFrameWriter(tmp)).run();
+            ViewerSummary summary = new ViewerClient(options(env.port()).withEvery(4), new PngImageWriter(tmp)).run();
             assertEquals(new ViewerSummary("fixture", 10, 3, 10, "end of stream"), summary);
         }
     }
@@ -101,14 +101,14 @@ class ViewerClientTest {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             out.write(Fixtures.world());
             for (int step = 1; step <= 3; step++) {
-                out.write(Fixtures.frame(step, Fixtures.robotAtRest()));
+                out.write(Fixtures.snapshot(step, Fixtures.robotAtRest()));
             }
             out.write(new WorldDescription("reloaded", 2000, 2000, 100, List.of(), List.of()));
-            out.write(Fixtures.frame(1, Fixtures.robot(1000, 1000, 0, false, true)));
-            out.write(Fixtures.frame(2, Fixtures.robot(1100, 1000, 0, false, true)));
+            out.write(Fixtures.snapshot(1, Fixtures.robot(1000, 1000, 0, false, true)));
+            out.write(Fixtures.snapshot(2, Fixtures.robot(1100, 1000, 0, false, true)));
             out.write(new Bye("done"));
         })) {
-            PngFrameWriter png = new PngFrameWriter(tmp);
+            PngImageWriter png = new PngImageWriter(tmp);
             ViewerSummary summary = new ViewerClient(options(env.port()).withEvery(10), png).run();
             assertEquals(new ViewerSummary("reloaded", 5, 2, 2, "done"), summary);
             assertEquals(List.of("frame-000002.png", "frame-000003.png"), files(tmp));
@@ -122,7 +122,7 @@ class ViewerClientTest {
             socket.getOutputStream().write(new byte[] {(byte) 0xff, (byte) 0xff, (byte) 0xff, (byte) 0xff, 1, 2, 3});
         })) {
             ViewerException e = assertThrows(ViewerException.class,
-                    () -> new ViewerClient(options(env.port()), new PngFrameWriter(tmp)).run());
+                    () -> new ViewerClient(options(env.port()), new PngImageWriter(tmp)).run());
             // The prefix is the viewer's; the reason after it is the protocol module's wording.
             assertTrue(e.getMessage().startsWith("the environment at 127.0.0.1:" + env.port()
                     + " broke the protocol: "), e.getMessage());
@@ -134,12 +134,12 @@ class ViewerClientTest {
     void frameCutShortFailsWithTheReason() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             out.write(Fixtures.world());
-            out.write(Fixtures.frame(1, Fixtures.robotAtRest()));
+            out.write(Fixtures.snapshot(1, Fixtures.robotAtRest()));
             socket.getOutputStream().write(new byte[] {0, 0, 3, (byte) 0xe8, 9, 9, 9});
             socket.shutdownOutput();
         })) {
             ViewerException e = assertThrows(ViewerException.class,
-                    () -> new ViewerClient(options(env.port()), new PngFrameWriter(tmp)).run());
+                    () -> new ViewerClient(options(env.port()), new PngImageWriter(tmp)).run());
             assertTrue(e.getMessage().startsWith("the environment at 127.0.0.1:" + env.port()
                     + " broke the protocol after step 1: "), e.getMessage());
             assertTrue(e.getMessage().contains("1000 bytes"), e.getMessage());
@@ -148,11 +148,11 @@ class ViewerClientTest {
 
     @Test
     void firstMessageOtherThanTheWorldIsAProtocolError() throws Exception {
-        try (FakeEnvironment env = new FakeEnvironment((out, socket) -> out.write(Fixtures.frame(1)))) {
+        try (FakeEnvironment env = new FakeEnvironment((out, socket) -> out.write(Fixtures.snapshot(1)))) {
             ViewerException e = assertThrows(ViewerException.class,
-                    () -> new ViewerClient(options(env.port()), new PngFrameWriter(tmp)).run());
+                    () -> new ViewerClient(options(env.port()), new PngImageWriter(tmp)).run());
             assertEquals("the environment at 127.0.0.1:" + env.port() + " broke the protocol: the first message "
-                    + "must be a world description, not ViewerFrame", e.getMessage());
+                    + "must be a world description, not Snapshot", e.getMessage());
         }
     }
 
@@ -165,7 +165,7 @@ class ViewerClientTest {
         })) {
             long start = System.nanoTime();
             ViewerException e = assertThrows(ViewerException.class, () -> new ViewerClient(
-                    options(env.port()).withReadTimeout(Duration.ofMillis(300)), new PngFrameWriter(tmp)).run());
+                    options(env.port()).withReadTimeout(Duration.ofMillis(300)), new PngImageWriter(tmp)).run());
             long elapsedMs = (System.nanoTime() - start) / 1_000_000;
             assertEquals("the environment at 127.0.0.1:" + env.port() + " sent nothing for 300 ms (readTimeout) "
                     + "while the viewer waited for a frame", e.getMessage());
@@ -180,7 +180,7 @@ class ViewerClientTest {
             port = closed.getLocalPort();
         }
         ViewerException e = assertThrows(ViewerException.class,
-                () -> new ViewerClient(options(port), new PngFrameWriter(tmp)).run());
+                () -> new ViewerClient(options(port), new PngImageWriter(tmp)).run());
         assertTrue(e.getMessage().startsWith("cannot connect to the environment at 127.0.0.1:" + port + ": "),
                 e.getMessage());
     }
@@ -191,7 +191,7 @@ class ViewerClientTest {
             worldThenTenFrames(out);
             out.write(new Bye("done"));
         })) {
-            FrameSink full = (step, image) -> {
+            ImageSink full = (step, image) -> {
                 throw new IOException("disk full");
             };
             ViewerException e = assertThrows(ViewerException.class,

@@ -11,15 +11,15 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class WorldRendererTest {
     private final WorldRenderer renderer = new WorldRenderer();
 
-    private BufferedImage render(ViewerFrame frame, boolean sonar, boolean names) {
-        return renderer.render(Fixtures.world(), frame, new RenderOptions(Fixtures.WIDTH_PX, sonar, names));
+    private BufferedImage render(Snapshot snapshot, boolean sonar, boolean names) {
+        return renderer.render(Fixtures.world(), snapshot, new RenderOptions(Fixtures.WIDTH_PX, sonar, names));
     }
 
     private static Color at(BufferedImage image, int x, int y) {
@@ -28,7 +28,7 @@ class WorldRendererTest {
 
     @Test
     void imageIsAsWideAsAskedAndAsHighAsTheWorldsAspect() {
-        BufferedImage image = render(Fixtures.frame(1, Fixtures.robotAtRest()), true, true);
+        BufferedImage image = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), true, true);
         assertEquals(BufferedImage.TYPE_INT_RGB, image.getType());
         assertEquals(800, image.getWidth());
         assertEquals(400, image.getHeight());
@@ -41,7 +41,7 @@ class WorldRendererTest {
 
     @Test
     void obstacleIsDarkAndFreeSpaceLightWithYUp() {
-        BufferedImage image = render(Fixtures.frame(1, Fixtures.robotAtRest()), false, false);
+        BufferedImage image = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
         // Obstacle centre (1250, 750) mm is pixel (250, 250): y is flipped, so it is in the lower half.
         assertEquals(WorldRenderer.OBSTACLE, at(image, 250, 250));
         // Its mirror across the middle, (1250, 1250) mm, is free.
@@ -59,7 +59,7 @@ class WorldRendererTest {
 
     @Test
     void robotBodyIsFilledInItsColour() {
-        BufferedImage image = render(Fixtures.frame(1, Fixtures.robotAtRest()), false, false);
+        BufferedImage image = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
         // (2900, 700) mm lies inside the body, away from the outline and the heading line.
         assertEquals(RobotPalette.colour(0), at(image, 580, 260));
         // Just outside the body's rear edge at x = 2800 mm (pixel 560).
@@ -70,31 +70,31 @@ class WorldRendererTest {
     void headingLineFollowsTheHeadingCounterClockwiseInDegrees() {
         // Turned to 90 degrees the robot faces +y, which is up in the image: the heading line runs
         // from the centre (600, 280) to the nose (600, 240).
-        BufferedImage north = render(Fixtures.frame(1, Fixtures.robot(3000, 600, 90, false, true)), false, false);
-        BufferedImage east = render(Fixtures.frame(1, Fixtures.robotAtRest()), false, false);
+        BufferedImage north = render(Fixtures.snapshot(1, Fixtures.robot(3000, 600, 90, false, true)), false, false);
+        BufferedImage east = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
         assertTrue(brightness(at(north, 600, 260)) < 80, "heading line above the centre when facing +y");
         assertEquals(RobotPalette.colour(0), at(east, 600, 260));
     }
 
     @Test
     void stalledRobotIsOutlinedInRed() {
-        BufferedImage free = render(Fixtures.frame(1, Fixtures.robotAtRest()), false, false);
-        BufferedImage stalled = render(Fixtures.frame(1, Fixtures.robot(3000, 600, 0, true, true)), false, false);
+        BufferedImage free = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
+        BufferedImage stalled = render(Fixtures.snapshot(1, Fixtures.robot(3000, 600, 0, true, true)), false, false);
         assertEquals(0, redPixels(free, 550, 230, 650, 330));
         assertTrue(redPixels(stalled, 550, 230, 650, 330) > 100);
     }
 
     @Test
     void disconnectedRobotIsGreyedOut() {
-        BufferedImage image = render(Fixtures.frame(1, Fixtures.robot(3000, 600, 0, false, false)), false, false);
+        BufferedImage image = render(Fixtures.snapshot(1, Fixtures.robot(3000, 600, 0, false, false)), false, false);
         assertEquals(RobotPalette.DISCONNECTED, at(image, 580, 260));
     }
 
     @Test
     void sonarRaysAppearOnlyWhenAsked() {
-        ViewerFrame frame = Fixtures.frame(1, Fixtures.robotAtRest());
-        BufferedImage on = render(frame, true, false);
-        BufferedImage off = render(frame, false, false);
+        Snapshot snapshot = Fixtures.snapshot(1, Fixtures.robotAtRest());
+        BufferedImage on = render(snapshot, true, false);
+        BufferedImage off = render(snapshot, false, false);
         // Sonar 0 runs 500 mm forward from the nose (3200, 600): pixels (640..740, 280).
         assertNotEquals(at(off, 700, 280), at(on, 700, 280));
         assertEquals(WorldRenderer.BACKGROUND, at(off, 700, 280));
@@ -106,24 +106,24 @@ class WorldRendererTest {
 
     @Test
     void namesAppearOnlyWhenAsked() {
-        ViewerFrame frame = Fixtures.frame(1, Fixtures.robotAtRest());
-        BufferedImage on = render(frame, false, true);
-        BufferedImage off = render(frame, false, false);
+        Snapshot snapshot = Fixtures.snapshot(1, Fixtures.robotAtRest());
+        BufferedImage on = render(snapshot, false, true);
+        BufferedImage off = render(snapshot, false, false);
         assertTrue(differingPixels(on, off, 630, 200, 720, 250) > 0, "the name is written up and right");
     }
 
     @Test
     void captionShowsStepAndSimulatedTime() {
-        assertEquals("step 120  t=12.0 s", WorldRenderer.caption(new ViewerFrame(120, 12_000, List.of())));
-        BufferedImage captioned = render(Fixtures.frame(120), false, false);
+        assertEquals("step 120  t=12.0 s", WorldRenderer.caption(new Snapshot(120, 12_000, List.of())));
+        BufferedImage captioned = render(Fixtures.snapshot(120), false, false);
         BufferedImage bare = render(null, false, false);
         assertTrue(differingPixels(captioned, bare, 0, 0, 200, 40) > 0);
     }
 
     @Test
     void robotMissingFromTheWorldIsStillDrawn() {
-        ViewerFrame frame = Fixtures.frame(1, new ViewerFrame.RobotView("stranger", 3000, 600, 0, false, true, null));
-        BufferedImage image = render(frame, true, true);
+        Snapshot snapshot = Fixtures.snapshot(1, new Snapshot.RobotView("stranger", 3000, 600, 0, false, true, null));
+        BufferedImage image = render(snapshot, true, true);
         assertEquals(RobotPalette.colour(1), at(image, 580, 260));
     }
 

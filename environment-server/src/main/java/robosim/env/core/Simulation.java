@@ -20,7 +20,7 @@ import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.RobotParameters;
 
@@ -40,7 +40,7 @@ public final class Simulation {
     private GeometryClient geometry;
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
     private final MessageRouter messages;
-    private final List<ViewerFrame.Said> said = new ArrayList<>();
+    private final List<Snapshot.Said> said = new ArrayList<>();
     private Find find;
     private long step;
 
@@ -133,7 +133,7 @@ public final class Simulation {
             List<Command> own = new ArrayList<>(cs.size());
             for (Command c : cs) {
                 if (c instanceof Command.Say say) {
-                    said.add(new ViewerFrame.Said(r.name, say.text()));
+                    said.add(new Snapshot.Said(r.name, say.text()));
                 } else if (c instanceof Command.ReportFound found) {
                     reportFound(r, found.object(), current);
                 } else if (!messages.take(current, r.name, c)) {
@@ -281,15 +281,15 @@ public final class Simulation {
     }
 
     /** @return the moving parts of the world now, for viewers */
-    public ViewerFrame frame() {
-        List<ViewerFrame.RobotView> views = new ArrayList<>();
+    public Snapshot snapshot() {
+        List<Snapshot.RobotView> views = new ArrayList<>();
         for (SimRobot r : robots.values()) {
             Odometry o = r.odometry();
-            views.add(new ViewerFrame.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
+            views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
                     r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
                     r.vel(), r.rotVel()));
         }
-        return new ViewerFrame(step, timeMs(), views, messages.sentLastStep(), said);
+        return new Snapshot(step, timeMs(), views, messages.sentLastStep(), said);
     }
 
     /** @return the static world, for viewers */

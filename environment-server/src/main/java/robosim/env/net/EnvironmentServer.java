@@ -26,15 +26,15 @@ import robosim.protocol.Command;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.TimeStep;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.recording.FrameListener;
-import robosim.protocol.recording.FrameListeners;
+import robosim.protocol.Snapshot;
+import robosim.protocol.recording.SnapshotListener;
+import robosim.protocol.recording.SnapshotListeners;
 
 /**
  * The Environment on the network: accepts robots and viewers, waits for every robot the world
  * names, then drives lockstep steps: it sends each robot its time step and state, waits (up to the
  * step deadline) for every robot's requests for that step, advances the {@link Simulation}, and
- * sends the new frame to the viewers.
+ * sends the new snapshot to the viewers.
  *
  * <p>One thread does it all: the step loop serves every connection through one selector between
  * steps, so no thread handoff stands between a robot's requests and the next step. A peer that
@@ -51,7 +51,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final SessionRules rules;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
     private final List<Connection> all = new ArrayList<>();
-    private final FrameListeners listeners = new FrameListeners();
+    private final SnapshotListeners listeners = new SnapshotListeners();
     private Selector selector;
     private ServerSocketChannel robotChannel;
     private ServerSocketChannel viewerChannel;
@@ -88,13 +88,13 @@ public final class EnvironmentServer implements AutoCloseable {
 
     /**
      * Adds a listener, such as a recorder, that follows the run as viewers do: it is given the
-     * world and the frame of step 0 when the run starts, every frame after its step, the end, and
+     * world and the snapshot of step 0 when the run starts, every snapshot after its step, the end, and
      * is closed when the run ends or the server closes. A listener that fails is logged and
      * dropped; the run goes on.
      *
      * @param listener the listener; add it before {@link #run()}
      */
-    public void addFrameListener(FrameListener listener) {
+    public void addSnapshotListener(SnapshotListener listener) {
         listeners.add(listener);
     }
 
@@ -119,7 +119,7 @@ public final class EnvironmentServer implements AutoCloseable {
         awaitRobots();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
         listeners.world(sim.description());
-        listeners.frame(sim.frame());
+        listeners.snapshot(sim.snapshot());
         long started = System.nanoTime();
         String reason = loop();
         long wall = System.nanoTime() - started;
@@ -175,11 +175,11 @@ public final class EnvironmentServer implements AutoCloseable {
             }
             Map<String, List<Command>> commands = collect(current);
             sim.step(commands);
-            // the frame is built only when someone watches: benchmarks and headless runs skip it
+            // the snapshot is built only when someone watches: benchmarks and headless runs skip it
             if (rules.viewerCount() > 0 || listeners.size() > 0) {
-                ViewerFrame frame = sim.frame();
-                rules.broadcastFrame(frame, codec);
-                listeners.frame(frame);
+                Snapshot snapshot = sim.snapshot();
+                rules.broadcastSnapshot(snapshot, codec);
+                listeners.snapshot(snapshot);
             }
         }
     }

@@ -19,7 +19,7 @@ import robosim.protocol.CommsUpdate;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
 
@@ -81,13 +81,13 @@ final class SessionRules {
         waiting.clear();
     }
 
-    /** Sends a frame to every viewer, encoded once. */
-    void broadcastFrame(ViewerFrame frame, MessageCodec codec) {
+    /** Sends a snapshot to every viewer, encoded once. */
+    void broadcastSnapshot(Snapshot snapshot, MessageCodec codec) {
         viewers.removeIf(Connection::isClosed);
         if (viewers.isEmpty()) {
             return;
         }
-        ByteBuffer encoded = FrameWriter.frame(codec, frame);
+        ByteBuffer encoded = FrameWriter.frame(codec, snapshot);
         for (Connection v : viewers) {
             v.sendFrame(encoded.duplicate());
         }
@@ -194,7 +194,7 @@ final class SessionRules {
             c.setName(hello.name());
             viewers.add(c);
             c.send(sim.description());
-            c.send(sim.frame());
+            c.send(sim.snapshot());
             LOG.info(() -> "viewer " + hello.name() + " attached at step " + sim.stepCount());
         } else if (c.name() != null && m instanceof CommsUpdate u) {
             commsUpdate(c, u);

@@ -44,16 +44,16 @@ class MessagingTest {
         assertEquals(1, got.get(0).sentStep());
         sim.step(Map.of());
         assertTrue(sim.state("b").messages().isEmpty(), "delivered once");
-        assertTrue(sim.frame().messages().isEmpty(), "the frame lists this step's sends only");
+        assertTrue(sim.snapshot().messages().isEmpty(), "the snapshot lists this step's sends only");
     }
 
     @Test
     void theFrameListsWhatWasSentAndSaid() {
         Simulation sim = twoRobots(CommsSettings.DEFAULT, null);
         sim.step(Map.of("a", List.of(to("b", "hi"), new Command.Say("on my way"))));
-        assertEquals(1, sim.frame().messages().size());
-        assertEquals("a", sim.frame().said().get(0).robot());
-        assertEquals("on my way", sim.frame().said().get(0).text());
+        assertEquals(1, sim.snapshot().messages().size());
+        assertEquals("a", sim.snapshot().said().get(0).robot());
+        assertEquals("on my way", sim.snapshot().said().get(0).text());
     }
 
     @Test

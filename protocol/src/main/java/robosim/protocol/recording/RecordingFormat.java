@@ -11,9 +11,9 @@ import java.nio.charset.StandardCharsets;
  *          2 bytes  format version, big-endian ({@value #VERSION})
  *          2 bytes  flags, big-endian: bit 0 set when sonar and laser readings are kept
  * records, each:
- *          1 byte   kind: 'W' the world, 'F' the frame after one step, 'E' the end of the run
+ *          1 byte   kind: 'W' the world, 'F' the snapshot after one step, 'E' the end of the run
  *          4 bytes  length L of the data, big-endian, 1 to {@value #MAX_RECORD}
- *          L bytes  data: one protocol message (WorldDescription, ViewerFrame, Bye) encoded as
+ *          L bytes  data: one protocol message (WorldDescription, Snapshot, Bye) encoded as
  *                   Smile, then compressed as raw DEFLATE; an 'F' record's DEFLATE dictionary is
  *                   the Smile bytes of the previous 'F' record (none for the first), so that a
  *                   step costs little more than what changed in it
@@ -32,12 +32,12 @@ public final class RecordingFormat {
     public static final int VERSION = 1;
     /** Bytes before the first record. */
     public static final int HEADER_LENGTH = 12;
-    /** Header flag: the frames keep their sonar and laser readings. */
+    /** Header flag: the snapshots keep their sonar and laser readings. */
     static final int FLAG_SENSORS = 1;
     /** Record kind: the world. */
     static final byte WORLD = 'W';
-    /** Record kind: one step's frame. */
-    static final byte FRAME = 'F';
+    /** Record kind: one step's snapshot. */
+    static final byte SNAPSHOT = 'F';
     /** Record kind: the run's end. */
     static final byte END = 'E';
     /** Bytes of a record besides its data: kind, length, CRC. */
@@ -52,12 +52,12 @@ public final class RecordingFormat {
 
     /**
      * @param kind a record's kind byte
-     * @return its description for messages, such as {@code 'F' (frame)}
+     * @return its description for messages, such as {@code 'F' (snapshot)}
      */
     static String describe(int kind) {
         String what = switch (kind) {
             case WORLD -> "world";
-            case FRAME -> "frame";
+            case SNAPSHOT -> "snapshot";
             case END -> "end";
             default -> "unknown";
         };

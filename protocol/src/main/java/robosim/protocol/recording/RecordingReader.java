@@ -13,14 +13,14 @@ import robosim.protocol.Bye;
 import robosim.protocol.FrameException;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /**
  * Reads a recording (see {@link RecordingFormat}) step by step. Opening it reads the header and
- * the world; {@link #next()} then gives one frame per call. A record that is cut short or fails
+ * the world; {@link #next()} then gives one snapshot per call. A record that is cut short or fails
  * its check ends the reading with a {@link RecordingException} naming the file, the byte offset
- * and the last step read whole; every frame before it has already been given out.
+ * and the last step read whole; every snapshot before it has already been given out.
  */
 public final class RecordingReader implements Closeable {
     private final InputStream in;
@@ -30,7 +30,7 @@ public final class RecordingReader implements Closeable {
     private final int version;
     private final boolean sensors;
     private WorldDescription world;
-    private byte[] previousFrame;
+    private byte[] previousSnapshot;
     private long offset;
     private long lastStep = -1;
     private String endReason;
@@ -92,20 +92,20 @@ public final class RecordingReader implements Closeable {
     }
 
     /**
-     * Reads the next step's frame; a world record on the way replaces {@link #world()}.
+     * Reads the next step's snapshot; a world record on the way replaces {@link #world()}.
      *
-     * @return the frame, or {@code null} after the end record or at the end of the file
+     * @return the snapshot, or {@code null} after the end record or at the end of the file
      * @throws RecordingException if the next record is cut short or damaged
      * @throws IOException        if the stream fails
      */
-    public ViewerFrame next() throws IOException {
+    public Snapshot next() throws IOException {
         while (!finished) {
             Message m = readRecord();
             if (m == null) {
                 finished = true;
-            } else if (m instanceof ViewerFrame frame) {
-                lastStep = frame.step();
-                return frame;
+            } else if (m instanceof Snapshot snapshot) {
+                lastStep = snapshot.step();
+                return snapshot;
             } else if (m instanceof WorldDescription w) {
                 world = w;
             } else if (m instanceof Bye bye) {
@@ -129,7 +129,7 @@ public final class RecordingReader implements Closeable {
             throw truncated(at, 1 + got, RecordingFormat.OVERHEAD, "record");
         }
         int length = ((head[0] & 0xff) << 24) | ((head[1] & 0xff) << 16) | ((head[2] & 0xff) << 8) | (head[3] & 0xff);
-        if (kind != RecordingFormat.WORLD && kind != RecordingFormat.FRAME && kind != RecordingFormat.END) {
+        if (kind != RecordingFormat.WORLD && kind != RecordingFormat.SNAPSHOT && kind != RecordingFormat.END) {
             throw corrupt(at, "record kind " + RecordingFormat.describe(kind) + " is not one of 'W', 'F', 'E'", null);
         }
         if (length < 1 || length > RecordingFormat.MAX_RECORD) {
@@ -157,7 +157,7 @@ public final class RecordingReader implements Closeable {
     }
 
     private Message decode(long at, int kind, byte[] data) throws RecordingException {
-        byte[] dictionary = kind == RecordingFormat.FRAME ? previousFrame : null;
+        byte[] dictionary = kind == RecordingFormat.SNAPSHOT ? previousSnapshot : null;
         byte[] smile;
         Message m;
         try {
@@ -167,13 +167,13 @@ public final class RecordingReader implements Closeable {
             throw corrupt(at, "the " + RecordingFormat.describe(kind) + " record cannot be decoded: " + e.getMessage(), e);
         }
         Class<?> expected = kind == RecordingFormat.WORLD ? WorldDescription.class
-                : kind == RecordingFormat.FRAME ? ViewerFrame.class : Bye.class;
+                : kind == RecordingFormat.SNAPSHOT ? Snapshot.class : Bye.class;
         if (!expected.isInstance(m)) {
             throw corrupt(at, "the " + RecordingFormat.describe(kind) + " record holds a "
                     + m.getClass().getSimpleName() + ", not a " + expected.getSimpleName(), null);
         }
-        if (kind == RecordingFormat.FRAME) {
-            previousFrame = smile;
+        if (kind == RecordingFormat.SNAPSHOT) {
+            previousSnapshot = smile;
         }
         return m;
     }
@@ -210,7 +210,7 @@ public final class RecordingReader implements Closeable {
         return bytes.length == 0 ? "nothing" : "\"" + s.replaceAll("[^\\x20-\\x7e]", "?") + "\"";
     }
 
-    /** @return the world the latest frame is drawn in */
+    /** @return the world the latest snapshot is drawn in */
     public WorldDescription world() {
         return world;
     }
@@ -220,7 +220,7 @@ public final class RecordingReader implements Closeable {
         return version;
     }
 
-    /** @return whether the frames keep their sonar and laser readings */
+    /** @return whether the snapshots keep their sonar and laser readings */
     public boolean sensors() {
         return sensors;
     }
@@ -235,7 +235,7 @@ public final class RecordingReader implements Closeable {
         return offset;
     }
 
-    /** @return the step of the last frame read, or -1 */
+    /** @return the step of the last snapshot read, or -1 */
     public long lastStep() {
         return lastStep;
     }

@@ -8,16 +8,16 @@ import java.util.ArrayList;
 import java.util.List;
 import robosim.protocol.Bye;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 
 /**
  * Writes a recording (see {@link RecordingFormat}): attach it to an Environment or a viewer as a
- * {@link FrameListener}. Every record goes out in one write and is flushed, so the file is
+ * {@link SnapshotListener}. Every record goes out in one write and is flushed, so the file is
  * readable up to the last step even if the process dies. Not thread-safe: one feeder at a time.
  */
-public final class RecordingWriter implements FrameListener {
+public final class RecordingWriter implements SnapshotListener {
     private static final int[] NONE = new int[0];
 
     private final OutputStream out;
@@ -25,9 +25,9 @@ public final class RecordingWriter implements FrameListener {
     private final boolean sensors;
     private final MessageCodec codec = new MessageCodec();
     private final RecordCodec records = new RecordCodec();
-    private byte[] previousFrame;
+    private byte[] previousSnapshot;
     private long bytes;
-    private long frames;
+    private long snapshots;
     private boolean worldWritten;
     private boolean closed;
     private IOException failure;
@@ -79,15 +79,15 @@ public final class RecordingWriter implements FrameListener {
     }
 
     @Override
-    public void frame(ViewerFrame frame) throws IOException {
+    public void snapshot(Snapshot snapshot) throws IOException {
         if (!worldWritten) {
-            throw new IllegalStateException("frame of step " + frame.step() + " for " + name
+            throw new IllegalStateException("snapshot of step " + snapshot.step() + " for " + name
                     + " before the world: a recording starts with its world");
         }
-        byte[] message = codec.encode(sensors ? frame : withoutSensors(frame));
-        put(records.encode(RecordingFormat.FRAME, message, previousFrame));
-        previousFrame = message;
-        frames++;
+        byte[] message = codec.encode(sensors ? snapshot : withoutSensors(snapshot));
+        put(records.encode(RecordingFormat.SNAPSHOT, message, previousSnapshot));
+        previousSnapshot = message;
+        snapshots++;
     }
 
     @Override
@@ -125,9 +125,9 @@ public final class RecordingWriter implements FrameListener {
         return bytes;
     }
 
-    /** @return the frames written so far */
-    public long framesWritten() {
-        return frames;
+    /** @return the snapshots written so far */
+    public long snapshotsWritten() {
+        return snapshots;
     }
 
     /** @return whether sonar and laser readings are kept */
@@ -146,15 +146,15 @@ public final class RecordingWriter implements FrameListener {
     }
 
     /**
-     * @param frame a frame
-     * @return the frame with every robot's sonar and laser readings left out
+     * @param snapshot a snapshot
+     * @return the snapshot with every robot's sonar and laser readings left out
      */
-    static ViewerFrame withoutSensors(ViewerFrame frame) {
-        List<RobotView> robots = new ArrayList<>(frame.robots().size());
-        for (RobotView r : frame.robots()) {
+    static Snapshot withoutSensors(Snapshot snapshot) {
+        List<RobotView> robots = new ArrayList<>(snapshot.robots().size());
+        for (RobotView r : snapshot.robots()) {
             robots.add(new RobotView(r.name(), r.x(), r.y(), r.th(), r.stalled(), r.connected(), NONE,
                     r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel()));
         }
-        return new ViewerFrame(frame.step(), frame.timeMs(), robots, frame.messages(), frame.said());
+        return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said());
     }
 }

@@ -14,17 +14,17 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 
 /**
- * Cut-short and damaged recordings: the frames before the damage are read, then an error names the
+ * Cut-short and damaged recordings: the snapshots before the damage are read, then an error names the
  * file, the byte offset of the bad record and the last good step.
  */
 class DamagedRecordingTest {
     @TempDir
     Path dir;
 
-    /** Where each record starts: [0] the world, [1 + k] the frame of step k, last the end record. */
+    /** Where each record starts: [0] the world, [1 + k] the snapshot of step k, last the end record. */
     private static List<Integer> recordOffsets(byte[] recording) {
         List<Integer> offsets = new ArrayList<>();
         int at = RecordingFormat.HEADER_LENGTH;
@@ -37,18 +37,18 @@ class DamagedRecordingTest {
         return offsets;
     }
 
-    /** Reads every frame it can; returns them, and the exception that stopped it (or null). */
+    /** Reads every snapshot it can; returns them, and the exception that stopped it (or null). */
     private static Object[] readAsFarAsPossible(byte[] bytes) throws IOException {
-        List<ViewerFrame> frames = new ArrayList<>();
+        List<Snapshot> snapshots = new ArrayList<>();
         try (RecordingReader r = new RecordingReader(new ByteArrayInputStream(bytes), "run.rsr")) {
-            ViewerFrame f;
+            Snapshot f;
             while ((f = r.next()) != null) {
-                frames.add(f);
+                snapshots.add(f);
             }
         } catch (RecordingException e) {
-            return new Object[] {frames, e};
+            return new Object[] {snapshots, e};
         }
-        return new Object[] {frames, null};
+        return new Object[] {snapshots, null};
     }
 
     @Test
@@ -58,7 +58,7 @@ class DamagedRecordingTest {
         for (int cut = offsets.get(1); cut < whole.length; cut++) {
             Object[] read = readAsFarAsPossible(Arrays.copyOf(whole, cut));
             @SuppressWarnings("unchecked")
-            List<ViewerFrame> frames = (List<ViewerFrame>) read[0];
+            List<Snapshot> snapshots = (List<Snapshot>) read[0];
             int wholeFrames = 0;
             for (int k = 1; k < offsets.size() - 1; k++) {
                 int end = k + 1 < offsets.size() ? offsets.get(k + 1) : whole.length;
@@ -66,7 +66,7 @@ class DamagedRecordingTest {
                     wholeFrames++;
                 }
             }
-            assertEquals(wholeFrames, frames.size(), "cut at byte " + cut);
+            assertEquals(wholeFrames, snapshots.size(), "cut at byte " + cut);
             RecordingException e = (RecordingException) read[1];
             if (offsets.contains(cut)) {
                 assertEquals(null, e, "a cut between records is a clean (abrupt) end");
@@ -95,7 +95,7 @@ class DamagedRecordingTest {
         assertFalse(e.truncated());
         assertEquals(record, e.offset());
         assertEquals(5, e.lastGoodStep());
-        assertEquals("run.rsr: bad record at byte offset " + record + ", after step 5: the 'F' (frame) record's CRC-32",
+        assertEquals("run.rsr: bad record at byte offset " + record + ", after step 5: the 'F' (snapshot) record's CRC-32",
                 e.getMessage().substring(0, e.getMessage().indexOf(" is ")));
         assertTrue(e.getMessage().endsWith("every record must match its checksum; steps up to 5 are readable"),
                 e.getMessage());
@@ -117,7 +117,7 @@ class DamagedRecordingTest {
         int record = recordOffsets(bytes).get(1);
         bytes[record + 1] = 0x7f;
         RecordingException e = (RecordingException) readAsFarAsPossible(bytes)[1];
-        assertTrue(e.getMessage().contains("byte offset " + record + ", after step -1: a 'F' (frame) record claims "
+        assertTrue(e.getMessage().contains("byte offset " + record + ", after step -1: a 'F' (snapshot) record claims "
                 + (0x7f000000 | (bytes[record + 4] & 0xff) | ((bytes[record + 3] & 0xff) << 8) | ((bytes[record + 2] & 0xff) << 16))
                 + " bytes of data: a record holds 1 to 16777216; no step is readable"), e.getMessage());
     }
@@ -156,9 +156,9 @@ class DamagedRecordingTest {
         Path file = dir.resolve("damaged.rsr");
         Files.write(file, Arrays.copyOf(bytes, recordOffsets(bytes).get(1 + 8) + 3));
         Recording r = Recording.read(file);
-        assertEquals(8, r.frames().size());
+        assertEquals(8, r.snapshots().size());
         assertTrue(r.problem().truncated());
         assertFalse(r.complete());
-        assertEquals(7, r.frames().get(7).frame().step());
+        assertEquals(7, r.snapshots().get(7).snapshot().step());
     }
 }

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 
 /** A recording written and read back holds what was recorded, in few bytes, the same every time. */
 class RecordingRoundTripTest {
@@ -31,25 +31,25 @@ class RecordingRoundTripTest {
         assertArrayEquals(CODEC.encode(expected), CODEC.encode(actual), expected.toString());
     }
 
-    private static List<ViewerFrame> readAll(RecordingReader reader) throws IOException {
-        List<ViewerFrame> frames = new ArrayList<>();
-        ViewerFrame f;
+    private static List<Snapshot> readAll(RecordingReader reader) throws IOException {
+        List<Snapshot> snapshots = new ArrayList<>();
+        Snapshot f;
         while ((f = reader.next()) != null) {
-            frames.add(f);
+            snapshots.add(f);
         }
-        return frames;
+        return snapshots;
     }
 
     @Test
-    void everyFrameComesBackWithItsSensorsMessagesAndSpeech() throws IOException {
+    void everySnapshotComesBackWithItsSensorsMessagesAndSpeech() throws IOException {
         try (RecordingReader reader = new RecordingReader(new ByteArrayInputStream(Runs.record(true, true)), "mem")) {
             assertEquals(RecordingFormat.VERSION, reader.version());
             assertTrue(reader.sensors());
             assertSameMessage(Runs.world(), reader.world());
-            List<ViewerFrame> frames = readAll(reader);
-            assertEquals(Runs.STEPS + 1, frames.size());
-            for (int i = 0; i < frames.size(); i++) {
-                assertSameMessage(Runs.frame(i), frames.get(i));
+            List<Snapshot> snapshots = readAll(reader);
+            assertEquals(Runs.STEPS + 1, snapshots.size());
+            for (int i = 0; i < snapshots.size(); i++) {
+                assertSameMessage(Runs.snapshot(i), snapshots.get(i));
             }
             assertEquals("done: step limit 10 reached", reader.endReason());
             assertNull(reader.next(), "nothing after the end");
@@ -60,14 +60,14 @@ class RecordingRoundTripTest {
     void withoutSensorsTheRangesAreLeftOutAndEverythingElseKept() throws IOException {
         try (RecordingReader reader = new RecordingReader(new ByteArrayInputStream(Runs.record(false, true)), "mem")) {
             assertTrue(!reader.sensors());
-            List<ViewerFrame> frames = readAll(reader);
-            for (int i = 0; i < frames.size(); i++) {
-                assertSameMessage(RecordingWriter.withoutSensors(Runs.frame(i)), frames.get(i));
-                assertEquals(0, frames.get(i).robots().get(0).sonar().length);
-                assertEquals(0, frames.get(i).robots().get(0).laser().length);
+            List<Snapshot> snapshots = readAll(reader);
+            for (int i = 0; i < snapshots.size(); i++) {
+                assertSameMessage(RecordingWriter.withoutSensors(Runs.snapshot(i)), snapshots.get(i));
+                assertEquals(0, snapshots.get(i).robots().get(0).sonar().length);
+                assertEquals(0, snapshots.get(i).robots().get(0).laser().length);
             }
-            assertEquals("over here", frames.get(3).messages().get(0).body());
-            assertEquals("hello", frames.get(2).said().get(0).text());
+            assertEquals("over here", snapshots.get(3).messages().get(0).body());
+            assertEquals("hello", snapshots.get(2).said().get(0).text());
         }
     }
 
@@ -78,15 +78,15 @@ class RecordingRoundTripTest {
     }
 
     @Test
-    void aStepCostsFarLessThanItsWireFrame() throws IOException {
+    void aStepCostsFarLessThanItsWireSnapshot() throws IOException {
         byte[] recording = Runs.record(true, true);
         int wire = 0;
-        for (ViewerFrame f : Runs.frames()) {
+        for (Snapshot f : Runs.snapshots()) {
             wire += CODEC.encode(f).length;
         }
         int world = RecordingFormat.OVERHEAD + 400;
         assertTrue(recording.length - world < wire / 2,
-                "recording of " + recording.length + " bytes vs " + wire + " bytes of wire frames");
+                "recording of " + recording.length + " bytes vs " + wire + " bytes of wire snapshots");
     }
 
     @Test
@@ -103,25 +103,25 @@ class RecordingRoundTripTest {
         Path file = dir.resolve("runs/one.rsr");
         try (RecordingWriter w = RecordingWriter.create(file, true)) {
             w.world(Runs.world());
-            for (ViewerFrame f : Runs.frames()) {
-                w.frame(f);
+            for (Snapshot f : Runs.snapshots()) {
+                w.snapshot(f);
             }
             w.end("done");
             assertEquals(Files.size(file), w.bytesWritten(), "every record is flushed as it is written");
-            assertEquals(Runs.STEPS + 1, w.framesWritten());
+            assertEquals(Runs.STEPS + 1, w.snapshotsWritten());
         }
         Recording r = Recording.read(file);
         assertTrue(r.complete());
-        assertEquals(Runs.STEPS + 1, r.frames().size());
+        assertEquals(Runs.STEPS + 1, r.snapshots().size());
         assertEquals("literal", r.world().name());
         assertEquals(Files.size(file), r.bytes());
-        assertSameMessage(Runs.frame(7), r.frames().get(7).frame());
+        assertSameMessage(Runs.snapshot(7), r.snapshots().get(7).snapshot());
     }
 
     @Test
-    void aFrameBeforeTheWorldIsRefused() throws IOException {
+    void aSnapshotBeforeTheWorldIsRefused() throws IOException {
         try (RecordingWriter w = new RecordingWriter(new ByteArrayOutputStream(), "mem", true)) {
-            IllegalStateException e = assertThrows(IllegalStateException.class, () -> w.frame(Runs.frame(0)));
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> w.snapshot(Runs.snapshot(0)));
             assertTrue(e.getMessage().contains("before the world"), e.getMessage());
         }
     }

@@ -6,8 +6,8 @@ import java.util.ArrayList;
 import java.util.List;
 import robosim.protocol.Command;
 import robosim.protocol.MessageDelivery;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
@@ -36,7 +36,7 @@ final class Runs {
                 List.of(new WorldDescription.HeatSource(5000, 3000, 40)));
     }
 
-    static ViewerFrame frame(int step) {
+    static Snapshot snapshot(int step) {
         boolean stalled = step >= 5;
         double x1 = 1000 + 100 * Math.min(step, 5);
         RobotView r1 = new RobotView("r1", x1, 1000.5, 0, stalled, true, new int[] {5000 - step, 2000 + step},
@@ -46,16 +46,16 @@ final class Runs {
         List<MessageDelivery> messages = step == 3
                 ? List.of(new MessageDelivery("r2", Command.Addressing.ROBOT, "r1", "text", "over here", 3, 1))
                 : List.of();
-        List<ViewerFrame.Said> said = step == 2 ? List.of(new ViewerFrame.Said("r2", "hello")) : List.of();
-        return new ViewerFrame(step, step * 100L, List.of(r1, r2), messages, said);
+        List<Snapshot.Said> said = step == 2 ? List.of(new Snapshot.Said("r2", "hello")) : List.of();
+        return new Snapshot(step, step * 100L, List.of(r1, r2), messages, said);
     }
 
-    static List<ViewerFrame> frames() {
-        List<ViewerFrame> frames = new ArrayList<>();
+    static List<Snapshot> snapshots() {
+        List<Snapshot> snapshots = new ArrayList<>();
         for (int step = 0; step <= STEPS; step++) {
-            frames.add(frame(step));
+            snapshots.add(snapshot(step));
         }
-        return frames;
+        return snapshots;
     }
 
     /** @return the bytes of the literal run recorded, with or without sensors, ended or not */
@@ -63,8 +63,8 @@ final class Runs {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (RecordingWriter w = new RecordingWriter(bytes, "literal.rsr", sensors)) {
             w.world(world());
-            for (ViewerFrame f : frames()) {
-                w.frame(f);
+            for (Snapshot f : snapshots()) {
+                w.snapshot(f);
             }
             if (ended) {
                 w.end("done: step limit 10 reached");

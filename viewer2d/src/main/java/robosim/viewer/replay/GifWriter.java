@@ -14,14 +14,14 @@ import javax.imageio.ImageWriter;
 import javax.imageio.metadata.IIOMetadata;
 import javax.imageio.metadata.IIOMetadataNode;
 import javax.imageio.stream.ImageOutputStream;
-import robosim.viewer.FrameSink;
+import robosim.viewer.ImageSink;
 
 /**
- * Writes frames as one animated GIF, with ImageIO's GIF writer: every frame shown for the same
+ * Writes images as one animated GIF, with ImageIO's GIF writer: every frame shown for the same
  * delay, and the NETSCAPE2.0 application extension so that viewers loop it for ever. Colours are
  * reduced to the GIF's 256 by ImageIO's own palette builder, frame by frame.
  */
-public final class GifWriter implements FrameSink, Closeable {
+public final class GifWriter implements ImageSink, Closeable {
     /** The shortest delay browsers honour, in hundredths of a second; shorter ones they slow down. */
     public static final int MIN_DELAY_CS = 2;
     private static final String FORMAT = "javax_imageio_gif_image_1.0";
@@ -30,7 +30,7 @@ public final class GifWriter implements FrameSink, Closeable {
     private final int delayCs;
     private final ImageWriter writer;
     private final ImageOutputStream out;
-    private int frames;
+    private int images;
 
     /**
      * Creates (or replaces) the file, with its parent directories.
@@ -83,7 +83,7 @@ public final class GifWriter implements FrameSink, Closeable {
         control.setAttribute("transparentColorFlag", "FALSE");
         control.setAttribute("delayTime", Integer.toString(delayCs));
         control.setAttribute("transparentColorIndex", "0");
-        if (frames == 0) {
+        if (images == 0) {
             IIOMetadataNode loop = new IIOMetadataNode("ApplicationExtension");
             loop.setAttribute("applicationID", "NETSCAPE");
             loop.setAttribute("authenticationCode", "2.0");
@@ -92,7 +92,7 @@ public final class GifWriter implements FrameSink, Closeable {
         }
         metadata.setFromTree(FORMAT, root);
         writer.writeToSequence(new IIOImage(image, null, metadata), param);
-        frames++;
+        images++;
     }
 
     private static IIOMetadataNode child(IIOMetadataNode parent, String name) {
@@ -106,9 +106,9 @@ public final class GifWriter implements FrameSink, Closeable {
         return node;
     }
 
-    /** @return the frames written so far */
-    public int frames() {
-        return frames;
+    /** @return the images written so far */
+    public int images() {
+        return images;
     }
 
     /** @return each frame's delay, hundredths of a second */

@@ -5,8 +5,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.RecordingException;
 import robosim.protocol.recording.RecordingReader;
@@ -22,10 +22,10 @@ import robosim.protocol.recording.RecordingReader;
  * @param height    world height, mm
  * @param stepMs    step length, ms
  * @param obstacles how many walls and obstacles it has
- * @param frames    how many frames the recording holds (read whole)
- * @param firstStep the first frame's step, or -1
- * @param lastStep  the last frame's step, or -1
- * @param timeMs    simulated time at the last frame, ms
+ * @param snapshots    how many snapshots the recording holds (read whole)
+ * @param firstStep the first snapshot's step, or -1
+ * @param lastStep  the last snapshot's step, or -1
+ * @param timeMs    simulated time at the last snapshot, ms
  * @param messages  messages the robots sent
  * @param said      things the robots said
  * @param robots    per robot, in the world's order then in order of appearance
@@ -33,7 +33,7 @@ import robosim.protocol.recording.RecordingReader;
  * @param endReason why the run ended, or {@code null} if the recording has no end record
  * @param problem   the damage that stopped the reading, or {@code null}
  */
-public record RecordingSummary(String world, double width, double height, int stepMs, int obstacles, long frames,
+public record RecordingSummary(String world, double width, double height, int stepMs, int obstacles, long snapshots,
                                long firstStep, long lastStep, long timeMs, long messages, long said,
                                List<RobotTotals> robots, boolean sensors, String endReason,
                                RecordingException problem) {
@@ -79,7 +79,7 @@ public record RecordingSummary(String world, double width, double height, int st
         WorldDescription world = reader.world();
         Map<String, Tally> tallies = new LinkedHashMap<>();
         world.robots().forEach(r -> tallies.put(r.name(), new Tally(r.robotType())));
-        long frames = 0;
+        long snapshots = 0;
         long first = -1;
         long last = -1;
         long time = 0;
@@ -87,9 +87,9 @@ public record RecordingSummary(String world, double width, double height, int st
         long said = 0;
         RecordingException problem = null;
         try {
-            ViewerFrame f;
+            Snapshot f;
             while ((f = reader.next()) != null) {
-                frames++;
+                snapshots++;
                 first = first < 0 ? f.step() : first;
                 last = f.step();
                 time = f.timeMs();
@@ -107,7 +107,7 @@ public record RecordingSummary(String world, double width, double height, int st
                 t.last == null ? Double.NaN : t.last.x(), t.last == null ? Double.NaN : t.last.y(),
                 t.last == null ? Double.NaN : t.last.th())));
         return new RecordingSummary(world.name(), world.width(), world.height(), world.stepMs(),
-                world.obstacles().size(), frames, first, last, time, messages, said, robots, reader.sensors(),
+                world.obstacles().size(), snapshots, first, last, time, messages, said, robots, reader.sensors(),
                 reader.endReason(), problem);
     }
 

@@ -1,16 +1,16 @@
 package robosim.viewer.replay;
 
 import java.io.IOException;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.RecordingException;
 import robosim.protocol.recording.RecordingReader;
-import robosim.viewer.RenderedFrames;
+import robosim.viewer.RenderedImages;
 
 /**
- * Feeds a recording, step by step, to a {@link RenderedFrames} as the live viewer feeds the wire:
+ * Feeds a recording, step by step, to a {@link RenderedImages} as the live viewer feeds the wire:
  * the steps before the range only extend the trails, the steps in it are drawn (as the
- * {@code RenderedFrames} says: every K-th, and the last), and reading stops after the range. A damaged recording is drawn up to its last good
+ * {@code RenderedImages} says: every K-th, and the last), and reading stops after the range. A damaged recording is drawn up to its last good
  * step, and the damage is reported in the result rather than thrown.
  */
 public final class Replay {
@@ -20,13 +20,13 @@ public final class Replay {
     /**
      * What a replay drew.
      *
-     * @param framesRead  the frames read from the recording
-     * @param framesDrawn the images handed to the sink
+     * @param snapshotsRead  the snapshots read from the recording
+     * @param imagesDrawn the images handed to the sink
      * @param firstStep   the first step in range, or -1 if none was
      * @param lastStep    the last step in range, or -1 if none was
      * @param problem     the damage that stopped the reading, or {@code null}
      */
-    public record Result(long framesRead, long framesDrawn, long firstStep, long lastStep, RecordingException problem) {
+    public record Result(long snapshotsRead, long imagesDrawn, long firstStep, long lastStep, RecordingException problem) {
     }
 
     /**
@@ -38,7 +38,7 @@ public final class Replay {
      * @return what was drawn, and the damage if the recording is damaged
      * @throws IOException if the images cannot be stored or the file cannot be read
      */
-    public static Result run(RecordingReader reader, RenderedFrames out, ReplayRange range) throws IOException {
+    public static Result run(RecordingReader reader, RenderedImages out, ReplayRange range) throws IOException {
         long read = 0;
         long first = -1;
         long last = -1;
@@ -46,7 +46,7 @@ public final class Replay {
         WorldDescription world = reader.world();
         out.world(world);
         try {
-            ViewerFrame f;
+            Snapshot f;
             while ((f = reader.next()) != null && f.step() <= range.to()) {
                 read++;
                 if (reader.world() != world) {
@@ -59,7 +59,7 @@ public final class Replay {
                 }
                 first = first < 0 ? f.step() : first;
                 last = f.step();
-                out.frame(f);
+                out.snapshot(f);
             }
         } catch (RecordingException e) {
             problem = e;

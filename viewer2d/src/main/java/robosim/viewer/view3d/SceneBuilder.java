@@ -4,8 +4,8 @@ import java.awt.Color;
 import java.util.ArrayList;
 import java.util.List;
 import robosim.geometry.Pose2D;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
@@ -32,21 +32,21 @@ final class SceneBuilder {
     private SceneBuilder() {
     }
 
-    static List<Face> build(WorldDescription world, ViewerFrame frame, Projection p) {
+    static List<Face> build(WorldDescription world, Snapshot snapshot, Projection p) {
         List<Face> faces = new ArrayList<>();
         for (Obstacle o : world.obstacles()) {
             if (o.xy() != null && o.xy().length >= 6 && o.height() > 0 && Double.isFinite(o.height())) {
                 prism(faces, p, ring(o.xy()), 0, o.height(), WALL, null, null);
             }
         }
-        if (frame != null) {
+        if (snapshot != null) {
             List<RobotInfo> infos = world.robots();
-            for (RobotView r : frame.robots()) {
+            for (RobotView r : snapshot.robots()) {
                 if (!Double.isFinite(r.x()) || !Double.isFinite(r.y()) || !Double.isFinite(r.th())) {
                     continue;
                 }
                 RobotInfo info = infos.stream().filter(i -> i.name().equals(r.name())).findFirst().orElse(null);
-                Color colour = r.connected() ? WorldRenderer.colourOf(world, frame, r.name()) : RobotPalette.DISCONNECTED;
+                Color colour = r.connected() ? WorldRenderer.colourOf(world, snapshot, r.name()) : RobotPalette.DISCONNECTED;
                 Pose2D pose = new Pose2D(r.x(), r.y(), Math.toRadians(r.th()));
                 double[] ring = footprint(pose, info == null ? null : info.parameters());
                 double[] mark = heading(pose, info == null ? null : info.parameters());

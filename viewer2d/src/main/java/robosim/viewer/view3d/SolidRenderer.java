@@ -11,22 +11,22 @@ import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.Comparator;
 import java.util.List;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
-import robosim.viewer.FramePainter;
+import robosim.viewer.SnapshotPainter;
 import robosim.viewer.TrailPainter;
 import robosim.viewer.Trails;
 import robosim.viewer.WorldRenderer;
 
 /**
- * Draws the 3D view of a frame: the sky, the floor with its heat sources and the robots' trails,
+ * Draws the 3D view of a snapshot: the sky, the floor with its heat sources and the robots' trails,
  * then every visible face of the walls, obstacles and robots from the farthest to the nearest
  * (the painter's algorithm), each in its colour shaded by the light, then the robots' names and
  * the caption. Pure drawing, no state between calls.
  */
-public final class SolidRenderer implements FramePainter {
+public final class SolidRenderer implements SnapshotPainter {
     /** The colour around the world. */
     public static final Color SKY = new Color(214, 224, 236);
     private static final Color HEAT = new Color(240, 110, 20);
@@ -35,7 +35,7 @@ public final class SolidRenderer implements FramePainter {
 
     private final SceneOptions options;
 
-    /** @param options how frames are drawn when used as a {@link FramePainter} */
+    /** @param options how snapshots are drawn when used as a {@link SnapshotPainter} */
     public SolidRenderer(SceneOptions options) {
         if (options == null) {
             throw new IllegalArgumentException("null was supplied for options: they are required");
@@ -44,27 +44,27 @@ public final class SolidRenderer implements FramePainter {
     }
 
     @Override
-    public BufferedImage paint(WorldDescription world, ViewerFrame frame, Trails trails) {
-        return render(world, frame, options, trails);
+    public BufferedImage paint(WorldDescription world, Snapshot snapshot, Trails trails) {
+        return render(world, snapshot, options, trails);
     }
 
     /**
-     * Draws a frame into a new image as wide as the options say and as high as suits the camera
+     * Draws a snapshot into a new image as wide as the options say and as high as suits the camera
      * (see {@link Projection#heightFor}).
      *
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null} for the world alone
+     * @param snapshot   the robots after one step, or {@code null} for the world alone
      * @param options the width, camera, light and what to show
      * @param trails  the robots' paths, or {@code null}
      * @return a new {@link BufferedImage#TYPE_INT_RGB} image
      */
-    public static BufferedImage render(WorldDescription world, ViewerFrame frame, SceneOptions options, Trails trails) {
+    public static BufferedImage render(WorldDescription world, Snapshot snapshot, SceneOptions options, Trails trails) {
         int height = Projection.heightFor(world, options.camera(), options.width());
         Projection p = Projection.fit(world, options.camera(), options.width(), height, Double.NaN, Double.NaN);
         BufferedImage image = new BufferedImage(options.width(), height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
-            draw(g, p, world, frame, options, trails);
+            draw(g, p, world, snapshot, options, trails);
         } finally {
             g.dispose();
         }
@@ -72,16 +72,16 @@ public final class SolidRenderer implements FramePainter {
     }
 
     /**
-     * Draws a frame onto any surface, such as a window's component, through a projection.
+     * Draws a snapshot onto any surface, such as a window's component, through a projection.
      *
      * @param target  where to draw; its settings are left as they were
      * @param p       the projection, which also gives the size of the area drawn
      * @param world   the static world
-     * @param frame   the robots after one step, or {@code null}
+     * @param snapshot   the robots after one step, or {@code null}
      * @param options the light and what to show; its width and camera are the projection's business
      * @param trails  the robots' paths, or {@code null}
      */
-    public static void draw(Graphics2D target, Projection p, WorldDescription world, ViewerFrame frame,
+    public static void draw(Graphics2D target, Projection p, WorldDescription world, Snapshot snapshot,
                             SceneOptions options, Trails trails) {
         Graphics2D g = (Graphics2D) target.create();
         try {
@@ -96,19 +96,19 @@ public final class SolidRenderer implements FramePainter {
                 0, world.height(), 0}));
             drawHeat(g, p, world.heat());
             if (trails != null && options.showTrails()) {
-                drawTrails(g, p, world, frame, trails);
+                drawTrails(g, p, world, snapshot, trails);
             }
-            List<Face> faces = SceneBuilder.build(world, frame, p);
+            List<Face> faces = SceneBuilder.build(world, snapshot, p);
             faces.sort(Comparator.comparingDouble(f -> f.depth(p)));
             g.setStroke(new BasicStroke(1f));
             for (Face f : faces) {
                 drawFace(g, p, f, light);
             }
-            if (frame != null && options.showNames()) {
-                drawNames(g, p, frame);
+            if (snapshot != null && options.showNames()) {
+                drawNames(g, p, snapshot);
             }
-            if (frame != null && options.showCaption()) {
-                WorldRenderer.drawCaption(g, p.width(), WorldRenderer.caption(frame));
+            if (snapshot != null && options.showCaption()) {
+                WorldRenderer.drawCaption(g, p.width(), WorldRenderer.caption(snapshot));
             }
         } finally {
             g.dispose();
@@ -146,18 +146,18 @@ public final class SolidRenderer implements FramePainter {
         }
     }
 
-    private static void drawTrails(Graphics2D g, Projection p, WorldDescription world, ViewerFrame frame,
+    private static void drawTrails(Graphics2D g, Projection p, WorldDescription world, Snapshot snapshot,
                                    Trails trails) {
-        TrailPainter.draw(g, trails, robot -> WorldRenderer.colourOf(world, frame, robot), (x, y, out) -> {
+        TrailPainter.draw(g, trails, robot -> WorldRenderer.colourOf(world, snapshot, robot), (x, y, out) -> {
             out[0] = p.px(x, y, 0);
             out[1] = p.py(x, y, 0);
         });
     }
 
-    private static void drawNames(Graphics2D g, Projection p, ViewerFrame frame) {
+    private static void drawNames(Graphics2D g, Projection p, Snapshot snapshot) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, Math.max(10, Math.min(24, p.width() / 70))));
         g.setColor(TEXT);
-        for (RobotView r : frame.robots()) {
+        for (RobotView r : snapshot.robots()) {
             if (r.name() != null && Double.isFinite(r.x()) && Double.isFinite(r.y())) {
                 double z = Projection.ROBOT_HEIGHT_MM + 60;
                 g.drawString(r.name(), (float) p.px(r.x(), r.y(), z) + 6, (float) p.py(r.x(), r.y(), z) - 6);

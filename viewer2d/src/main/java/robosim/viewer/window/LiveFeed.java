@@ -3,16 +3,16 @@ package robosim.viewer.window;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.SwingUtilities;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 
 /**
  * Carries a live run from the network thread to a {@link ViewModel} on the Swing event thread, in
  * order. What arrives faster than the window paints is gathered and handed over together, so a
- * fast run never floods the event queue, and every frame still extends the trails.
+ * fast run never floods the event queue, and every snapshot still extends the trails.
  */
-public final class LiveFeed implements FrameListener {
+public final class LiveFeed implements SnapshotListener {
     private final ViewModel model;
     private final List<Object> pending = new ArrayList<>();
     private boolean scheduled;
@@ -31,8 +31,8 @@ public final class LiveFeed implements FrameListener {
     }
 
     @Override
-    public void frame(ViewerFrame frame) {
-        post(frame);
+    public void snapshot(Snapshot snapshot) {
+        post(snapshot);
     }
 
     @Override
@@ -56,7 +56,7 @@ public final class LiveFeed implements FrameListener {
         SwingUtilities.invokeLater(this::deliver);
     }
 
-    /** On the event thread: applies what has arrived, in order, a run of frames at a time. */
+    /** On the event thread: applies what has arrived, in order, a run of snapshots at a time. */
     private void deliver() {
         List<Object> events;
         synchronized (pending) {
@@ -64,20 +64,20 @@ public final class LiveFeed implements FrameListener {
             pending.clear();
             scheduled = false;
         }
-        List<ViewerFrame> frames = new ArrayList<>();
+        List<Snapshot> snapshots = new ArrayList<>();
         for (Object e : events) {
-            if (e instanceof ViewerFrame f) {
-                frames.add(f);
+            if (e instanceof Snapshot f) {
+                snapshots.add(f);
                 continue;
             }
-            model.frames(frames);
-            frames = new ArrayList<>();
+            model.snapshots(snapshots);
+            snapshots = new ArrayList<>();
             if (e instanceof WorldDescription w) {
                 model.world(w);
             } else if (e instanceof Ended end && (end.orderly() || model.endedReason() == null)) {
                 model.ended(end.reason());
             }
         }
-        model.frames(frames);
+        model.snapshots(snapshots);
     }
 }

@@ -3,7 +3,7 @@ package robosim.viewer.window;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.Timer;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.Recording;
 
@@ -34,7 +34,7 @@ public final class ReplayPlayer {
      * @param model     the window's model
      */
     public ReplayPlayer(Recording recording, ViewModel model) {
-        this.steps = recording.frames();
+        this.steps = recording.snapshots();
         this.model = model;
         this.timer = new Timer(1000, e -> tick());
         model.source("replay of " + recording.file().getFileName());
@@ -75,9 +75,9 @@ public final class ReplayPlayer {
         while (start > 0 && steps.get(start - 1).world() == world) {
             start--;
         }
-        List<ViewerFrame> history = new ArrayList<>(i - start + 1);
+        List<Snapshot> history = new ArrayList<>(i - start + 1);
         for (int k = start; k <= i; k++) {
-            history.add(steps.get(k).frame());
+            history.add(steps.get(k).snapshot());
         }
         index = i;
         model.jump(history);
@@ -97,16 +97,16 @@ public final class ReplayPlayer {
             }
             return;
         }
-        List<ViewerFrame> next = new ArrayList<>();
+        List<Snapshot> next = new ArrayList<>();
         for (int k = index + 1; k <= target; k++) {
             if (steps.get(k).world() != model.world()) {
                 seek(target);
                 return;
             }
-            next.add(steps.get(k).frame());
+            next.add(steps.get(k).snapshot());
         }
         index = target;
-        model.frames(next);
+        model.snapshots(next);
         changed();
     }
 

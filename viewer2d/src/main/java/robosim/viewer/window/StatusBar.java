@@ -5,7 +5,7 @@ import java.util.Locale;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /** The line under the view: the world, the step and simulated time, the source, and the end. */
@@ -42,10 +42,10 @@ public final class StatusBar extends JPanel {
             return "waiting for the world" + (model.source().isEmpty() ? "" : " · " + model.source());
         }
         StringBuilder s = new StringBuilder("world ").append(world.name());
-        ViewerFrame frame = model.frame();
-        if (frame != null) {
-            s.append(String.format(Locale.ROOT, " · step %d · t = %.1f s · %d robots", frame.step(),
-                    frame.timeMs() / 1000.0, frame.robots().size()));
+        Snapshot snapshot = model.snapshot();
+        if (snapshot != null) {
+            s.append(String.format(Locale.ROOT, " · step %d · t = %.1f s · %d robots", snapshot.step(),
+                    snapshot.timeMs() / 1000.0, snapshot.robots().size()));
         }
         if (!model.source().isEmpty()) {
             s.append(" · ").append(model.source());

@@ -2,12 +2,12 @@ package robosim.viewer.window;
 
 import java.util.ArrayList;
 import java.util.List;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.viewer.Trails;
 
 /**
- * What the window shows: the world, the current frame, the robots' trails, and where the frames
+ * What the window shows: the world, the current snapshot, the robots' trails, and where the snapshots
  * come from or why they stopped. Panels observe it and repaint when it changes. Used on the Swing
  * event thread only.
  */
@@ -15,7 +15,7 @@ public final class ViewModel {
     private final List<Runnable> observers = new ArrayList<>();
     private final Trails trails = new Trails();
     private WorldDescription world;
-    private ViewerFrame frame;
+    private Snapshot snapshot;
     private String source = "";
     private String ended;
 
@@ -31,50 +31,50 @@ public final class ViewModel {
     }
 
     /**
-     * A new world: the frame and the trails are forgotten.
+     * A new world: the snapshot and the trails are forgotten.
      *
      * @param newWorld the world
      */
     public void world(WorldDescription newWorld) {
         world = newWorld;
-        frame = null;
+        snapshot = null;
         trails.clear();
         changed();
     }
 
     /**
-     * The next frames of a live run, in order: each extends the trails, the last is shown.
+     * The next snapshots of a live run, in order: each extends the trails, the last is shown.
      *
-     * @param frames the frames, oldest first; none is ignored
+     * @param snapshots the snapshots, oldest first; none is ignored
      */
-    public void frames(List<ViewerFrame> frames) {
-        if (frames.isEmpty()) {
+    public void snapshots(List<Snapshot> snapshots) {
+        if (snapshots.isEmpty()) {
             return;
         }
-        for (ViewerFrame f : frames) {
+        for (Snapshot f : snapshots) {
             trails.add(f);
         }
-        frame = frames.get(frames.size() - 1);
+        snapshot = snapshots.get(snapshots.size() - 1);
         changed();
     }
 
     /**
-     * Shows a frame out of order, as a replay does when it jumps: the trails are rebuilt from the
-     * frames that lead up to it.
+     * Shows a snapshot out of order, as a replay does when it jumps: the trails are rebuilt from the
+     * snapshots that lead up to it.
      *
-     * @param history the frames from the start up to and including the one to show
+     * @param history the snapshots from the start up to and including the one to show
      */
-    public void jump(List<ViewerFrame> history) {
+    public void jump(List<Snapshot> history) {
         trails.clear();
-        for (ViewerFrame f : history) {
+        for (Snapshot f : history) {
             trails.add(f);
         }
-        frame = history.isEmpty() ? null : history.get(history.size() - 1);
+        snapshot = history.isEmpty() ? null : history.get(history.size() - 1);
         changed();
     }
 
     /**
-     * @param text where the frames come from, such as {@code live from localhost:3000}
+     * @param text where the snapshots come from, such as {@code live from localhost:3000}
      */
     public void source(String text) {
         source = text;
@@ -82,7 +82,7 @@ public final class ViewModel {
     }
 
     /**
-     * The frames have stopped coming.
+     * The snapshots have stopped coming.
      *
      * @param reason why, such as the Environment's goodbye
      */
@@ -96,22 +96,22 @@ public final class ViewModel {
         return world;
     }
 
-    /** @return the frame shown, or {@code null} */
-    public ViewerFrame frame() {
-        return frame;
+    /** @return the snapshot shown, or {@code null} */
+    public Snapshot snapshot() {
+        return snapshot;
     }
 
-    /** @return the robots' paths up to the frame shown */
+    /** @return the robots' paths up to the snapshot shown */
     public Trails trails() {
         return trails;
     }
 
-    /** @return where the frames come from */
+    /** @return where the snapshots come from */
     public String source() {
         return source;
     }
 
-    /** @return why the frames stopped, or {@code null} while they come */
+    /** @return why the snapshots stopped, or {@code null} while they come */
     public String endedReason() {
         return ended;
     }

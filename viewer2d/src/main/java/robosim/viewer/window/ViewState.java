@@ -1,7 +1,7 @@
 package robosim.viewer.window;
 
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.viewer.RenderOptions;
 import robosim.viewer.ViewTransform;
@@ -15,7 +15,7 @@ import robosim.viewer.view3d.SceneOptions;
  * the 2D zoom and pan, the 3D camera and light, and the robot followed. Plain state with the
  * arithmetic of the mouse gestures, kept apart from Swing so that it is tested directly.
  *
- * <p>At zoom 1 with no pan the 2D view is placed exactly as a PNG frame of the panel's width is
+ * <p>At zoom 1 with no pan the 2D view is placed exactly as a PNG snapshot of the panel's width is
  * drawn, so the window and the files show the same pixels.
  */
 public final class ViewState {
@@ -110,17 +110,17 @@ public final class ViewState {
      * followed robot.
      *
      * @param world  the world
-     * @param frame  the frame, for the followed robot's position; may be {@code null}
+     * @param snapshot  the snapshot, for the followed robot's position; may be {@code null}
      * @param width  panel width, px
      * @param height panel height, px
      * @return the placement
      */
-    public Placement place(WorldDescription world, ViewerFrame frame, int width, int height) {
+    public Placement place(WorldDescription world, Snapshot snapshot, int width, int height) {
         ViewTransform base = ViewTransform.fit(world, fitWidth(world, width, height));
         ViewTransform view = zoom == 1 ? base : new ViewTransform(base.scale() * zoom,
                 (int) Math.ceil(world.width() * base.scale() * zoom), (int) Math.ceil(world.height() * base.scale() * zoom),
                 world.height());
-        RobotView robot = followed(frame);
+        RobotView robot = followed(snapshot);
         if (robot != null) {
             return new Placement(view, width / 2.0 - view.px(robot.x()), height / 2.0 - view.py(robot.y()));
         }
@@ -140,13 +140,13 @@ public final class ViewState {
      * The 3D projection for a panel, centred on the followed robot if there is one.
      *
      * @param world  the world
-     * @param frame  the frame, or {@code null}
+     * @param snapshot  the snapshot, or {@code null}
      * @param width  panel width, px
      * @param height panel height, px
      * @return the projection
      */
-    public Projection project(WorldDescription world, ViewerFrame frame, int width, int height) {
-        RobotView robot = followed(frame);
+    public Projection project(WorldDescription world, Snapshot snapshot, int width, int height) {
+        RobotView robot = followed(snapshot);
         return Projection.fit(world, camera, Math.max(1, width), Math.max(1, height),
                 robot == null ? Double.NaN : robot.x(), robot == null ? Double.NaN : robot.y());
     }
@@ -167,17 +167,17 @@ public final class ViewState {
      * @param x      the panel x to zoom about
      * @param y      the panel y
      * @param world  the world
-     * @param frame  the frame, or {@code null}
+     * @param snapshot  the snapshot, or {@code null}
      * @param width  panel width
      * @param height panel height
      */
-    public void zoomAbout(double factor, double x, double y, WorldDescription world, ViewerFrame frame,
+    public void zoomAbout(double factor, double x, double y, WorldDescription world, Snapshot snapshot,
                           int width, int height) {
         if (threeD) {
             camera = camera.withZoom(camera.zoom() * factor);
             return;
         }
-        Placement before = place(world, frame, width, height);
+        Placement before = place(world, snapshot, width, height);
         double newZoom = Math.max(MIN_ZOOM, Math.min(MAX_ZOOM, zoom * factor));
         double k = newZoom / zoom;
         zoom = newZoom;
@@ -203,11 +203,11 @@ public final class ViewState {
         panY += dy;
     }
 
-    private RobotView followed(ViewerFrame frame) {
-        if (follow == null || frame == null) {
+    private RobotView followed(Snapshot snapshot) {
+        if (follow == null || snapshot == null) {
             return null;
         }
-        for (RobotView r : frame.robots()) {
+        for (RobotView r : snapshot.robots()) {
             if (follow.equals(r.name()) && Double.isFinite(r.x()) && Double.isFinite(r.y())) {
                 return r;
             }

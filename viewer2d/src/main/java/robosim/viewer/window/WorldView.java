@@ -9,14 +9,14 @@ import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.awt.geom.Rectangle2D;
 import javax.swing.JComponent;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.viewer.WorldRenderer;
 import robosim.viewer.view3d.SolidRenderer;
 
 /**
  * The drawing area: the world in 2D through the {@link WorldRenderer} or in 3D through the
- * {@link SolidRenderer}, exactly as the PNG frames are drawn, placed by the {@link ViewState}.
+ * {@link SolidRenderer}, exactly as the PNG snapshots are drawn, placed by the {@link ViewState}.
  * The mouse wheel zooms about the pointer; a drag pans the 2D view or turns the 3D camera.
  */
 public final class WorldView extends JComponent {
@@ -52,7 +52,7 @@ public final class WorldView extends JComponent {
             int w = getWidth();
             int h = getHeight();
             WorldDescription world = model.world();
-            ViewerFrame frame = model.frame();
+            Snapshot snapshot = model.snapshot();
             if (world == null || w < 1 || h < 1) {
                 g.setColor(SURROUND);
                 g.fill(new Rectangle2D.Double(0, 0, Math.max(1, w), Math.max(1, h)));
@@ -61,18 +61,18 @@ public final class WorldView extends JComponent {
                 return;
             }
             if (state.threeD()) {
-                SolidRenderer.draw(g, state.project(world, frame, w, h), world, frame, state.scene(w), model.trails());
+                SolidRenderer.draw(g, state.project(world, snapshot, w, h), world, snapshot, state.scene(w), model.trails());
                 return;
             }
             g.setColor(SURROUND);
             g.fill(new Rectangle2D.Double(0, 0, w, h));
-            ViewState.Placement place = state.place(world, frame, w, h);
+            ViewState.Placement place = state.place(world, snapshot, w, h);
             Graphics2D inner = (Graphics2D) g.create();
             inner.translate(place.originX(), place.originY());
-            renderer.draw(inner, place.view(), world, frame, state.render(), model.trails());
+            renderer.draw(inner, place.view(), world, snapshot, state.render(), model.trails());
             inner.dispose();
-            if (frame != null) {
-                WorldRenderer.drawCaption(g, Math.min(w, place.view().width()), WorldRenderer.caption(frame));
+            if (snapshot != null) {
+                WorldRenderer.drawCaption(g, Math.min(w, place.view().width()), WorldRenderer.caption(snapshot));
             }
         } finally {
             g.dispose();
@@ -105,7 +105,7 @@ public final class WorldView extends JComponent {
                 return;
             }
             double factor = Math.pow(WHEEL_STEP, -e.getPreciseWheelRotation());
-            state.zoomAbout(factor, e.getX(), e.getY(), model.world(), model.frame(), getWidth(), getHeight());
+            state.zoomAbout(factor, e.getX(), e.getY(), model.world(), model.snapshot(), getWidth(), getHeight());
             repaint();
         }
     }

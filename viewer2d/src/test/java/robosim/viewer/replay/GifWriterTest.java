@@ -36,7 +36,7 @@ class GifWriterTest {
             gif.accept(0, filled(Color.RED));
             gif.accept(1, filled(Color.GREEN));
             gif.accept(2, filled(Color.BLUE));
-            assertEquals(3, gif.frames());
+            assertEquals(3, gif.images());
             assertEquals(10, gif.delayCentiseconds());
         }
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {

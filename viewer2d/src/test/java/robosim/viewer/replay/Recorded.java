@@ -3,8 +3,8 @@ package robosim.viewer.replay;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.RecordingWriter;
 
@@ -25,9 +25,9 @@ final class Recorded {
                         new WorldDescription.RobotInfo("r2", "pioneer", null)));
     }
 
-    static ViewerFrame frame(int step) {
+    static Snapshot snapshot(int step) {
         boolean stalled = step == 4 || step == 5 || step >= 8;
-        return new ViewerFrame(step, step * 100L, List.of(
+        return new Snapshot(step, step * 100L, List.of(
                 new RobotView("r1", 500 + 100 * step, 500, 0, stalled, true, new int[0]),
                 new RobotView("r2", 3000, 1500, 90, false, true, new int[0])));
     }
@@ -37,7 +37,7 @@ final class Recorded {
         try (RecordingWriter w = RecordingWriter.create(file, false)) {
             w.world(world());
             for (int step = 0; step <= LAST; step++) {
-                w.frame(frame(step));
+                w.snapshot(snapshot(step));
             }
             if (ended) {
                 w.end("done: step limit 12 reached");

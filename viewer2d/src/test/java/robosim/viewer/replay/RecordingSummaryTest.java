@@ -21,7 +21,7 @@ class RecordingSummaryTest {
             s = RecordingSummary.of(reader);
         }
         assertEquals("recorded", s.world());
-        assertEquals(13, s.frames());
+        assertEquals(13, s.snapshots());
         assertEquals(0, s.firstStep());
         assertEquals(12, s.lastStep());
         assertEquals(1200, s.timeMs());

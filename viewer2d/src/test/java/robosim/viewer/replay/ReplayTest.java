@@ -14,9 +14,9 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.recording.RecordingReader;
-import robosim.viewer.FramePainter;
+import robosim.viewer.SnapshotPainter;
 import robosim.viewer.RenderOptions;
-import robosim.viewer.RenderedFrames;
+import robosim.viewer.RenderedImages;
 import robosim.viewer.WorldRenderer;
 
 /** Replay draws the chosen steps of a recording through the live viewer's renderer. */
@@ -30,7 +30,7 @@ class ReplayTest {
     private final List<BufferedImage> images = new ArrayList<>();
 
     private Replay.Result replay(Path file, int every, ReplayRange range) throws IOException {
-        RenderedFrames out = new RenderedFrames(FramePainter.flat(new WorldRenderer(), OPTIONS), (step, image) -> {
+        RenderedImages out = new RenderedImages(SnapshotPainter.flat(new WorldRenderer(), OPTIONS), (step, image) -> {
             drawn.add(step);
             images.add(image);
         }, every, false);
@@ -44,7 +44,7 @@ class ReplayTest {
         Replay.Result r = replay(Recorded.write(dir.resolve("run.rsr"), true), 1, ReplayRange.ALL);
         assertEquals(List.of(0L, 1L, 2L, 3L, 4L, 5L, 6L, 7L, 8L, 9L, 10L, 11L, 12L), drawn);
         assertEquals(new Replay.Result(13, 13, 0, 12, null), r);
-        BufferedImage live = new WorldRenderer().render(Recorded.world(), Recorded.frame(7), OPTIONS);
+        BufferedImage live = new WorldRenderer().render(Recorded.world(), Recorded.snapshot(7), OPTIONS);
         BufferedImage replayed = images.get(7);
         int[] a = live.getRGB(0, 0, live.getWidth(), live.getHeight(), null, 0, live.getWidth());
         int[] b = replayed.getRGB(0, 0, live.getWidth(), live.getHeight(), null, 0, live.getWidth());
@@ -57,7 +57,7 @@ class ReplayTest {
         assertEquals(List.of(3L, 6L, 9L, 10L), drawn);
         assertEquals(2, r.firstStep());
         assertEquals(10, r.lastStep());
-        assertEquals(11, r.framesRead(), "reading stops after the range");
+        assertEquals(11, r.snapshotsRead(), "reading stops after the range");
     }
 
     @Test

@@ -9,8 +9,8 @@ import java.awt.Color;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
@@ -37,8 +37,8 @@ class SolidRendererTest {
                 List.of(new RobotInfo("r1", "pioneer", body)));
     }
 
-    private static ViewerFrame robotAt(double x, double y) {
-        return new ViewerFrame(7, 700, List.of(new RobotView("r1", x, y, 0, false, true, new int[0])));
+    private static Snapshot robotAt(double x, double y) {
+        return new Snapshot(7, 700, List.of(new RobotView("r1", x, y, 0, false, true, new int[0])));
     }
 
     /** The colour of the pixel where the projection puts a world point. */
@@ -50,8 +50,8 @@ class SolidRendererTest {
         return Projection.fit(world, camera, WIDTH, Projection.heightFor(world, camera, WIDTH), Double.NaN, Double.NaN);
     }
 
-    private static BufferedImage render(WorldDescription world, ViewerFrame frame, Camera camera, Light light) {
-        return SolidRenderer.render(world, frame, new SceneOptions(WIDTH, camera, light, false, false, false), null);
+    private static BufferedImage render(WorldDescription world, Snapshot snapshot, Camera camera, Light light) {
+        return SolidRenderer.render(world, snapshot, new SceneOptions(WIDTH, camera, light, false, false, false), null);
     }
 
     @Test

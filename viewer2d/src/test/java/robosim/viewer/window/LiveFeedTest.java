@@ -16,7 +16,7 @@ class LiveFeedTest {
         Thread network = new Thread(() -> {
             feed.world(Scenes.world());
             for (int step = 0; step <= 200; step++) {
-                feed.frame(Scenes.frame(step));
+                feed.snapshot(Scenes.snapshot(step));
             }
             feed.end("done: step limit 200 reached");
             feed.close();
@@ -25,8 +25,8 @@ class LiveFeedTest {
         network.join(10_000);
         String ended = Scenes.onEdt(model::endedReason);
         assertEquals("done: step limit 200 reached", ended, "an orderly end is not overwritten by the close");
-        assertEquals(200L, (long) Scenes.onEdt(() -> model.frame().step()));
-        assertEquals(201, Scenes.onEdt(() -> model.trails().points("r1").length / 2), "every frame extended the trail");
+        assertEquals(200L, (long) Scenes.onEdt(() -> model.snapshot().step()));
+        assertEquals(201, Scenes.onEdt(() -> model.trails().points("r1").length / 2), "every snapshot extended the trail");
     }
 
     @Test
@@ -34,12 +34,12 @@ class LiveFeedTest {
         ViewModel model = new ViewModel();
         LiveFeed feed = new LiveFeed(model);
         feed.world(Scenes.world());
-        feed.frame(Scenes.frame(1));
-        feed.frame(Scenes.frame(2));
+        feed.snapshot(Scenes.snapshot(1));
+        feed.snapshot(Scenes.snapshot(2));
         feed.world(Scenes.world());
-        feed.frame(Scenes.frame(3));
+        feed.snapshot(Scenes.snapshot(3));
         feed.close();
-        assertEquals(3L, (long) Scenes.onEdt(() -> model.frame().step()));
+        assertEquals(3L, (long) Scenes.onEdt(() -> model.snapshot().step()));
         assertEquals(1, Scenes.onEdt(() -> model.trails().points("r1").length / 2), "the trail restarted");
         assertEquals("the connection ended", Scenes.onEdt(model::endedReason));
     }

@@ -23,7 +23,7 @@ class ReplayWindowTest {
         try (RecordingWriter w = RecordingWriter.create(file, true)) {
             w.world(Scenes.world());
             for (int step = 0; step <= 20; step++) {
-                w.frame(Scenes.frame(step));
+                w.snapshot(Scenes.snapshot(step));
             }
             w.end("done");
         }
@@ -37,25 +37,25 @@ class ReplayWindowTest {
         Scenes.onEdt(() -> {
             ReplayPlayer player = new ReplayPlayer(recording, model);
             ViewerPane pane = new ViewerPane(model, new ViewState(), player);
-            assertEquals(0, model.frame().step(), "opens at the first step, paused");
+            assertEquals(0, model.snapshot().step(), "opens at the first step, paused");
             assertFalse(player.playing());
             player.step(1);
             player.step(1);
-            assertEquals(2, model.frame().step());
+            assertEquals(2, model.snapshot().step());
             assertEquals(3, model.trails().points("r1").length / 2, "trails grow with each step");
             player.seek(15);
-            assertEquals(15, model.frame().step());
+            assertEquals(15, model.snapshot().step());
             assertEquals(15, pane.playbackControls().positionSlider().getValue());
             assertEquals(16, model.trails().points("r1").length / 2, "a jump rebuilds the trails to that step");
             player.step(-1);
-            assertEquals(14, model.frame().step());
+            assertEquals(14, model.snapshot().step());
             pane.playbackControls().playButton().doClick();
             assertTrue(player.playing());
             assertEquals("Pause", pane.playbackControls().playButton().getText());
             player.setSpeed(64);
             assertEquals(13, player.stepsPerTick(), "at 64x a 100 ms step lasts 1.6 ms: 13 steps per 20 ms tick");
             player.tick();
-            assertEquals(20, model.frame().step(), "the last step, and no further");
+            assertEquals(20, model.snapshot().step(), "the last step, and no further");
             assertFalse(player.playing(), "playing stops at the end");
             assertTrue(StatusBar.text(model).startsWith("world fixture · step 20 · t = 2.0 s"), StatusBar.text(model));
             assertTrue(StatusBar.text(model).contains("replay of run.rsr"), StatusBar.text(model));

@@ -4,8 +4,8 @@ import java.lang.reflect.InvocationTargetException;
 import java.util.List;
 import java.util.concurrent.Callable;
 import javax.swing.SwingUtilities;
-import robosim.protocol.ViewerFrame;
-import robosim.protocol.ViewerFrame.RobotView;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
@@ -29,8 +29,8 @@ final class Scenes {
     }
 
     /** r1 at x = 2000 + 100 * step, y = 1500, heading 0, with sonar readings. */
-    static ViewerFrame frame(int step) {
-        return new ViewerFrame(step, step * 100L, List.of(
+    static Snapshot snapshot(int step) {
+        return new Snapshot(step, step * 100L, List.of(
                 new RobotView("r1", 2000 + 100 * step, 1500, 0, false, true, new int[] {800, 400})));
     }
 

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 
 import org.junit.jupiter.api.Test;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.viewer.ViewTransform;
 
@@ -67,8 +67,8 @@ class ViewStateTest {
     void followingKeepsTheRobotInTheCentre() {
         state.setFollow("r1");
         state.zoomAbout(4, 0, 0, world, null, 800, 400);
-        ViewerFrame frame = Scenes.frame(5);
-        ViewState.Placement p = state.place(world, frame, 800, 400);
+        Snapshot snapshot = Scenes.snapshot(5);
+        ViewState.Placement p = state.place(world, snapshot, 800, 400);
         assertEquals(2500, worldX(p, 400), 1e-6);
         assertEquals(1500, worldY(p, 200), 1e-6);
     }

@@ -19,17 +19,17 @@ import robosim.viewer.view3d.SolidRenderer;
 
 /**
  * The live window, painted off-screen (no display needed): its screenshot shows the world, its
- * drawing equals the PNG frames', and its controls change what it shows.
+ * drawing equals the PNG snapshots', and its controls change what it shows.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WindowTest {
-    /** A live pane that has been fed the world and frames 0 to 7. */
+    /** A live pane that has been fed the world and snapshots 0 to 7. */
     private static ViewerPane livePane(ViewModel model) {
         ViewerPane pane = new ViewerPane(model, new ViewState());
         model.source("live from test");
         model.world(Scenes.world());
         for (int step = 0; step <= 7; step++) {
-            model.frames(List.of(Scenes.frame(step)));
+            model.snapshots(List.of(Scenes.snapshot(step)));
         }
         return pane;
     }
@@ -72,9 +72,9 @@ class WindowTest {
             g.dispose();
             return image;
         });
-        BufferedImage png = new WorldRenderer().render(Scenes.world(), Scenes.frame(7),
+        BufferedImage png = new WorldRenderer().render(Scenes.world(), Scenes.snapshot(7),
                 RenderOptions.of(800).withTrails(true), model.trails());
-        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG frame");
+        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG snapshot");
     }
 
     @Test
@@ -102,12 +102,12 @@ class WindowTest {
         Scenes.onEdt(() -> {
             ViewerPane pane = new ViewerPane(model, state);
             model.world(Scenes.world());
-            model.frames(List.of(Scenes.frame(7)));
+            model.snapshots(List.of(Scenes.snapshot(7)));
             javax.swing.JComboBox<String> chooser = pane.displayControls().followChooser();
             assertEquals(2, chooser.getItemCount(), "(none) and r1");
             chooser.setSelectedItem("r1");
             assertEquals("r1", state.follow());
-            ViewState.Placement p = state.place(Scenes.world(), Scenes.frame(7), 800, 400);
+            ViewState.Placement p = state.place(Scenes.world(), Scenes.snapshot(7), 800, 400);
             assertEquals(400 - p.view().px(2700), p.originX(), 1e-9, "r1 at x = 2700 is in the centre");
             WorldView view = pane.worldView();
             view.setSize(800, 400);

@@ -11,23 +11,23 @@ import java.util.List;
  * @param messages the messages robots sent in this step (accepted by the CommunicationsSystem)
  * @param said     what robots said in this step
  */
-public record ViewerFrame(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
+public record Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
                           List<Said> said) implements Message {
     /** Copies the lists so the record stays immutable. */
-    public ViewerFrame {
+    public Snapshot {
         robots = List.copyOf(robots);
         messages = messages == null ? List.of() : List.copyOf(messages);
         said = said == null ? List.of() : List.copyOf(said);
     }
 
     /**
-     * A frame without messages or speech.
+     * A snapshot without messages or speech.
      *
      * @param step   the step just completed
      * @param timeMs simulated time after it
      * @param robots every robot
      */
-    public ViewerFrame(long step, long timeMs, List<RobotView> robots) {
+    public Snapshot(long step, long timeMs, List<RobotView> robots) {
         this(step, timeMs, robots, List.of(), List.of());
     }
 

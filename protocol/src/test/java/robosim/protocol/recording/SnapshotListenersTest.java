@@ -6,13 +6,13 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /** One failing listener is dropped and closed; the others follow the run to its end. */
-class FrameListenersTest {
-    /** Notes every call; fails on the frame of one step if asked to. */
-    private static final class Noting implements FrameListener {
+class SnapshotListenersTest {
+    /** Notes every call; fails on the snapshot of one step if asked to. */
+    private static final class Noting implements SnapshotListener {
         final List<String> calls = new ArrayList<>();
         final long failAt;
 
@@ -26,11 +26,11 @@ class FrameListenersTest {
         }
 
         @Override
-        public void frame(ViewerFrame frame) throws IOException {
-            if (frame.step() == failAt) {
+        public void snapshot(Snapshot snapshot) throws IOException {
+            if (snapshot.step() == failAt) {
                 throw new IOException("disk full");
             }
-            calls.add("frame " + frame.step());
+            calls.add("snapshot " + snapshot.step());
         }
 
         @Override
@@ -48,17 +48,17 @@ class FrameListenersTest {
     void aFailingListenerIsDroppedAndTheOthersGoOn() {
         Noting failing = new Noting(2);
         Noting fine = new Noting(-1);
-        FrameListeners all = new FrameListeners();
+        SnapshotListeners all = new SnapshotListeners();
         all.add(failing);
         all.add(fine);
         all.world(Runs.world());
         for (int step = 0; step <= 3; step++) {
-            all.frame(Runs.frame(step));
+            all.snapshot(Runs.snapshot(step));
         }
         all.end("done");
         all.close();
-        assertEquals(List.of("world literal", "frame 0", "frame 1", "close"), failing.calls);
-        assertEquals(List.of("world literal", "frame 0", "frame 1", "frame 2", "frame 3", "end done", "close"), fine.calls);
+        assertEquals(List.of("world literal", "snapshot 0", "snapshot 1", "close"), failing.calls);
+        assertEquals(List.of("world literal", "snapshot 0", "snapshot 1", "snapshot 2", "snapshot 3", "end done", "close"), fine.calls);
         assertEquals(0, all.size(), "closing forgets them");
     }
 }

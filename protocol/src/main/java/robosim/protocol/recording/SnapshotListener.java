@@ -2,20 +2,20 @@ package robosim.protocol.recording;
 
 import java.io.Closeable;
 import java.io.IOException;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /**
- * Follows a run as a viewer sees it: the world first, then the frame after every step, then the
+ * Follows a run as a viewer sees it: the world first, then the snapshot after every step, then the
  * end. The Environment feeds its listeners (a recorder) from its step loop; a viewer feeds its
  * listeners (a window, a recorder, a PNG writer) from the wire.
  *
- * <p>Calls come from one thread, in order: {@link #world} before any {@link #frame} (again if the
+ * <p>Calls come from one thread, in order: {@link #world} before any {@link #snapshot} (again if the
  * world is reloaded), {@link #end} at most once, and {@link #close} last.
  */
-public interface FrameListener extends Closeable {
+public interface SnapshotListener extends Closeable {
     /**
-     * The static world, before the frames drawn in it.
+     * The static world, before the snapshots drawn in it.
      *
      * @param world the world
      * @throws IOException if the listener cannot take it; the feeder then drops the listener
@@ -25,10 +25,10 @@ public interface FrameListener extends Closeable {
     /**
      * The moving parts after one step.
      *
-     * @param frame the frame
+     * @param snapshot the snapshot
      * @throws IOException if the listener cannot take it; the feeder then drops the listener
      */
-    void frame(ViewerFrame frame) throws IOException;
+    void snapshot(Snapshot snapshot) throws IOException;
 
     /**
      * The run ended in order.

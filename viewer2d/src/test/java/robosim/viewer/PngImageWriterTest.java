@@ -14,13 +14,13 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
-class PngFrameWriterTest {
+class PngImageWriterTest {
     @TempDir
     Path tmp;
 
     @Test
     void writesAReadablePngNamedByStepIntoANewDirectory() throws IOException {
-        PngFrameWriter writer = new PngFrameWriter(tmp.resolve("run/frames"));
+        PngImageWriter writer = new PngImageWriter(tmp.resolve("run/frames"));
         BufferedImage image = new BufferedImage(64, 32, BufferedImage.TYPE_INT_RGB);
         image.setRGB(5, 7, 0x1f77b4);
 
@@ -32,14 +32,14 @@ class PngFrameWriterTest {
         assertEquals(64, back.getWidth());
         assertEquals(32, back.getHeight());
         assertEquals(0x1f77b4, back.getRGB(5, 7) & 0xffffff);
-        assertEquals(1, writer.framesWritten());
+        assertEquals(1, writer.imagesWritten());
     }
 
     @Test
     void writesARenderedFrameAtItsSize() throws IOException {
-        PngFrameWriter writer = new PngFrameWriter(tmp);
+        PngImageWriter writer = new PngImageWriter(tmp);
         writer.accept(120, new WorldRenderer().render(Fixtures.world(),
-                Fixtures.frame(120, Fixtures.robotAtRest()), RenderOptions.of(Fixtures.WIDTH_PX)));
+                Fixtures.snapshot(120, Fixtures.robotAtRest()), RenderOptions.of(Fixtures.WIDTH_PX)));
         BufferedImage back = ImageIO.read(writer.fileFor(120).toFile());
         assertEquals(800, back.getWidth());
         assertEquals(400, back.getHeight());
@@ -47,6 +47,6 @@ class PngFrameWriterTest {
 
     @Test
     void stepsPastSixDigitsKeepAllTheirDigits() {
-        assertEquals("frame-1234567.png", new PngFrameWriter(tmp).fileFor(1_234_567).getFileName().toString());
+        assertEquals("frame-1234567.png", new PngImageWriter(tmp).fileFor(1_234_567).getFileName().toString());
     }
 }

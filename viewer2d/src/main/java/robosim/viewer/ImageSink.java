@@ -7,13 +7,13 @@ import java.io.IOException;
  * Receives the images a {@link ViewerClient} renders: a PNG directory, a window, a video encoder.
  */
 @FunctionalInterface
-public interface FrameSink {
+public interface ImageSink {
     /**
-     * Takes one rendered frame. The image is the sink's to keep; the client does not reuse it.
+     * Takes one rendered image. The image is the sink's to keep; the client does not reuse it.
      *
      * @param step  the simulation step the image shows
-     * @param image the rendered frame
-     * @throws IOException if the sink cannot store the frame; the client then stops
+     * @param image the rendered image
+     * @throws IOException if the sink cannot store the image; the client then stops
      */
     void accept(long step, BufferedImage image) throws IOException;
 }

@@ -1,22 +1,22 @@
 package robosim.viewer;
 
 import java.awt.image.BufferedImage;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /**
- * Turns one frame into an image: the flat 2D view or the 3D view. PNG files, GIFs and the replay
+ * Turns one snapshot into an image: the flat 2D view or the 3D view. PNG files, GIFs and the replay
  * all draw through one of these, so that they show the same picture.
  */
 @FunctionalInterface
-public interface FramePainter {
+public interface SnapshotPainter {
     /**
      * @param world  the static world
-     * @param frame  the robots after one step
+     * @param snapshot  the robots after one step
      * @param trails the robots' paths so far, or {@code null}
      * @return a new image
      */
-    BufferedImage paint(WorldDescription world, ViewerFrame frame, Trails trails);
+    BufferedImage paint(WorldDescription world, Snapshot snapshot, Trails trails);
 
     /**
      * The 2D view.
@@ -25,7 +25,7 @@ public interface FramePainter {
      * @param options  the width and what to show
      * @return a painter drawing through the renderer with those options
      */
-    static FramePainter flat(WorldRenderer renderer, RenderOptions options) {
-        return (world, frame, trails) -> renderer.render(world, frame, options, trails);
+    static SnapshotPainter flat(WorldRenderer renderer, RenderOptions options) {
+        return (world, snapshot, trails) -> renderer.render(world, snapshot, options, trails);
     }
 }

@@ -6,7 +6,7 @@ import java.util.Iterator;
 import java.util.List;
 import java.util.Objects;
 import java.util.logging.Logger;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 
 /**
@@ -14,19 +14,19 @@ import robosim.protocol.WorldDescription;
  * is logged (naming it, the step and the reason), closed and dropped; the others go on, and so
  * does the run that feeds them. Not thread-safe: one feeder at a time.
  */
-public final class FrameListeners implements FrameListener {
-    private static final Logger LOG = Logger.getLogger(FrameListeners.class.getName());
+public final class SnapshotListeners implements SnapshotListener {
+    private static final Logger LOG = Logger.getLogger(SnapshotListeners.class.getName());
 
-    private final List<FrameListener> listeners = new ArrayList<>();
+    private final List<SnapshotListener> listeners = new ArrayList<>();
     private long step = -1;
 
     /** A call on a listener, which may fail. */
     private interface Call {
-        void on(FrameListener listener) throws IOException;
+        void on(SnapshotListener listener) throws IOException;
     }
 
     /** @param listener a listener to follow the run from now on */
-    public void add(FrameListener listener) {
+    public void add(SnapshotListener listener) {
         listeners.add(Objects.requireNonNull(listener, "listener"));
     }
 
@@ -41,9 +41,9 @@ public final class FrameListeners implements FrameListener {
     }
 
     @Override
-    public void frame(ViewerFrame frame) {
-        step = frame.step();
-        tell(l -> l.frame(frame));
+    public void snapshot(Snapshot snapshot) {
+        step = snapshot.step();
+        tell(l -> l.snapshot(snapshot));
     }
 
     @Override
@@ -54,19 +54,19 @@ public final class FrameListeners implements FrameListener {
     /** Closes every listener and forgets them; a failure to close is logged. */
     @Override
     public void close() {
-        for (FrameListener listener : listeners) {
+        for (SnapshotListener listener : listeners) {
             closeQuietly(listener);
         }
         listeners.clear();
     }
 
     private void tell(Call call) {
-        for (Iterator<FrameListener> it = listeners.iterator(); it.hasNext(); ) {
-            FrameListener listener = it.next();
+        for (Iterator<SnapshotListener> it = listeners.iterator(); it.hasNext(); ) {
+            SnapshotListener listener = it.next();
             try {
                 call.on(listener);
             } catch (IOException | RuntimeException e) {
-                LOG.severe("frame listener " + listener + " failed after step " + step + " and is dropped: "
+                LOG.severe("snapshot listener " + listener + " failed after step " + step + " and is dropped: "
                         + e.getMessage());
                 it.remove();
                 closeQuietly(listener);
@@ -74,11 +74,11 @@ public final class FrameListeners implements FrameListener {
         }
     }
 
-    private static void closeQuietly(FrameListener listener) {
+    private static void closeQuietly(SnapshotListener listener) {
         try {
             listener.close();
         } catch (IOException | RuntimeException e) {
-            LOG.severe("closing frame listener " + listener + " failed: " + e.getMessage());
+            LOG.severe("closing snapshot listener " + listener + " failed: " + e.getMessage());
         }
     }
 }

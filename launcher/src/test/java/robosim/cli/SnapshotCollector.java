@@ -10,17 +10,17 @@ import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
 
-/** A viewer for tests: attaches and keeps the world and every frame until the run ends. */
-final class FrameCollector {
+/** A viewer for tests: attaches and keeps the world and every snapshot until the run ends. */
+final class SnapshotCollector {
     private final CompletableFuture<Void> done;
     private volatile WorldDescription world;
-    private final List<ViewerFrame> frames = new ArrayList<>();
+    private final List<Snapshot> snapshots = new ArrayList<>();
 
-    FrameCollector(int port) throws Exception {
+    SnapshotCollector(int port) throws Exception {
         Socket s = new Socket("127.0.0.1", port);
         s.setSoTimeout(120_000);
         MessageCodec codec = new MessageCodec();
@@ -32,9 +32,9 @@ final class FrameCollector {
                 while ((m = r.read()) != null && !(m instanceof Bye)) {
                     if (m instanceof WorldDescription w) {
                         world = w;
-                    } else if (m instanceof ViewerFrame f) {
-                        synchronized (frames) {
-                            frames.add(f);
+                    } else if (m instanceof Snapshot f) {
+                        synchronized (snapshots) {
+                            snapshots.add(f);
                         }
                     }
                 }
@@ -49,10 +49,10 @@ final class FrameCollector {
         return world;
     }
 
-    List<ViewerFrame> frames() throws Exception {
+    List<Snapshot> snapshots() throws Exception {
         done.get(60, TimeUnit.SECONDS);
-        synchronized (frames) {
-            return List.copyOf(frames);
+        synchronized (snapshots) {
+            return List.copyOf(snapshots);
         }
     }
 }

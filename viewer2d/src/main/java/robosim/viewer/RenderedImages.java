@@ -1,33 +1,33 @@
 package robosim.viewer;
 
 import java.io.IOException;
-import robosim.protocol.ViewerFrame;
+import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.protocol.recording.FrameListener;
+import robosim.protocol.recording.SnapshotListener;
 
 /**
- * Follows a run and hands images of it to a {@link FrameSink}: the frames whose step is a
+ * Follows a run and hands images of it to a {@link ImageSink}: the snapshots whose step is a
  * multiple of {@code every}, and always the last one, so that the final state is kept. A reloaded
- * world draws the old world's last frame before it replaces the world. Used alike by the live
+ * world draws the old world's last snapshot before it replaces the world. Used alike by the live
  * viewer and the replay, so their images agree.
  */
-public final class RenderedFrames implements FrameListener {
-    private final FramePainter painter;
-    private final FrameSink sink;
+public final class RenderedImages implements SnapshotListener {
+    private final SnapshotPainter painter;
+    private final ImageSink sink;
     private final int every;
     private final Trails trails;
     private WorldDescription world;
-    private ViewerFrame last;
+    private Snapshot last;
     private boolean lastWritten = true;
     private long written;
 
     /**
-     * @param painter draws each frame
+     * @param painter draws each snapshot
      * @param sink    takes the images
-     * @param every   draw frames whose step is a multiple of this, at least 1
+     * @param every   draw snapshots whose step is a multiple of this, at least 1
      * @param trails  whether to keep the robots' paths and hand them to the painter
      */
-    public RenderedFrames(FramePainter painter, FrameSink sink, int every, boolean trails) {
+    public RenderedImages(SnapshotPainter painter, ImageSink sink, int every, boolean trails) {
         if (painter == null || sink == null) {
             throw new IllegalArgumentException("null was supplied for " + (painter == null ? "painter" : "sink")
                     + ": it is required");
@@ -52,25 +52,25 @@ public final class RenderedFrames implements FrameListener {
     }
 
     @Override
-    public void frame(ViewerFrame frame) throws IOException {
-        skip(frame);
+    public void snapshot(Snapshot snapshot) throws IOException {
+        skip(snapshot);
         lastWritten = false;
-        if (frame.step() % every == 0) {
-            write(frame);
+        if (snapshot.step() % every == 0) {
+            write(snapshot);
         }
     }
 
     /**
-     * Takes a frame without drawing it (one before a replay's first step): its robots still
+     * Takes a snapshot without drawing it (one before a replay's first step): its robots still
      * extend their trails.
      *
-     * @param frame the frame
+     * @param snapshot the snapshot
      */
-    public void skip(ViewerFrame frame) {
+    public void skip(Snapshot snapshot) {
         if (trails != null) {
-            trails.add(frame);
+            trails.add(snapshot);
         }
-        last = frame;
+        last = snapshot;
         lastWritten = true;
     }
 
@@ -79,7 +79,7 @@ public final class RenderedFrames implements FrameListener {
         flush();
     }
 
-    /** Draws the last frame if it has not been drawn. */
+    /** Draws the last snapshot if it has not been drawn. */
     @Override
     public void close() throws IOException {
         flush();
@@ -91,12 +91,12 @@ public final class RenderedFrames implements FrameListener {
         }
     }
 
-    private void write(ViewerFrame frame) throws IOException {
+    private void write(Snapshot snapshot) throws IOException {
         if (world == null) {
-            throw new IllegalStateException("frame of step " + frame.step() + " before any world");
+            throw new IllegalStateException("snapshot of step " + snapshot.step() + " before any world");
         }
         lastWritten = true;
-        sink.accept(frame.step(), painter.paint(world, frame, trails));
+        sink.accept(snapshot.step(), painter.paint(world, snapshot, trails));
         written++;
     }
 

@@ -8,16 +8,16 @@ import java.util.Locale;
 import javax.imageio.ImageIO;
 
 /**
- * Writes each frame to {@code DIR/frame-%06d.png}, named by its step, so that the files sort in
+ * Writes each image to {@code DIR/frame-%06d.png}, named by its step, so that the files sort in
  * step order and a video tool can read them as a sequence. Creates the directory on first use.
  */
-public final class PngFrameWriter implements FrameSink {
+public final class PngImageWriter implements ImageSink {
     private final Path directory;
     private boolean created;
-    private int framesWritten;
+    private int imagesWritten;
 
     /** @param directory where the PNG files go; created, with its parents, if missing */
-    public PngFrameWriter(Path directory) {
+    public PngImageWriter(Path directory) {
         if (directory == null) {
             throw new IllegalArgumentException("null was supplied for directory: a directory is required");
         }
@@ -25,7 +25,7 @@ public final class PngFrameWriter implements FrameSink {
     }
 
     /**
-     * The file a step's frame is written to.
+     * The file a step's image is written to.
      *
      * @param step the step
      * @return {@code DIR/frame-NNNNNN.png}
@@ -35,7 +35,7 @@ public final class PngFrameWriter implements FrameSink {
     }
 
     /**
-     * Writes one frame, replacing any earlier file for the same step.
+     * Writes one image, replacing any earlier file for the same step.
      *
      * @param step  the step the image shows
      * @param image the image
@@ -47,7 +47,7 @@ public final class PngFrameWriter implements FrameSink {
     }
 
     /**
-     * Writes one frame and says where.
+     * Writes one image and says where.
      *
      * @param step  the step the image shows
      * @param image the image
@@ -64,17 +64,17 @@ public final class PngFrameWriter implements FrameSink {
             throw new IOException("no PNG writer accepts an image of type " + image.getType()
                     + " for " + file);
         }
-        framesWritten++;
+        imagesWritten++;
         return file;
     }
 
-    /** @return the directory the frames go to */
+    /** @return the directory the images go to */
     public Path directory() {
         return directory;
     }
 
-    /** @return how many frames this writer has written */
-    public synchronized int framesWritten() {
-        return framesWritten;
+    /** @return how many images this writer has written */
+    public synchronized int imagesWritten() {
+        return imagesWritten;
     }
 }
