@@ -1,9 +1,9 @@
 package robosim.cli;
 
 import picocli.CommandLine.Option;
-import robosim.viewer.SnapshotPainter;
-import robosim.viewer.RenderOptions;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.SnapshotPainter;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.draw.WorldRenderer;
 import robosim.viewer.view3d.Camera;
 import robosim.viewer.view3d.Light;
 import robosim.viewer.view3d.SceneOptions;

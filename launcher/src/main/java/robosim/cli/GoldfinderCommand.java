@@ -24,7 +24,8 @@ import robosim.env.world.World;
 import robosim.env.world.WorldFileException;
 import robosim.env.world.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
-import robosim.viewer.ViewerSummary;
+import robosim.viewer.draw.PngImageWriter;
+import robosim.viewer.net.ViewerSummary;
 
 /**
  * {@code robosim goldfinder}: the Environment on a maze, a team of Gold robots (threads of one JVM,
@@ -90,9 +91,10 @@ final class GoldfinderCommand implements Callable<Integer> {
         o.flush();
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
+            PngImageWriter png = new PngImageWriter(frames);
             CompletableFuture<ViewerSummary> viewer = noFrames ? null : CompletableFuture.supplyAsync(() -> {
                 try {
-                    return Viewers.pngClient("127.0.0.1", server.viewerPort(), frames, every, 800, false, true,
+                    return Viewers.pngClient("127.0.0.1", server.viewerPort(), png, every, 800, false, true,
                             Duration.ofMinutes(5)).run();
                 } catch (java.io.IOException e) {
                     throw new IllegalStateException(e.getMessage(), e);
@@ -112,8 +114,8 @@ final class GoldfinderCommand implements Callable<Integer> {
                 RunReport report = server.run();
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
-                    ViewerSummary v = viewer.get(60, TimeUnit.SECONDS);
-                    o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", v.imagesWritten(), frames.toAbsolutePath());
+                    viewer.get(60, TimeUnit.SECONDS);
+                    o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", png.imagesWritten(), frames.toAbsolutePath());
                 }
                 return report.find() != null ? 0 : NOT_FOUND;
             } finally {

@@ -17,12 +17,12 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.PngImageWriter;
-import robosim.viewer.RenderedImages;
-import robosim.viewer.ViewerClient;
-import robosim.viewer.ViewerException;
-import robosim.viewer.ViewerOptions;
-import robosim.viewer.ViewerSummary;
+import robosim.viewer.draw.PngImageWriter;
+import robosim.viewer.draw.RenderedImages;
+import robosim.viewer.net.ViewerClient;
+import robosim.viewer.net.ViewerException;
+import robosim.viewer.net.ViewerOptions;
+import robosim.viewer.net.ViewerSummary;
 import robosim.viewer.window.LiveFeed;
 import robosim.viewer.window.ViewModel;
 import robosim.viewer.window.ViewState;
@@ -66,7 +66,8 @@ final class ViewerCommand implements Callable<Integer> {
         ViewerOptions options;
         try {
             drawing.validate();
-            options = ViewerOptions.of(at.host, at.port).withName(name()).withEvery(every).withRender(drawing.render())
+            RenderedImages.requireEvery(every);
+            options = ViewerOptions.of(at.host, at.port).withName(name())
                     .withReadTimeout(Duration.ofMinutes(10));
         } catch (IllegalArgumentException e) {
             err.println("robosim viewer: " + e.getMessage());
@@ -80,8 +81,9 @@ final class ViewerCommand implements Callable<Integer> {
                 return 1;
             }
         }
-        if (pngDir != null) {
-            listeners.add(new RenderedImages(drawing.painter(), new PngImageWriter(pngDir), every, drawing.trails));
+        PngImageWriter png = pngDir == null ? null : new PngImageWriter(pngDir);
+        if (png != null) {
+            listeners.add(new RenderedImages(drawing.painter(), png, every, drawing.trails));
         }
         RecordingWriter recorder = null;
         if (recording.requested()) {
@@ -103,9 +105,9 @@ final class ViewerCommand implements Callable<Integer> {
             err.println("robosim viewer: " + e.getMessage());
             return 1;
         }
-        if (pngDir != null) {
+        if (png != null) {
             out.printf(Locale.ROOT, "Viewer: world %s, %d frames received, %d PNG frames written to %s (%s)%n",
-                    s.world(), s.snapshotsReceived(), s.imagesWritten(), pngDir.toAbsolutePath(), s.endReason());
+                    s.world(), s.snapshotsReceived(), png.imagesWritten(), pngDir.toAbsolutePath(), s.endReason());
         } else {
             out.printf(Locale.ROOT, "Viewer: world %s, %d frames received (%s)%n", s.world(), s.snapshotsReceived(),
                     s.endReason());

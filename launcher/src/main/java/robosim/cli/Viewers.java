@@ -2,21 +2,22 @@ package robosim.cli;
 
 import java.nio.file.Path;
 import java.time.Duration;
-import robosim.viewer.PngImageWriter;
-import robosim.viewer.RenderOptions;
-import robosim.viewer.ViewerClient;
-import robosim.viewer.ViewerOptions;
+import java.util.List;
+import robosim.viewer.draw.PngImageWriter;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.draw.RenderedImages;
+import robosim.viewer.net.ViewerClient;
+import robosim.viewer.net.ViewerOptions;
 
 /** Runs a PNG-writing viewer for the commands that need one. */
 final class Viewers {
     private Viewers() {
     }
 
-    static ViewerClient pngClient(String host, int port, Path dir, int every, int width, boolean sonar,
+    static ViewerClient pngClient(String host, int port, PngImageWriter png, int every, int width, boolean sonar,
                                   boolean names, Duration readTimeout) {
-        ViewerOptions options = ViewerOptions.of(host, port).withName("png:" + dir.getFileName())
-                .withEvery(every).withRender(new RenderOptions(width, sonar, names))
+        ViewerOptions options = ViewerOptions.of(host, port).withName("png:" + png.directory().getFileName())
                 .withReadTimeout(readTimeout);
-        return new ViewerClient(options, new PngImageWriter(dir));
+        return new ViewerClient(options, List.of(RenderedImages.flat(png, new RenderOptions(width, sonar, names), every)));
     }
 }

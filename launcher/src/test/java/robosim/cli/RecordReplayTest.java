@@ -17,10 +17,10 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.env.net.RunReport;
 import robosim.protocol.recording.RecordingReader;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.SnapshotPainter;
-import robosim.viewer.PngImageWriter;
-import robosim.viewer.RenderedImages;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.SnapshotPainter;
+import robosim.viewer.draw.PngImageWriter;
+import robosim.viewer.draw.RenderedImages;
+import robosim.viewer.draw.WorldRenderer;
 import robosim.viewer.replay.Replay;
 import robosim.viewer.replay.ReplayRange;
 

@@ -15,10 +15,10 @@ import robosim.env.world.WorldReader;
 import robosim.examples.wander.Wander;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.RenderOptions;
-import robosim.viewer.ViewerClient;
-import robosim.viewer.ViewerOptions;
-import robosim.viewer.ViewerSummary;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.net.ViewerClient;
+import robosim.viewer.net.ViewerOptions;
+import robosim.viewer.net.ViewerSummary;
 
 /**
  * A deterministic run for the recording tests, all in this JVM: the Environment on the small maze
@@ -57,7 +57,7 @@ final class RecordedRun {
                     : CompletableFuture.supplyAsync(() -> {
                         try {
                             ViewerOptions o = ViewerOptions.of("127.0.0.1", server.viewerPort()).withName("live")
-                                    .withRender(RENDER).withReadTimeout(Duration.ofSeconds(60));
+                                    .withReadTimeout(Duration.ofSeconds(60));
                             return new ViewerClient(o, viewer).run();
                         } catch (Exception e) {
                             throw new IllegalStateException(e);

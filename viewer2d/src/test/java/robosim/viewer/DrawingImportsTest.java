@@ -24,7 +24,7 @@ class DrawingImportsTest {
     @ValueSource(strings = {"WorldRenderer", "RobotPainter", "LaserPainter", "HeatPainter", "ViewTransform",
         "RenderOptions", "RobotPalette"})
     void drawingClassImportsNoTransport(String className) throws IOException {
-        Path source = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer", className + ".java");
+        Path source = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer/draw", className + ".java");
         List<String> offending = Files.readAllLines(source).stream()
                 .filter(line -> FORBIDDEN.stream().anyMatch(line::startsWith))
                 .toList();

@@ -14,7 +14,8 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The 3D renderer draws and does no I/O; the window neither opens files nor sockets (the launcher
- * feeds it); nothing in the viewer prints (STYLE.md rules 3 and 11).
+ * feeds it); the network client draws nothing and the drawing knows no network; nothing in the
+ * viewer prints (docs/DESIGN.md).
  */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class ViewerPackagesImportTest {
@@ -22,7 +23,9 @@ class ViewerPackagesImportTest {
     @CsvSource(delimiter = '|', value = {
         "view3d | import java.io.;import java.net.;import java.nio.;import javax.imageio.;import java.util.logging.;System.out;System.err",
         "window | import java.net.;import java.nio.;import javax.imageio.;System.out;System.err",
-        "replay | import java.net.;System.out;System.err"})
+        "replay | import java.net.;System.out;System.err",
+        "net | import java.awt.;import javax.swing.;import javax.imageio.;import robosim.viewer.draw.;import robosim.viewer.view3d.;import robosim.viewer.window.;import robosim.viewer.replay.;System.out;System.err",
+        "draw | import java.net.;import java.util.logging.;import robosim.viewer.net.;import robosim.viewer.window.;import robosim.viewer.replay.;System.out;System.err"})
     void packageKeepsToItsRole(String pkg, String forbidden) throws IOException {
         Path dir = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer", pkg);
         List<String> rules = List.of(forbidden.split(";"));

@@ -14,7 +14,7 @@ import javax.imageio.ImageWriter;
 import javax.imageio.metadata.IIOMetadata;
 import javax.imageio.metadata.IIOMetadataNode;
 import javax.imageio.stream.ImageOutputStream;
-import robosim.viewer.ImageSink;
+import robosim.viewer.draw.ImageSink;
 
 /**
  * Writes images as one animated GIF, with ImageIO's GIF writer: every frame shown for the same

@@ -5,7 +5,7 @@ import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.RecordingException;
 import robosim.protocol.recording.RecordingReader;
-import robosim.viewer.RenderedImages;
+import robosim.viewer.draw.RenderedImages;
 
 /**
  * Feeds a recording, step by step, to a {@link RenderedImages} as the live viewer feeds the wire:

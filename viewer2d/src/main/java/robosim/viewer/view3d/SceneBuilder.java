@@ -10,9 +10,9 @@ import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
-import robosim.viewer.BodyOutline;
-import robosim.viewer.RobotPalette;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.BodyOutline;
+import robosim.viewer.draw.RobotPalette;
+import robosim.viewer.draw.WorldRenderer;
 
 /**
  * Builds the faces of the scene that the camera can see: each obstacle as a prism from the floor

@@ -1,6 +1,6 @@
 package robosim.viewer.view3d;
 
-import robosim.viewer.RenderOptions;
+import robosim.viewer.draw.RenderOptions;
 
 /**
  * How a 3D frame is drawn.

@@ -15,10 +15,10 @@ import robosim.protocol.Snapshot;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
-import robosim.viewer.SnapshotPainter;
-import robosim.viewer.TrailPainter;
-import robosim.viewer.Trails;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.SnapshotPainter;
+import robosim.viewer.draw.TrailPainter;
+import robosim.viewer.draw.Trails;
+import robosim.viewer.draw.WorldRenderer;
 
 /**
  * Draws the 3D view of a snapshot: the sky, the floor with its heat sources and the robots' trails,

@@ -3,8 +3,8 @@
  * camera at an azimuth and elevation with a zoom, lit from a direction with flat shading, and
  * drawn back to front (the painter's algorithm) in plain Java2D.
  *
- * <p>{@link robosim.viewer.view3d.SolidRenderer} is a {@link robosim.viewer.SnapshotPainter}, so PNG
+ * <p>{@link robosim.viewer.view3d.SolidRenderer} is a {@link robosim.viewer.draw.SnapshotPainter}, so PNG
  * snapshots, GIFs and the window draw the 3D view through it just as they draw the 2D view through
- * the {@link robosim.viewer.WorldRenderer}. Pure drawing: no I/O.
+ * the {@link robosim.viewer.draw.WorldRenderer}. Pure drawing: no I/O.
  */
 package robosim.viewer.view3d;

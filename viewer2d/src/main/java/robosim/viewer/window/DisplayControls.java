@@ -11,7 +11,8 @@ import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import robosim.protocol.WorldDescription;
-import robosim.viewer.RenderOptions;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.draw.Trails;
 
 /**
  * The toolbar of display choices: sonar rays, laser scans, names and trails shown or hidden, the

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.viewer.Trails;
+import robosim.viewer.draw.Trails;
 
 /**
  * What the window shows: the world, the current snapshot, the robots' trails, and where the snapshots

@@ -11,7 +11,7 @@ import java.awt.geom.Rectangle2D;
 import javax.swing.JComponent;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.WorldRenderer;
 import robosim.viewer.view3d.SolidRenderer;
 
 /**

@@ -14,10 +14,10 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.recording.RecordingReader;
-import robosim.viewer.SnapshotPainter;
-import robosim.viewer.RenderOptions;
-import robosim.viewer.RenderedImages;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.SnapshotPainter;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.draw.RenderedImages;
+import robosim.viewer.draw.WorldRenderer;
 
 /** Replay draws the chosen steps of a recording through the live viewer's renderer. */
 class ReplayTest {

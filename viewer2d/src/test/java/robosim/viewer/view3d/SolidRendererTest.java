@@ -15,8 +15,9 @@ import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
-import robosim.viewer.RobotPalette;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.RobotPalette;
+import robosim.viewer.draw.WorldRenderer;
+import robosim.viewer.draw.Pixels;
 
 /**
  * The 3D view of a literal world: a 4000 x 2000 mm floor, a 500 mm block from (1000, 500) to

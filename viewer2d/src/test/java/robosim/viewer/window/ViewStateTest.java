@@ -6,7 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
-import robosim.viewer.ViewTransform;
+import robosim.viewer.draw.ViewTransform;
 
 /** The window's zoom, pan, follow and camera arithmetic, without Swing. */
 class ViewStateTest {

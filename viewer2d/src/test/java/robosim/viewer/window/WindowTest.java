@@ -12,9 +12,9 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import robosim.viewer.RenderOptions;
-import robosim.viewer.RobotPalette;
-import robosim.viewer.WorldRenderer;
+import robosim.viewer.draw.RenderOptions;
+import robosim.viewer.draw.RobotPalette;
+import robosim.viewer.draw.WorldRenderer;
 import robosim.viewer.view3d.SolidRenderer;
 
 /**

@@ -1,0 +1,145 @@
+package robosim.viewer.draw;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.Shape;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import robosim.geometry.Pose2D;
+import robosim.protocol.Snapshot.RobotView;
+import robosim.protocol.WorldDescription.RobotInfo;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
+
+/**
+ * Draws one robot's body, heading line, sonar rays, name and odometry ghost; the
+ * {@link WorldRenderer}'s helper.
+ */
+final class RobotPainter {
+    /** Radius drawn for a robot whose body the world does not describe. */
+    /** How far the odometry may be from the true position before its ghost is drawn, mm. */
+    static final double ODOMETRY_TOLERANCE_MM = 1;
+    /** How far the odometry's heading may be from the true heading before its ghost is drawn, degrees. */
+    static final double ODOMETRY_TOLERANCE_DEG = 0.5;
+
+    private static final Color HEADING = new Color(20, 20, 20);
+
+    void drawBody(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color fill, Color outline) {
+        Pose2D pose = pose(robot);
+        RobotParameters p = info == null ? null : info.parameters();
+        Shape body = body(view, pose, p);
+        g.setColor(fill);
+        g.fill(body);
+        g.setColor(outline);
+        g.setStroke(new BasicStroke(robot.stalled() ? 3f : 1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(body);
+        double front = BodyOutline.front(p);
+        g.setColor(robot.connected() ? HEADING : outline);
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
+                view.px(pose.worldX(front, 0)), view.py(pose.worldY(front, 0))));
+    }
+
+    /**
+     * Draws a dashed outline of the body, and a dashed heading line, where the robot believes it
+     * is, if that is more than {@link #ODOMETRY_TOLERANCE_MM} or {@link #ODOMETRY_TOLERANCE_DEG}
+     * away from where it is.
+     */
+    void drawGhost(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
+        if (!odometryDiffers(robot)) {
+            return;
+        }
+        Pose2D believed = new Pose2D(robot.odoX(), robot.odoY(), Math.toRadians(robot.odoTh()));
+        RobotParameters p = info == null ? null : info.parameters();
+        double front = BodyOutline.front(p);
+        g.setColor(colour);
+        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
+                new float[] {6f, 4f}, 0f));
+        g.draw(body(view, believed, p));
+        g.draw(new Line2D.Double(view.px(believed.x()), view.py(believed.y()),
+                view.px(believed.worldX(front, 0)), view.py(believed.worldY(front, 0))));
+    }
+
+    /** @return whether the odometry pose is far enough from the true pose to be told apart */
+    static boolean odometryDiffers(RobotView robot) {
+        double apart = Math.hypot(robot.odoX() - robot.x(), robot.odoY() - robot.y());
+        double turned = Math.abs(Math.IEEEremainder(robot.odoTh() - robot.th(), 360));
+        // Written so that a NaN anywhere draws no ghost rather than a broken one.
+        return Double.isFinite(apart) && Double.isFinite(turned)
+                && (apart > ODOMETRY_TOLERANCE_MM || turned > ODOMETRY_TOLERANCE_DEG);
+    }
+
+    /**
+     * Draws a ray from each transducer's mounting pose along its heading, as long as the range the
+     * snapshot reports for it. Transducers without a reading, or with a negative one, are skipped.
+     */
+    void drawSonar(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
+        int[] ranges = robot.sonar();
+        if (info == null || info.parameters() == null || ranges == null) {
+            return;
+        }
+        Pose2D pose = pose(robot);
+        g.setColor(colour);
+        g.setStroke(new BasicStroke(1.2f));
+        double dot = 3;
+        for (SonarUnit unit : info.parameters().sonarUnits()) {
+            int i = unit.index();
+            if (i < 0 || i >= ranges.length || ranges[i] < 0) {
+                continue;
+            }
+            double heading = Math.toRadians(unit.th());
+            double endX = unit.x() + ranges[i] * Math.cos(heading);
+            double endY = unit.y() + ranges[i] * Math.sin(heading);
+            double x1 = view.px(pose.worldX(endX, endY));
+            double y1 = view.py(pose.worldY(endX, endY));
+            g.draw(new Line2D.Double(view.px(pose.worldX(unit.x(), unit.y())),
+                    view.py(pose.worldY(unit.x(), unit.y())), x1, y1));
+            g.fill(new Ellipse2D.Double(x1 - dot / 2, y1 - dot / 2, dot, dot));
+        }
+    }
+
+    /** Writes the name just above and right of the body. */
+    void drawName(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
+        if (robot.name() == null) {
+            return;
+        }
+        double r = view.scale() * BodyOutline.radius(info == null ? null : info.parameters());
+        g.setColor(colour);
+        g.drawString(robot.name(), (float) (view.px(robot.x()) + r * 0.8), (float) (view.py(robot.y()) - r * 0.8));
+    }
+
+    private static Pose2D pose(RobotView robot) {
+        return new Pose2D(robot.x(), robot.y(), Math.toRadians(robot.th()));
+    }
+
+    /** @return the body's rectangle, or its enclosing circle when the parameters give no rectangle */
+    private static Shape body(ViewTransform view, Pose2D pose, RobotParameters p) {
+        return BodyOutline.isRectangle(p) ? rectangle(view, pose, p) : circle(view, pose, BodyOutline.radius(p));
+    }
+
+    private static Shape rectangle(ViewTransform view, Pose2D pose, RobotParameters p) {
+        double front = p.robotLengthFront();
+        double rear = -p.robotLengthRear();
+        double half = p.robotWidth() / 2;
+        double[][] corners = {{front, half}, {rear, half}, {rear, -half}, {front, -half}};
+        Path2D.Double path = new Path2D.Double();
+        for (int i = 0; i < corners.length; i++) {
+            double x = view.px(pose.worldX(corners[i][0], corners[i][1]));
+            double y = view.py(pose.worldY(corners[i][0], corners[i][1]));
+            if (i == 0) {
+                path.moveTo(x, y);
+            } else {
+                path.lineTo(x, y);
+            }
+        }
+        path.closePath();
+        return path;
+    }
+
+    private static Shape circle(ViewTransform view, Pose2D pose, double radiusMm) {
+        double r = radiusMm * view.scale();
+        return new Ellipse2D.Double(view.px(pose.x()) - r, view.py(pose.y()) - r, 2 * r, 2 * r);
+    }
+}

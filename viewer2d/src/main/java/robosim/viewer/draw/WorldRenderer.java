@@ -1,0 +1,295 @@
+package robosim.viewer.draw;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
+import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.Obstacle;
+import robosim.protocol.WorldDescription.RobotInfo;
+
+/**
+ * Draws one snapshot of the world: background, heat sources, obstacles, border, robots, optional
+ * laser scans, sonar rays, odometry ghosts and names, and a caption with the step and the
+ * simulated time. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
+ * renderer may serve several threads, and the window, recorder and replay views can share it.
+ *
+ * <p>World coordinates are mm with +y up and headings in degrees counter-clockwise from +x; the
+ * {@link ViewTransform} flips them into the image.
+ */
+public final class WorldRenderer {
+    /** The colour of free space. */
+    public static final Color BACKGROUND = new Color(248, 248, 244);
+    /** The fill of walls and obstacles. */
+    public static final Color OBSTACLE = new Color(64, 64, 64);
+    /** The colour of the world's border. */
+    public static final Color BORDER = Color.BLACK;
+
+    private static final Color OUTLINE = new Color(20, 20, 20);
+    private static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
+    private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
+
+    private final RobotPainter robots = new RobotPainter();
+    private final LaserPainter lasers = new LaserPainter();
+    private final HeatPainter heat = new HeatPainter();
+
+    /** A renderer; it holds no state, so one can be shared. */
+    public WorldRenderer() {
+    }
+
+    /**
+     * Draws a snapshot into a new image as wide as the options say and as high as the world's aspect
+     * ratio makes it.
+     *
+     * @param world   the static world
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
+     * @param options the image width and what to show
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image
+     * @throws IllegalArgumentException if the world's size is not positive or the image would be
+     *                                  too tall (see {@link ViewTransform#fit})
+     */
+    public BufferedImage render(WorldDescription world, Snapshot snapshot, RenderOptions options) {
+        return render(world, snapshot, options, null);
+    }
+
+    /**
+     * Draws a snapshot, with the robots' paths when the options show trails, into a new image.
+     *
+     * @param world   the static world
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
+     * @param options the image width and what to show
+     * @param trails  the robots' paths so far, or {@code null}
+     * @return a new {@link BufferedImage#TYPE_INT_RGB} image
+     * @throws IllegalArgumentException if the world cannot be drawn at that width
+     */
+    public BufferedImage render(WorldDescription world, Snapshot snapshot, RenderOptions options, Trails trails) {
+        ViewTransform view = ViewTransform.fit(world, options.width());
+        BufferedImage image = new BufferedImage(view.width(), view.height(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            draw(g, view, world, snapshot, options, trails);
+        } finally {
+            g.dispose();
+        }
+        return image;
+    }
+
+    /**
+     * Draws a snapshot onto any surface, such as a window's component or an image. Only the
+     * rectangle from (0, 0) to the transform's width and height is drawn; the options' width is
+     * ignored in favour of the transform's. The graphics' settings are left as they were.
+     *
+     * @param target  where to draw
+     * @param view    the mapping from world mm to pixels
+     * @param world   the static world
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
+     * @param options what to show
+     */
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, Snapshot snapshot,
+                     RenderOptions options) {
+        draw(target, view, world, snapshot, options, null);
+    }
+
+    /**
+     * Draws a snapshot onto any surface, with the robots' paths when the options show trails.
+     *
+     * @param target  where to draw
+     * @param view    the mapping from world mm to pixels
+     * @param world   the static world
+     * @param snapshot   the robots after one step, or {@code null} to draw the world alone
+     * @param options what to show
+     * @param trails  the robots' paths so far, or {@code null}
+     */
+    public void draw(Graphics2D target, ViewTransform view, WorldDescription world, Snapshot snapshot,
+                     RenderOptions options, Trails trails) {
+        Graphics2D g = (Graphics2D) target.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
+            g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
+            drawWorld(g, view, world);
+            if (trails != null && options.showTrails()) {
+                TrailPainter.draw(g, trails, name -> colourOf(world, snapshot, name), (x, y, out) -> {
+                    out[0] = view.px(x);
+                    out[1] = view.py(y);
+                });
+            }
+            if (snapshot != null) {
+                drawRobots(g, view, world, snapshot, options);
+                if (options.showCaption()) {
+                    drawCaption(g, view.width(), caption(snapshot));
+                }
+            }
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /**
+     * The caption drawn on a snapshot, for example {@code "step 120  t=12.0 s"}.
+     *
+     * @param snapshot the snapshot
+     * @return its step and simulated time
+     */
+    public static String caption(Snapshot snapshot) {
+        return String.format(Locale.ROOT, "step %d  t=%.1f s", snapshot.step(), snapshot.timeMs() / 1000.0);
+    }
+
+    private void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
+        g.setColor(BACKGROUND);
+        g.fill(new Rectangle2D.Double(0, 0, view.width(), view.height()));
+        heat.drawGlow(g, view, world.heat());
+        g.setColor(OBSTACLE);
+        for (Obstacle obstacle : world.obstacles()) {
+            Path2D polygon = polygon(view, obstacle.xy());
+            if (polygon != null) {
+                g.fill(polygon);
+            }
+        }
+        heat.drawMarkers(g, view, world.heat());
+        // A 2 px stroke centred 1 px inside the edge covers exactly the outermost two pixels.
+        g.setColor(BORDER);
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Rectangle2D.Double(1, 1, view.width() - 2.0, view.height() - 2.0));
+    }
+
+    /** @return the ring as a closed pixel path, or {@code null} if it has fewer than 3 points */
+    private static Path2D polygon(ViewTransform view, double[] xy) {
+        if (xy == null || xy.length < 6) {
+            return null;
+        }
+        Path2D.Double path = new Path2D.Double();
+        path.moveTo(view.px(xy[0]), view.py(xy[1]));
+        for (int i = 2; i + 1 < xy.length; i += 2) {
+            path.lineTo(view.px(xy[i]), view.py(xy[i + 1]));
+        }
+        path.closePath();
+        return path;
+    }
+
+    private void drawRobots(Graphics2D g, ViewTransform view, WorldDescription world, Snapshot snapshot,
+                            RenderOptions options) {
+        Map<String, Integer> indexByName = new HashMap<>();
+        List<RobotInfo> infos = world.robots();
+        for (int i = 0; i < infos.size(); i++) {
+            indexByName.putIfAbsent(infos.get(i).name(), i);
+        }
+        List<RobotView> views = snapshot.robots();
+        // A robot the world does not list still gets a colour of its own, after the listed ones.
+        int[] colourIndex = new int[views.size()];
+        RobotInfo[] info = new RobotInfo[views.size()];
+        for (int i = 0; i < views.size(); i++) {
+            Integer known = indexByName.get(views.get(i).name());
+            colourIndex[i] = known != null ? known : infos.size() + i;
+            info[i] = known != null ? infos.get(known) : null;
+        }
+        if (options.showLaser()) {
+            for (int i = 0; i < views.size(); i++) {
+                lasers.drawScan(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]));
+            }
+        }
+        if (options.showSonar()) {
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawSonar(g, view, views.get(i), info[i], rayColour(views.get(i), colourIndex[i]));
+            }
+        }
+        for (int i = 0; i < views.size(); i++) {
+            RobotView robot = views.get(i);
+            Color fill = robotColour(robot, colourIndex[i]);
+            Color outline = robot.stalled() ? RobotPalette.STALLED
+                    : robot.connected() ? OUTLINE : DISCONNECTED_OUTLINE;
+            robots.drawBody(g, view, robot, info[i], fill, outline);
+        }
+        if (options.showOdometry()) {
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawGhost(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]).darker());
+            }
+        }
+        if (options.showNames()) {
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(view.width())));
+            for (int i = 0; i < views.size(); i++) {
+                robots.drawName(g, view, views.get(i), info[i],
+                        views.get(i).connected() ? OUTLINE : DISCONNECTED_OUTLINE);
+            }
+        }
+    }
+
+    private static Color rayColour(RobotView robot, int colourIndex) {
+        Color c = robotColour(robot, colourIndex);
+        return new Color(c.getRed(), c.getGreen(), c.getBlue(), 170);
+    }
+
+    private static Color robotColour(RobotView robot, int colourIndex) {
+        return robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
+    }
+
+    /**
+     * A robot's colour as the robots are drawn: by its index in the world, or after the world's
+     * robots by its index in the snapshot; grey when it is not known. Whether it is connected is left to
+     * the caller, which draws a disconnected robot grey.
+     *
+     * @param world the world
+     * @param snapshot the snapshot, or {@code null}
+     * @param name  the robot's name
+     * @return its colour
+     */
+    public static Color colourOf(WorldDescription world, Snapshot snapshot, String name) {
+        List<RobotInfo> infos = world.robots();
+        for (int i = 0; i < infos.size(); i++) {
+            if (infos.get(i).name().equals(name)) {
+                return RobotPalette.colour(i);
+            }
+        }
+        List<RobotView> views = snapshot == null ? List.of() : snapshot.robots();
+        for (int i = 0; i < views.size(); i++) {
+            if (name.equals(views.get(i).name())) {
+                return RobotPalette.colour(infos.size() + i);
+            }
+        }
+        return RobotPalette.DISCONNECTED;
+    }
+
+    /**
+     * Writes a caption on a translucent box in the top left corner, as snapshots carry it, so that
+     * views drawn elsewhere (the 3D view, a window) label their snapshots alike.
+     *
+     * @param target     where to draw; its settings are left as they were
+     * @param imageWidth the width of the image, which sets the font size
+     * @param text       the caption
+     */
+    public static void drawCaption(Graphics2D target, int imageWidth, String text) {
+        Graphics2D g = (Graphics2D) target.create();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, fontSize(imageWidth)));
+            FontMetrics metrics = g.getFontMetrics();
+            int pad = 4;
+            int boxWidth = metrics.stringWidth(text) + 2 * pad;
+            int boxHeight = metrics.getHeight() + 2 * pad;
+            g.setColor(CAPTION_BACKDROP);
+            g.fill(new Rectangle2D.Double(3, 3, boxWidth, boxHeight));
+            g.setColor(OUTLINE);
+            g.drawString(text, 3 + pad, 3 + pad + metrics.getAscent());
+        } finally {
+            g.dispose();
+        }
+    }
+
+    /** Text grows with the image but stays readable on small ones. */
+    private static int fontSize(int imageWidth) {
+        return Math.max(10, Math.min(24, imageWidth / 70));
+    }
+}
