@@ -6,7 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
 
 /**

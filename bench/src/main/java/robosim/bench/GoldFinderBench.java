@@ -13,7 +13,7 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
 import robosim.examples.goldfinder.Maze;
 import robosim.examples.goldfinder.MazeWorldWriter;

@@ -8,7 +8,7 @@ import java.util.Locale;
 import java.util.Map;
 import robosim.env.core.Simulation;
 import robosim.env.world.World;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
 
 /**

@@ -11,7 +11,7 @@ import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 
 /**
  * Steps per second, as fast as possible, in the grid world: the Environment in this JVM, the robots

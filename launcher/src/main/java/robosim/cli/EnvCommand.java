@@ -17,8 +17,8 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
-import robosim.env.world.WorldFileException;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldFileException;
+import robosim.env.world.xml.WorldReader;
 import robosim.protocol.FrameReader;
 import robosim.protocol.recording.RecordingWriter;
 

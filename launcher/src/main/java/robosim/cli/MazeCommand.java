@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.Maze;
 import robosim.examples.goldfinder.MazeWorldWriter;
 import robosim.params.RobotParameterFiles;

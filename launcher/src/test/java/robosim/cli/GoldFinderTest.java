@@ -19,7 +19,7 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;

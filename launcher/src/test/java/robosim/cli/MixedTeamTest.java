@@ -16,7 +16,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.scoutwander.ScoutWander;
 import robosim.examples.wander.Wander;
 import robosim.protocol.Snapshot;

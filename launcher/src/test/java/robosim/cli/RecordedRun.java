@@ -11,7 +11,7 @@ import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.wander.Wander;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;

@@ -22,7 +22,7 @@ import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.WorldReader;
+import robosim.env.world.xml.WorldReader;
 
 /** The whole Pioneer interface over TCP: range devices, the laser, heat, backing into a wall, noise. */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)

@@ -1,15 +1,7 @@
 /**
- * World files: the XML description of a world (its size, step length, walls, polygon
- * obstacles, heat sources, sensor and odometry noise, how messages travel between robots, and
- * the robots that must connect before a run starts), read by
- * {@link robosim.env.world.WorldReader} into the immutable {@link robosim.env.world.World}.
- *
- * <p>Reading is strict. Every broken rule is reported as one
- * {@link robosim.env.world.WorldFileException} whose message names the file, the 1-based line of
- * the offending element and the rule, so that a world can be fixed without a debugger. The format
- * is described in {@code docs/WORLD-FORMAT.md}.
- *
- * <p>The XML is read by Jackson into mutable element classes private to this package, then
- * checked and converted; nothing outside the package sees them.
+ * The world model: the immutable {@link robosim.env.world.World} (its size, step length, obstacles, heat
+ * sources and gold, sensor and odometry noise, how messages travel between robots, and the
+ * {@link robosim.env.world.RobotSpec robots} that must connect before a run starts) that the simulation
+ * core is built from. How a world is read from its XML file is {@code robosim.env.world.xml}'s concern.
  */
 package robosim.env.world;

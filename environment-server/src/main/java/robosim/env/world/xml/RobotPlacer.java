@@ -1,0 +1,133 @@
+package robosim.env.world.xml;
+
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.GeometryFactory;
+import org.locationtech.jts.geom.Polygon;
+import robosim.geometry.BodyShape;
+import robosim.geometry.GeometryClient;
+import robosim.geometry.Pose2D;
+import robosim.params.ParameterFileException;
+import robosim.protocol.RobotParameters;
+import robosim.params.RobotParametersReader;
+import robosim.env.world.Obstacle;
+import robosim.env.world.RobotSpec;
+
+/**
+ * Turns {@code <robot>} elements into {@link RobotSpec}s: reads each robot's parameter file
+ * (relative to the world file) and checks that its body, as that file sizes it, starts inside
+ * the world and clear of the obstacles and of the robots placed before it.
+ */
+final class RobotPlacer {
+    /** The robot types a world may name; {@code scout} is reserved for the Scout API. */
+    static final List<String> TYPES = List.of("pioneer", "scout");
+
+    private final Attributes attributes;
+    private final double width;
+    private final double height;
+    private final List<Obstacle> obstacles;
+    private final List<String> obstacleNames;
+    private final GeometryClient geometry;
+    private final GeometryFactory factory = new GeometryFactory();
+    private final List<RobotSpec> placed = new ArrayList<>();
+    private final Map<Path, RobotParameters> parameterCache = new HashMap<>();
+
+    /**
+     * @param obstacleNames how messages name each obstacle, in the order of {@code obstacles}
+     */
+    RobotPlacer(Attributes attributes, double width, double height, List<Obstacle> obstacles,
+                List<String> obstacleNames) {
+        this.attributes = attributes;
+        this.width = width;
+        this.height = height;
+        this.obstacles = obstacles;
+        this.obstacleNames = obstacleNames;
+        this.geometry = new GeometryClient(obstacles.stream().map(Obstacle::polygon).toList());
+    }
+
+    /** @return the robot, checked and placed */
+    RobotSpec place(RobotElement e) {
+        String name = attributes.text(e, "name", e.name);
+        for (RobotSpec other : placed) {
+            if (other.name().equals(name)) {
+                throw attributes.error(e, "duplicate robot name '" + name + "': already used by the robot at line "
+                        + other.line());
+            }
+        }
+        String type = attributes.text(e, "type", e.type);
+        if (!TYPES.contains(type)) {
+            throw attributes.error(e, "robot '" + name + "' has unknown type '" + type + "'; known types: "
+                    + String.join(", ", TYPES));
+        }
+        double x = attributes.number(e, "x", e.x);
+        double y = attributes.number(e, "y", e.y);
+        double th = attributes.number(e, "th", e.th, 0);
+        String params = attributes.text(e, "params", e.params);
+        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
+        RobotSpec robot = new RobotSpec(name, type, x, y, th, file, parameters(e, name, params, file), e.line());
+        check(robot, e);
+        geometry.addBody(robot.body(), robot.pose());
+        placed.add(robot);
+        return robot;
+    }
+
+    private RobotParameters parameters(RobotElement e, String name, String params, Path file) {
+        RobotParameters known = parameterCache.get(file);
+        if (known != null) {
+            return known;
+        }
+        if (!Files.exists(file)) {
+            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " does not exist (looked for "
+                    + file + ")");
+        }
+        if (!Files.isRegularFile(file) || !Files.isReadable(file)) {
+            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " cannot be read ("
+                    + file + ")");
+        }
+        try {
+            RobotParameters read = RobotParametersReader.read(file);
+            parameterCache.put(file, read);
+            return read;
+        } catch (ParameterFileException ex) {
+            throw attributes.error(e, "robot '" + name + "': broken parameter file: " + ex.getMessage());
+        } catch (UncheckedIOException ex) {
+            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " cannot be read ("
+                    + ex.getCause().getMessage() + ")");
+        }
+    }
+
+    private void check(RobotSpec robot, RobotElement e) {
+        BodyShape body = robot.body();
+        Pose2D pose = robot.pose();
+        String where = "robot '" + robot.name() + "' at (" + Attributes.format(robot.x()) + ", "
+                + Attributes.format(robot.y()) + ")";
+        Coordinate[] ring = body.ringAt(pose);
+        for (Coordinate c : ring) {
+            if (c.x < 0 || c.x > width || c.y < 0 || c.y > height) {
+                throw attributes.error(e, where + " is outside the world " + Attributes.format(width) + " x "
+                        + Attributes.format(height) + ": its body must lie inside it");
+            }
+        }
+        if (!geometry.overlaps(body, pose, -1)) {
+            return;
+        }
+        Polygon outline = factory.createPolygon(ring);
+        for (int i = 0; i < obstacles.size(); i++) {
+            if (obstacles.get(i).polygon().intersects(outline)) {
+                throw attributes.error(e, where + " overlaps " + obstacleNames.get(i));
+            }
+        }
+        for (int i = 0; i < placed.size(); i++) {
+            if (geometry.bodyPolygon(i).intersects(outline)) {
+                throw attributes.error(e, where + " overlaps robot '" + placed.get(i).name() + "' at line "
+                        + placed.get(i).line());
+            }
+        }
+    }
+}

@@ -1,0 +1,76 @@
+package robosim.env.world.xml;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Walls and polygons whose geometry is degenerate. */
+class WorldGeometryErrorTest {
+    @TempDir
+    Path dir;
+    WorldFixtures fixtures;
+
+    @BeforeEach
+    void setUp() {
+        fixtures = new WorldFixtures(dir);
+    }
+
+    private void failsWith(String element, String... words) {
+        fixtures.fails("geometry.xml", """
+                <world name="geometry" width="6000" height="6000">
+                  <polygon points="3000,3000 3500,3000 3000,3500"/>
+                  %s
+                </world>
+                """.formatted(element), 3, words);
+    }
+
+    @Test
+    void polygonWithTwoDistinctPoints() {
+        failsWith("<polygon points=\"0,0 100,100 100,100 0,0\"/>", "polygon has 2 distinct points but needs at least 3");
+    }
+
+    @Test
+    void polygonWithOddNumberOfCoordinates() {
+        failsWith("<polygon points=\"0,0 100,0 100\"/>", "points on <polygon> has 5 numbers; it needs x,y pairs");
+    }
+
+    @Test
+    void polygonWithZeroArea() {
+        failsWith("<polygon points=\"0,0 100,100 200,200\"/>", "polygon has zero area");
+    }
+
+    @Test
+    void selfIntersectingPolygon() {
+        failsWith("<polygon points=\"0,0 1000,1000 1000,0 0,1000\"/>", "polygon is self-intersecting at (500, 500)");
+    }
+
+    @Test
+    void polygonTouchingItselfAtAPoint() {
+        failsWith("<polygon points=\"0,0 1000,0 500,500 1000,1000 0,1000 500,500\"/>",
+                "polygon is self-intersecting at (500, 500)");
+    }
+
+    @Test
+    void polygonHeightMustBePositive() {
+        failsWith("<polygon points=\"0,0 100,0 0,100\" height=\"0\"/>",
+                "attribute height on <polygon> is 0 but must be greater than 0");
+    }
+
+    @Test
+    void wallOfZeroLength() {
+        failsWith("<wall x1=\"100\" y1=\"200\" x2=\"100\" y2=\"200\"/>", "wall from (100, 200) to (100, 200) has zero length");
+    }
+
+    @Test
+    void wallThicknessMustBePositive() {
+        failsWith("<wall x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" thickness=\"0\"/>",
+                "attribute thickness on <wall> is 0 but must be greater than 0");
+    }
+
+    @Test
+    void negativeWallThickness() {
+        failsWith("<wall x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" thickness=\"-10\"/>",
+                "attribute thickness on <wall> is -10 but must be greater than 0");
+    }
+}
