@@ -72,13 +72,8 @@ final class ViewerCommand implements Callable<Integer> {
             err.println("robosim viewer: " + e.getMessage());
             return 2;
         }
-        if (window) {
-            // before anything graphical: the first AWT class loaded fixes whether Java runs headless
-            String why = Windows.prepare();
-            if (why != null) {
-                err.println("robosim viewer: " + why);
-                return 1;
-            }
+        if (window && !Windows.prepare(err, "robosim viewer")) {
+            return 1;
         }
         if (pngDir != null) {
             listeners.add(new RenderedFrames(drawing.painter(), new PngFrameWriter(pngDir), every, drawing.trails));
