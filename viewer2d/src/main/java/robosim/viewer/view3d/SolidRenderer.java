@@ -15,6 +15,7 @@ import robosim.protocol.ViewerFrame;
 import robosim.protocol.ViewerFrame.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
+import robosim.viewer.ClosedPath;
 import robosim.viewer.FramePainter;
 import robosim.viewer.TrailPainter;
 import robosim.viewer.Trails;
@@ -166,17 +167,7 @@ public final class SolidRenderer implements FramePainter {
     }
 
     private static Path2D path(Projection p, double[] xyz) {
-        Path2D.Double path = new Path2D.Double();
-        for (int i = 0; i < xyz.length; i += 3) {
-            double x = p.px(xyz[i], xyz[i + 1], xyz[i + 2]);
-            double y = p.py(xyz[i], xyz[i + 1], xyz[i + 2]);
-            if (i == 0) {
-                path.moveTo(x, y);
-            } else {
-                path.lineTo(x, y);
-            }
-        }
-        path.closePath();
-        return path;
+        return ClosedPath.of(xyz.length / 3, i -> p.px(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]),
+                i -> p.py(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
     }
 }
