@@ -1,6 +1,5 @@
 package robosim.aria;
 
-import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
@@ -79,13 +78,7 @@ public class ArRobot extends AbstractRobot {
      * @return true if connected; otherwise {@link #getConnectionError()} says why
      */
     public boolean blockingConnect() {
-        try {
-            connect(HardwareOptions.defaults());
-            return true;
-        } catch (IOException | RuntimeException e) {
-            setConnectionError(e.getMessage());
-            return false;
-        }
+        return tryConnect(HardwareOptions.defaults());
     }
 
     /**

@@ -87,6 +87,26 @@ public abstract class AbstractRobot {
     }
 
     /**
+     * Connects as {@link #connect} does, but records a failure instead of throwing it: the shared
+     * part of each API's own connect call (ARIA's {@code blockingConnect}, the Nomad's
+     * {@code connect_robot}).
+     *
+     * @param options timeouts
+     * @return true if connected; otherwise {@link #getConnectionError()} says why
+     */
+    protected boolean tryConnect(HardwareOptions options) {
+        try {
+            connect(options);
+            return true;
+        } catch (IOException | RuntimeException e) {
+            String reason = e.getMessage();
+            connectionError = reason;
+            LOG.warning(() -> "robot " + name + " could not connect: " + reason);
+            return false;
+        }
+    }
+
+    /**
      * Called once when the Environment has welcomed the robot, before the first step.
      *
      * @param initial the robot's state before the first step
@@ -225,12 +245,6 @@ public abstract class AbstractRobot {
      */
     public String pollRequestError() {
         return requestErrors.poll();
-    }
-
-    /** @param reason why connecting failed, for the robot's program to read */
-    protected void setConnectionError(String reason) {
-        connectionError = reason;
-        LOG.warning(() -> "robot " + name + " could not connect: " + reason);
     }
 
     /** @return why the last connection attempt failed, or null */

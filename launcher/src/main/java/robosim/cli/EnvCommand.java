@@ -119,26 +119,14 @@ final class EnvCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Names the flag, the value and the rule, before the values reach the server's own checks. */
+    /** Names the flag the user typed, with the value and the server's rule, before the server checks them. */
     private void checkFlags() {
-        port("--port", port);
-        port("--viewer-port", viewerPort);
-        atLeast("--steps", steps, 0);
-        atLeast("--step-timeout", stepTimeoutMs, 1);
-        atLeast("--connect-timeout", connectTimeoutS, 1);
-        atLeast("--wait-viewers", waitViewers, 0);
-    }
-
-    private static void port(String flag, int value) {
-        if (value < 0 || value > 65535) {
-            throw new IllegalArgumentException(value + " was supplied for " + flag + ": a port is 0 to 65535, 0 for any free port");
-        }
-    }
-
-    private static void atLeast(String flag, long value, long min) {
-        if (value < min) {
-            throw new IllegalArgumentException(value + " was supplied for " + flag + ": it must be at least " + min);
-        }
+        ServerOptions.requirePort("--port", port);
+        ServerOptions.requirePort("--viewer-port", viewerPort);
+        ServerOptions.requireAtLeast("--steps", steps, 0);
+        ServerOptions.requireAtLeast("--step-timeout", stepTimeoutMs, 1);
+        ServerOptions.requireAtLeast("--connect-timeout", connectTimeoutS, 1);
+        ServerOptions.requireAtLeast("--wait-viewers", waitViewers, 0);
     }
 
     static void printReport(PrintWriter out, RunReport report) {

@@ -85,13 +85,8 @@ final class ReplayCommand implements Callable<Integer> {
             err.println("robosim replay: " + e.getMessage());
             return 2;
         }
-        if (window) {
-            // before anything graphical: the first AWT class loaded fixes whether Java runs headless
-            String why = Windows.prepare();
-            if (why != null) {
-                err.println("robosim replay: " + why);
-                return 1;
-            }
+        if (window && !Windows.prepare(err, "robosim replay")) {
+            return 1;
         }
         if (!Files.isRegularFile(file)) {
             err.println("robosim replay: " + file + " is not a file");

@@ -73,13 +73,8 @@ final class ViewerCommand implements Callable<Integer> {
             err.println("robosim viewer: " + e.getMessage());
             return 2;
         }
-        if (window) {
-            // before anything graphical: the first AWT class loaded fixes whether Java runs headless
-            String why = Windows.prepare();
-            if (why != null) {
-                err.println("robosim viewer: " + why);
-                return 1;
-            }
+        if (window && !Windows.prepare(err, "robosim viewer")) {
+            return 1;
         }
         PngImageWriter png = pngDir == null ? null : new PngImageWriter(pngDir);
         if (png != null) {

@@ -2,6 +2,7 @@ package robosim.cli;
 
 import java.awt.AWTError;
 import java.awt.HeadlessException;
+import java.io.PrintWriter;
 import java.util.Locale;
 import javax.swing.SwingUtilities;
 import robosim.viewer.window.ViewerPane;
@@ -19,19 +20,22 @@ final class Windows {
     }
 
     /**
-     * Turns off headless mode (the launcher starts Java headless) when a display is there; must be
-     * called before anything graphical.
+     * Turns off headless mode (the launcher starts Java headless) when a display is there. Call it
+     * before anything graphical: the first AWT class loaded fixes whether Java runs headless.
      *
-     * @return null if a window can be opened, or why not
+     * @param err     where to say why no window can be opened
+     * @param command what starts that message, such as {@code robosim viewer}
+     * @return true if a window can be opened; false once the reason is written to {@code err}
      */
-    static String prepare() {
+    static boolean prepare(PrintWriter err, String command) {
         String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
         boolean x11 = !os.contains("win") && !os.contains("mac");
         if (x11 && isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))) {
-            return "--window needs a display, and DISPLAY is not set (draw PNG files with --png-dir instead)";
+            err.println(command + ": --window needs a display, and DISPLAY is not set (draw PNG files with --png-dir instead)");
+            return false;
         }
         System.setProperty("java.awt.headless", "false");
-        return null;
+        return true;
     }
 
     private static boolean isBlank(String s) {

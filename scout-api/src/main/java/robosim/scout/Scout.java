@@ -5,7 +5,6 @@ import static robosim.scout.NomadUnits.mmToTenthInch;
 import static robosim.scout.NomadUnits.tenthDegToDeg;
 import static robosim.scout.NomadUnits.tenthInchToMm;
 
-import java.io.IOException;
 import java.util.Arrays;
 import java.util.function.BiConsumer;
 import java.util.logging.Logger;
@@ -107,13 +106,7 @@ public class Scout extends AbstractRobot {
      * @return true if connected; otherwise {@link #getConnectionError()} says why
      */
     public boolean connect_robot() {
-        try {
-            connect(HardwareOptions.defaults());
-            return true;
-        } catch (IOException | RuntimeException e) {
-            setConnectionError(e.getMessage());
-            return false;
-        }
+        return tryConnect(HardwareOptions.defaults());
     }
 
     /** @return true if the robot was connected and has left the run */

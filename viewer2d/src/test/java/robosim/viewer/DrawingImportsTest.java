@@ -22,7 +22,7 @@ class DrawingImportsTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"WorldRenderer", "RobotPainter", "LaserPainter", "HeatPainter", "ViewTransform",
-        "RenderOptions", "RobotPalette"})
+        "RenderOptions", "RobotPalette", "ClosedPath"})
     void drawingClassImportsNoTransport(String className) throws IOException {
         Path source = Path.of(System.getProperty("basedir", "."), "src/main/java/robosim/viewer/draw", className + ".java");
         List<String> offending = Files.readAllLines(source).stream()

@@ -18,13 +18,13 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
 
     /** Checks every value; a bad one is named with the rule it breaks. */
     public ServerOptions {
-        port("robotPort", robotPort);
-        port("viewerPort", viewerPort);
-        atLeast("maxSteps", maxSteps, 0);
-        atLeast("stepTimeoutMs", stepTimeoutMs, 1);
-        atLeast("connectTimeoutMs", connectTimeoutMs, 1);
-        atLeast("waitViewers", waitViewers, 0);
-        atLeast("maxFrame", maxFrame, 64);
+        requirePort("robotPort", robotPort);
+        requirePort("viewerPort", viewerPort);
+        requireAtLeast("maxSteps", maxSteps, 0);
+        requireAtLeast("stepTimeoutMs", stepTimeoutMs, 1);
+        requireAtLeast("connectTimeoutMs", connectTimeoutMs, 1);
+        requireAtLeast("waitViewers", waitViewers, 0);
+        requireAtLeast("maxFrame", maxFrame, 64);
     }
 
     /**
@@ -48,13 +48,31 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
                 connectTimeoutMs, viewers, maxFrame);
     }
 
-    private static void port(String name, int value) {
+    /**
+     * The rule for a listening port, shared with command lines so that an error names the flag the
+     * user typed.
+     *
+     * @param name  what the value was supplied for: a parameter or a flag
+     * @param value the port
+     * @throws IllegalArgumentException naming the value, the name and the rule, if it is not 0 to 65535
+     */
+    public static void requirePort(String name, int value) {
         if (value < 0 || value > 65535) {
-            throw new IllegalArgumentException(value + " was supplied for " + name + ": a port is 0 to 65535");
+            throw new IllegalArgumentException(value + " was supplied for " + name
+                    + ": a port is 0 to 65535, 0 for any free port");
         }
     }
 
-    private static void atLeast(String name, long value, long min) {
+    /**
+     * The rule for a count or a time with a lower bound, shared with command lines so that an error
+     * names the flag the user typed.
+     *
+     * @param name  what the value was supplied for: a parameter or a flag
+     * @param value the value
+     * @param min   the least value allowed
+     * @throws IllegalArgumentException naming the value, the name and the rule, if it is below {@code min}
+     */
+    public static void requireAtLeast(String name, long value, long min) {
         if (value < min) {
             throw new IllegalArgumentException(value + " was supplied for " + name + ": it must be at least " + min);
         }

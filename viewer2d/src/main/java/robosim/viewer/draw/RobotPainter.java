@@ -6,7 +6,6 @@ import java.awt.Graphics2D;
 import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
-import java.awt.geom.Path2D;
 import robosim.geometry.Pose2D;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
@@ -124,18 +123,8 @@ final class RobotPainter {
         double rear = -p.robotLengthRear();
         double half = p.robotWidth() / 2;
         double[][] corners = {{front, half}, {rear, half}, {rear, -half}, {front, -half}};
-        Path2D.Double path = new Path2D.Double();
-        for (int i = 0; i < corners.length; i++) {
-            double x = view.px(pose.worldX(corners[i][0], corners[i][1]));
-            double y = view.py(pose.worldY(corners[i][0], corners[i][1]));
-            if (i == 0) {
-                path.moveTo(x, y);
-            } else {
-                path.lineTo(x, y);
-            }
-        }
-        path.closePath();
-        return path;
+        return ClosedPath.of(corners.length, i -> view.px(pose.worldX(corners[i][0], corners[i][1])),
+                i -> view.py(pose.worldY(corners[i][0], corners[i][1])));
     }
 
     private static Shape circle(ViewTransform view, Pose2D pose, double radiusMm) {

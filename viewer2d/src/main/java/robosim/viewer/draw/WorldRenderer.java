@@ -170,13 +170,7 @@ public final class WorldRenderer {
         if (xy == null || xy.length < 6) {
             return null;
         }
-        Path2D.Double path = new Path2D.Double();
-        path.moveTo(view.px(xy[0]), view.py(xy[1]));
-        for (int i = 2; i + 1 < xy.length; i += 2) {
-            path.lineTo(view.px(xy[i]), view.py(xy[i + 1]));
-        }
-        path.closePath();
-        return path;
+        return ClosedPath.of(xy.length / 2, i -> view.px(xy[2 * i]), i -> view.py(xy[2 * i + 1]));
     }
 
     private void drawRobots(Graphics2D g, ViewTransform view, WorldDescription world, Snapshot snapshot,

@@ -15,6 +15,7 @@ import robosim.protocol.Snapshot;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.WorldDescription.HeatSource;
+import robosim.viewer.draw.ClosedPath;
 import robosim.viewer.draw.SnapshotPainter;
 import robosim.viewer.draw.TrailPainter;
 import robosim.viewer.draw.Trails;
@@ -166,17 +167,7 @@ public final class SolidRenderer implements SnapshotPainter {
     }
 
     private static Path2D path(Projection p, double[] xyz) {
-        Path2D.Double path = new Path2D.Double();
-        for (int i = 0; i < xyz.length; i += 3) {
-            double x = p.px(xyz[i], xyz[i + 1], xyz[i + 2]);
-            double y = p.py(xyz[i], xyz[i + 1], xyz[i + 2]);
-            if (i == 0) {
-                path.moveTo(x, y);
-            } else {
-                path.lineTo(x, y);
-            }
-        }
-        path.closePath();
-        return path;
+        return ClosedPath.of(xyz.length / 3, i -> p.px(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]),
+                i -> p.py(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
     }
 }
