@@ -12,7 +12,7 @@ import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
 
 /**
- * The Pioneer Robot-Object, with ARIA's {@code ArRobot} semantics (see ARIA-SEMANTICS.md): units
+ * The Pioneer Robot-Object, with ARIA's {@code ArRobot} semantics (see docs/ARIA-SEMANTICS.md): units
  * mm, mm/s, degrees, deg/s; motion calls do not block; getters answer from the latest state the
  * Environment reported, which changes only while the robot's code is yielded (in
  * {@link ArUtil#sleep}), so a program reads a consistent snapshot.

@@ -10,7 +10,7 @@ final class Messages {
     private Messages() {
     }
 
-    /** The Pioneer 3 DX of ARIA-SEMANTICS.md, field by field. */
+    /** The Pioneer 3 DX of docs/ARIA-SEMANTICS.md, field by field. */
     static RobotParameters p3dx() {
         return new RobotParameters("Pioneer", "p3dx", 250, 425, 210, 301, 2200, 500, 300, 300, 100, 100,
                 0.0056, 5000, List.of(

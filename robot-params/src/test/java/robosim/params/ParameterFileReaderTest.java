@@ -39,7 +39,7 @@ class ParameterFileReaderTest {
         assertEquals(file + ":" + line + ": " + rule, e.getMessage());
     }
 
-    // --- the shipped Pioneer files match ARIA-SEMANTICS.md ---
+    // --- the shipped Pioneer files match docs/ARIA-SEMANTICS.md ---
 
     @Test
     void p3dxIsAPioneerP3dx() {

@@ -13,9 +13,9 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** Every shipped robot reads the same in both forms, and both match ARIA-SEMANTICS.md. */
+/** Every shipped robot reads the same in both forms, and both match docs/ARIA-SEMANTICS.md. */
 class ShippedRobotFormsTest {
-    /** The p3dx of ARIA-SEMANTICS.md: body, speeds, sonar table, laser at x 18. */
+    /** The p3dx of docs/ARIA-SEMANTICS.md: body, speeds, sonar table, laser at x 18. */
     private static final RobotParameters P3DX = new RobotParameters("Pioneer", "p3dx",
             250, 425, 210, 301, 2200, 500, 300, 300, 100, 100, 0.0056, 5000, List.of(
             new SonarUnit(0, 69, 136, 90), new SonarUnit(1, 114, 119, 50),
@@ -28,7 +28,7 @@ class ShippedRobotFormsTest {
             new SonarUnit(14, -203, 119, 130), new SonarUnit(15, -157, 136, 90)),
             18, 0, 0, 8000);
 
-    /** The p3at of ARIA-SEMANTICS.md: body, speeds, sonar table, laser at x 160. */
+    /** The p3at of docs/ARIA-SEMANTICS.md: body, speeds, sonar table, laser at x 160. */
     private static final RobotParameters P3AT = new RobotParameters("Pioneer", "p3at",
             500, 505, 313, 313, 1200, 300, 300, 300, 100, 100, 0.0034, 5000, List.of(
             new SonarUnit(0, 147, 136, 90), new SonarUnit(1, 193, 119, 50),
@@ -56,13 +56,13 @@ class ShippedRobotFormsTest {
                 RobotParametersReader.read(shipped(robot + ".xml")));
     }
 
-    @ParameterizedTest(name = "{0}.p matches ARIA-SEMANTICS.md")
+    @ParameterizedTest(name = "{0}.p matches docs/ARIA-SEMANTICS.md")
     @MethodSource("robots")
     void pFormMatchesAria(String robot, RobotParameters aria) {
         assertEquals(aria, ParameterFileReader.read(shipped(robot + ".p")));
     }
 
-    @ParameterizedTest(name = "{0}.xml matches ARIA-SEMANTICS.md")
+    @ParameterizedTest(name = "{0}.xml matches docs/ARIA-SEMANTICS.md")
     @MethodSource("robots")
     void xmlFormMatchesAria(String robot, RobotParameters aria) {
         assertEquals(aria, XmlParameterFileReader.read(shipped(robot + ".xml")));

@@ -13,7 +13,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * The drawing classes stay free of transport, files and logging, so the window, the 3D view and
- * replay can reuse them (STYLE.md rule 3).
+ * replay can reuse them (docs/DESIGN.md, "Rules the code keeps", rule 3).
  */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class DrawingImportsTest {

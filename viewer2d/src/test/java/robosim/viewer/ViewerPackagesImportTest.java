@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 /**
  * The 3D renderer draws and does no I/O; the window neither opens files nor sockets (the launcher
  * feeds it); the network client draws nothing and the drawing knows no network; nothing in the
- * viewer prints (docs/DESIGN.md).
+ * viewer prints (docs/DESIGN.md, "Rules the code keeps", rules 3 and 6).
  */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class ViewerPackagesImportTest {

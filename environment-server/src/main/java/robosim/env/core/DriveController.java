@@ -4,7 +4,7 @@ import robosim.protocol.Command;
 import robosim.protocol.RobotParameters;
 
 /**
- * The motion modes of a Pioneer's controller (see ARIA-SEMANTICS.md): what translational and
+ * The motion modes of a Pioneer's controller (see docs/ARIA-SEMANTICS.md): what translational and
  * rotational velocity the robot wants this step, given its commands and its pose. The velocities
  * it gets are then limited by its accelerations in {@link SimRobot}.
  *
