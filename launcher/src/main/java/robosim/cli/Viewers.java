@@ -1,6 +1,5 @@
 package robosim.cli;
 
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import robosim.viewer.draw.PngImageWriter;

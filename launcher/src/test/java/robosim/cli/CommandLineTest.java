@@ -47,7 +47,7 @@ class CommandLineTest {
     }
 
     private static String emptyRoom() {
-        return Harness.root().resolve("testLoadFiles/environment/empty-room.xml").toString();
+        return root().resolve("testLoadFiles/environment/empty-room.xml").toString();
     }
 
     @Test
@@ -103,7 +103,7 @@ class CommandLineTest {
 
     @Test
     void envWithARobotOutsideTheWorldExitsWith1AndNamesFileAndLine() throws Exception {
-        Path p3dx = Harness.root().resolve("testLoadFiles/robots/p3dx.p").toAbsolutePath();
+        Path p3dx = root().resolve("testLoadFiles/robots/p3dx.p").toAbsolutePath();
         Path world = dir.resolve("outside.xml");
         Files.writeString(world, """
                 <?xml version="1.0" encoding="UTF-8"?>
@@ -154,5 +154,14 @@ class CommandLineTest {
         Run r = execute("robot", "no.such.RobotProgram", "r1", "127.0.0.1", "70000");
         assertEquals(2, r.exit(), r.err());
         assertEquals("robosim robot: 70000 was supplied for PORT: a port is 1 to 65535", r.err().strip());
+    }
+
+    /** The RoboSim root: the nearest folder above the working directory that holds testLoadFiles. */
+    private static Path root() {
+        Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
+        while (p != null && !Files.isDirectory(p.resolve("testLoadFiles"))) {
+            p = p.getParent();
+        }
+        return p;
     }
 }

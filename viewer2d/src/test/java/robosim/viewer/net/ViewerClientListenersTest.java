@@ -18,7 +18,6 @@ import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.Recording;
 import robosim.protocol.recording.RecordingWriter;
-import robosim.viewer.draw.RenderOptions;
 import robosim.viewer.draw.Fixtures;
 
 /** A viewer that passes the run to listeners: a recorder, and a stop from another thread. */

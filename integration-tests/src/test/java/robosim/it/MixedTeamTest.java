@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -24,7 +24,7 @@ import robosim.protocol.Snapshot;
 /** The shipped mixed team, one Scout and two Pioneers, over TCP: deterministic per seed. */
 @Timeout(value = 3, unit = TimeUnit.MINUTES)
 class MixedTeamTest {
-    static final Path WORLD = Harness.root().resolve("testLoadFiles/environment/mixed-team.xml");
+    static final Path WORLD = LocalEnvironment.root().resolve("testLoadFiles/environment/mixed-team.xml");
     static final int STEPS = 300;
 
     @TempDir
@@ -84,7 +84,7 @@ class MixedTeamTest {
 
     @Test
     void theScoutWanderRunsInAJvmOfItsOwnBesideThePioneers() throws Exception {
-        try (Harness h = new Harness("mixed-team.xml", ServerOptions.loopback().withMaxSteps(100))) {
+        try (LocalEnvironment h = new LocalEnvironment("mixed-team.xml", ServerOptions.loopback().withMaxSteps(100))) {
             Path log = dir.resolve("s1.log");
             h.robotJvm("robosim.examples.scoutwander.ScoutWander", "s1", log);
             h.robotJvm("robosim.examples.wander.Wander", "r1", dir.resolve("r1.log"));

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -23,7 +23,7 @@ class MessagingEndToEndTest {
 
     @Test
     void robotsTalkThroughTheEnvironment() throws Exception {
-        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(40))) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(40))) {
             CompletableFuture<Void> sender = CompletableFuture.runAsync(() -> {
                 ArRobot r1 = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 r1.blockingConnect();

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.io.DataOutputStream;
 import java.io.IOException;

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import robosim.aria.ArRobot;
 import robosim.aria.ArUtil;

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
@@ -34,7 +34,7 @@ class BadFrameTest {
     /** Runs r1 as a wander robot in this JVM and r2 as a raw peer that misbehaves after hello. */
     private static void misbehaveAsR2(Consumer<RawPeer> misbehave, String expectedReason) throws Exception {
         try (LogCapture log = new LogCapture("robosim.env.net");
-             Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS))) {
+             LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS))) {
             Thread r1 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
@@ -45,7 +45,7 @@ class BadFrameTest {
             r1.start();
             try (RawPeer r2 = new RawPeer(h.server.robotPort())) {
                 r2.send(new RobotHello("r2", "pioneer", ParameterFileReader.read(
-                        Harness.root().resolve("testLoadFiles/robots/p3dx.p"))));
+                        LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.p"))));
                 assertInstanceOf(Welcome.class, r2.read());
                 TimeStep first = (TimeStep) r2.read();
                 r2.send(new RobotRequests(first.step(), List.of()));
@@ -106,10 +106,10 @@ class BadFrameTest {
 
     @Test
     void anUnknownRobotNameIsRefusedWithAReason() throws Exception {
-        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(1));
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(1));
              RawPeer peer = new RawPeer(h.server.robotPort())) {
             peer.send(new RobotHello("r9", "pioneer", ParameterFileReader.read(
-                    Harness.root().resolve("testLoadFiles/robots/p3dx.p"))));
+                    LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.p"))));
             Message m = peer.read();
             assertInstanceOf(Bye.class, m);
             assertTrue(((Bye) m).reason().contains("has no robot named 'r9'"), ((Bye) m).reason());
@@ -119,7 +119,7 @@ class BadFrameTest {
 
     @Test
     void aViewerThatSendsGarbageIsClosedAndTheRunGoesOn() throws Exception {
-        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS));
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(STEPS));
              RawPeer viewer = new RawPeer(h.server.viewerPort())) {
             viewer.send(new ViewerHello("bad"));
             viewer.sendRaw(new byte[] {0, 0, 0, 3, 1, 2, 3});

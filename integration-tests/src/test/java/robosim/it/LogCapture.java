@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -33,7 +33,7 @@ class StepDeadlineTest {
         Thread r1 = null;
         Thread r2 = null;
         try (LogCapture log = new LogCapture("robosim.env.net");
-             Harness h = new Harness("empty-room.xml", options)) {
+             LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
             r1 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,5 +1,6 @@
-package robosim.cli;
+package robosim.it;
 
+import robosim.cli.Main;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -72,7 +73,7 @@ class RecordCommandsTest {
         StringWriter envOut = new StringWriter();
         StringWriter envErr = new StringWriter();
         CompletableFuture<Integer> env = start(envOut, envErr, "env",
-                Harness.root().resolve("testLoadFiles/environment/small-maze.xml").toString(), "--port", "0",
+                LocalEnvironment.root().resolve("testLoadFiles/environment/small-maze.xml").toString(), "--port", "0",
                 "--viewer-port", "0", "--steps", "40", "--wait-viewers", "1", "--record", envFile.toString());
         Matcher ports = awaitPorts(envOut);
         int robotPort = Integer.parseInt(ports.group(1));
@@ -112,8 +113,8 @@ class RecordCommandsTest {
         CommandLine cl = Main.commandLine();
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
-        Path blocked = Harness.root().resolve("testLoadFiles/environment/empty-room.xml").resolve("run.rsr");
-        int exit = cl.execute("env", Harness.root().resolve("testLoadFiles/environment/empty-room.xml").toString(),
+        Path blocked = LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml").resolve("run.rsr");
+        int exit = cl.execute("env", LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml").toString(),
                 "--port", "0", "--viewer-port", "0", "--record", blocked.toString());
         assertEquals(1, exit);
         assertTrue(err.toString().startsWith("robosim env: cannot create recording " + blocked + ": "), err.toString());

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -8,9 +8,6 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.concurrent.TimeUnit;
-import robosim.env.core.Simulation;
-import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
@@ -23,14 +20,13 @@ import robosim.protocol.recording.SnapshotListener;
  * threads: each robot blocks for the whole run). Keeps every snapshot. Every wait is bounded.
  */
 final class ThreadedRun implements AutoCloseable {
-    final EnvironmentServer server;
+    final LocalEnvironment env;
     final List<Snapshot> snapshots = new ArrayList<>();
     private final ExecutorService threads = Executors.newCachedThreadPool(r -> {
         Thread t = new Thread(r, "robot-program");
         t.setDaemon(true);
         return t;
     });
-    private final Future<RunReport> report;
 
     /**
      * @param world    the world file
@@ -38,10 +34,8 @@ final class ThreadedRun implements AutoCloseable {
      * @param maxSteps steps to run, 0 until every robot has left
      */
     ThreadedRun(Path world, long seed, long maxSteps) throws Exception {
-        server = new EnvironmentServer(new Simulation(WorldReader.read(world), seed),
-                ServerOptions.loopback().withMaxSteps(maxSteps));
-        server.bind();
-        server.addSnapshotListener(new SnapshotListener() {
+        env = new LocalEnvironment(WorldReader.read(world), seed, ServerOptions.loopback().withMaxSteps(maxSteps),
+                new SnapshotListener() {
             @Override
             public void world(WorldDescription w) {
             }
@@ -53,18 +47,17 @@ final class ThreadedRun implements AutoCloseable {
                 }
             }
         });
-        report = threads.submit(server::run);
     }
 
     /** Writes a world file into {@code dir}; {@code %s} in the text stands for the robots/ folder. */
     static Path world(Path dir, String name, String xml) throws Exception {
-        String robots = Harness.root().resolve("testLoadFiles/robots").toString();
+        String robots = LocalEnvironment.root().resolve("testLoadFiles/robots").toString();
         return Files.writeString(dir.resolve(name), xml.replace("%ROBOTS%", robots));
     }
 
     /** @return the Environment's robot port */
     int port() {
-        return server.robotPort();
+        return env.robotPort();
     }
 
     /** Starts a robot program on a thread of its own. */
@@ -74,12 +67,15 @@ final class ThreadedRun implements AutoCloseable {
 
     /** @return the report, once the run has ended */
     RunReport await() throws Exception {
-        return report.get(120, TimeUnit.SECONDS);
+        return env.await();
     }
 
     @Override
-    public void close() {
-        server.close();
-        threads.shutdownNow();
+    public void close() throws Exception {
+        try {
+            env.close();
+        } finally {
+            threads.shutdownNow();
+        }
     }
 }

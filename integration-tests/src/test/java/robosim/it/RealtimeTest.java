@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -18,7 +18,7 @@ class RealtimeTest {
     @Test
     void realtimeStepsAreNotFasterThanTheStepLength() throws Exception {
         ServerOptions realtime = new ServerOptions("127.0.0.1", 0, 0, 8, true, 10_000, 30_000, 0, 4 << 20);
-        try (Harness h = new Harness("empty-room.xml", realtime)) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", realtime)) {
             for (String name : List.of("r1", "r2")) {
                 Thread t = new Thread(() -> {
                     ArRobot robot = new ArRobot(name, "127.0.0.1", h.server.robotPort(), "p3dx");

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.nio.file.Path;
 import java.time.Duration;
@@ -7,11 +7,8 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import robosim.aria.ArRobot;
-import robosim.env.core.Simulation;
-import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.xml.WorldReader;
 import robosim.examples.wander.Wander;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
@@ -41,22 +38,13 @@ final class RecordedRun {
      * @return the Environment's report
      */
     static RunReport run(int steps, Path recording, List<SnapshotListener> viewer) throws Exception {
-        Simulation sim = new Simulation(WorldReader.read(Harness.root().resolve("testLoadFiles/environment/small-maze.xml")));
         ServerOptions options = ServerOptions.loopback().withMaxSteps(steps).withWaitViewers(viewer.isEmpty() ? 0 : 1);
-        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
-            server.bind();
-            server.addSnapshotListener(RecordingWriter.create(recording, true));
-            CompletableFuture<RunReport> report = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return server.run();
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
+        try (LocalEnvironment env = new LocalEnvironment(LocalEnvironment.shipped("small-maze.xml"), 1, options,
+                RecordingWriter.create(recording, true))) {
             CompletableFuture<ViewerSummary> live = viewer.isEmpty() ? CompletableFuture.completedFuture(null)
                     : CompletableFuture.supplyAsync(() -> {
                         try {
-                            ViewerOptions o = ViewerOptions.of("127.0.0.1", server.viewerPort()).withName("live")
+                            ViewerOptions o = ViewerOptions.of("127.0.0.1", env.viewerPort()).withName("live")
                                     .withReadTimeout(Duration.ofSeconds(60));
                             return new ViewerClient(o, viewer).run();
                         } catch (Exception e) {
@@ -64,9 +52,9 @@ final class RecordedRun {
                         }
                     });
             List<Thread> robots = new ArrayList<>();
-            for (String name : sim.robotNames()) {
+            for (String name : env.sim.robotNames()) {
                 Thread t = new Thread(() -> {
-                    ArRobot robot = new ArRobot(name, "127.0.0.1", server.robotPort(), "p3dx");
+                    ArRobot robot = new ArRobot(name, "127.0.0.1", env.robotPort(), "p3dx");
                     if (robot.blockingConnect()) {
                         new Wander(robot).run();
                     }
@@ -75,7 +63,7 @@ final class RecordedRun {
                 t.start();
                 robots.add(t);
             }
-            RunReport r = report.get(120, TimeUnit.SECONDS);
+            RunReport r = env.await();
             live.get(60, TimeUnit.SECONDS);
             for (Thread t : robots) {
                 t.join(10_000);

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.net.Socket;
 import java.nio.file.Files;
@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import robosim.cli.RobotProcesses;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
@@ -20,19 +21,43 @@ import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
+import robosim.protocol.recording.SnapshotListener;
 
-/** An Environment on loopback for a test, and the tools to watch it. Every wait is bounded. */
-final class Harness implements AutoCloseable {
+/**
+ * The one way the end-to-end tests start an Environment: in this JVM, on loopback and free ports,
+ * its step loop on a thread of its own from the moment it is made. Robots reach it over TCP like any
+ * robot (as threads of the test, or JVMs started by {@link #robotJvm}), viewers through its viewer
+ * port. Every wait is bounded; {@link #close()} closes the server and stops the robot JVMs.
+ */
+final class LocalEnvironment implements AutoCloseable {
     final Simulation sim;
     final EnvironmentServer server;
-    final CompletableFuture<RunReport> report;
+    private final CompletableFuture<RunReport> report;
     private final List<Process> processes = new ArrayList<>();
 
-    Harness(String worldFile, ServerOptions options) throws Exception {
-        World world = WorldReader.read(root().resolve("testLoadFiles/environment").resolve(worldFile));
-        sim = new Simulation(world);
+    /**
+     * A shipped world with seed 1.
+     *
+     * @param worldFile a file of {@code testLoadFiles/environment/}
+     * @param options   how the server runs
+     */
+    LocalEnvironment(String worldFile, ServerOptions options) throws Exception {
+        this(shipped(worldFile), 1, options);
+    }
+
+    /**
+     * @param world     the world
+     * @param seed      the run's seed
+     * @param options   how the server runs
+     * @param listeners follow the run from its first step, as a recorder does
+     */
+    LocalEnvironment(World world, long seed, ServerOptions options, SnapshotListener... listeners) throws Exception {
+        sim = new Simulation(world, seed);
         server = new EnvironmentServer(sim, options);
         server.bind();
+        for (SnapshotListener l : listeners) {
+            server.addSnapshotListener(l);
+        }
         report = CompletableFuture.supplyAsync(() -> {
             try {
                 return server.run();
@@ -42,6 +67,7 @@ final class Harness implements AutoCloseable {
         });
     }
 
+    /** @return the RoboSim root: the nearest folder above the working directory that holds testLoadFiles */
     static Path root() {
         Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
         while (p != null && !Files.isDirectory(p.resolve("testLoadFiles"))) {
@@ -50,14 +76,36 @@ final class Harness implements AutoCloseable {
         return p;
     }
 
+    /** @return a world of {@code testLoadFiles/environment/}, read */
+    static World shipped(String worldFile) {
+        return WorldReader.read(root().resolve("testLoadFiles/environment").resolve(worldFile));
+    }
+
+    /** @return the port robots connect to */
+    int robotPort() {
+        return server.robotPort();
+    }
+
+    /** @return the port viewers connect to */
+    int viewerPort() {
+        return server.viewerPort();
+    }
+
+    /** Starts a robot program in a JVM of its own, stopped by {@link #close()} if it has not ended. */
     Process robotJvm(String className, String name, Path log, String... args) throws Exception {
         Process p = RobotProcesses.start(className, name, server.robotPort(), log, args);
         processes.add(p);
         return p;
     }
 
+    /** @return the run's report, within two minutes */
     RunReport await() throws Exception {
-        return report.get(120, TimeUnit.SECONDS);
+        return await(120);
+    }
+
+    /** @return the run's report, within the given seconds */
+    RunReport await(long seconds) throws Exception {
+        return report.get(seconds, TimeUnit.SECONDS);
     }
 
     /** Attaches a viewer that keeps every snapshot, on a thread of its own. */
@@ -72,8 +120,8 @@ final class Harness implements AutoCloseable {
                 FrameReader r = new FrameReader(s.getInputStream(), codec, 1 << 24);
                 Message m;
                 while ((m = r.read()) != null && !(m instanceof Bye)) {
-                    if (m instanceof Snapshot f) {
-                        snapshots.add(f);
+                    if (m instanceof Snapshot snapshot) {
+                        snapshots.add(snapshot);
                     }
                 }
             } catch (Exception e) {

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -18,8 +18,6 @@ import robosim.aria.ArSick;
 import robosim.aria.ArSonarDevice;
 import robosim.aria.ArUtil;
 import robosim.env.core.RobotSummary;
-import robosim.env.core.Simulation;
-import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
@@ -43,20 +41,11 @@ class SensorsEndToEndTest {
                   <noise sonar="5" laser="5" odometry="0.0075"/>
                   <robot name="r1" type="pioneer" x="2500" y="3000" th="0" params="%s"/>
                 </world>
-                """.formatted(Harness.root().resolve("testLoadFiles/robots/p3dx.xml")));
-        Simulation sim = new Simulation(WorldReader.read(world), 7);
-        try (EnvironmentServer server = new EnvironmentServer(sim, ServerOptions.loopback())) {
-            server.bind();
-            CompletableFuture<RunReport> run = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return server.run();
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
-            CompletableFuture<Seen> seen = CompletableFuture.supplyAsync(() -> drive(server.robotPort()));
+                """.formatted(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
+        try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 7, ServerOptions.loopback())) {
+            CompletableFuture<Seen> seen = CompletableFuture.supplyAsync(() -> drive(env.robotPort()));
             Seen s = seen.get(60, TimeUnit.SECONDS);
-            RunReport report = run.get(60, TimeUnit.SECONDS);
+            RunReport report = env.await(60);
 
             // the laser, 18 mm ahead of the centre, sees the boundary wall's face at x = 5900
             assertEquals(5900 - 2500 - 18, s.laserAhead(), 25);

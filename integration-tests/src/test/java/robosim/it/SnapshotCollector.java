@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import java.net.Socket;
 import java.util.ArrayList;

@@ -1,4 +1,4 @@
-package robosim.cli;
+package robosim.it;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -24,7 +24,7 @@ class EndToEndTest {
 
     @Test
     void twoRobotsInTheirOwnJvmsDriveReadSonarAndEndInFreeSpace() throws Exception {
-        try (Harness h = new Harness("empty-room.xml", ServerOptions.loopback())) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback())) {
             Process a = h.robotJvm(SonarDriver.class.getName(), "r1", dir.resolve("r1.log"));
             Process b = h.robotJvm(SonarDriver.class.getName(), "r2", dir.resolve("r2.log"));
             RunReport report = h.await();
@@ -71,10 +71,10 @@ class EndToEndTest {
 
     private List<Snapshot> wanderRun(Path logs) throws Exception {
         Files.createDirectories(logs);
-        try (Harness h = new Harness("small-maze.xml", ServerOptions.loopback().withMaxSteps(150).withWaitViewers(1))) {
+        try (LocalEnvironment h = new LocalEnvironment("small-maze.xml", ServerOptions.loopback().withMaxSteps(150).withWaitViewers(1))) {
             var snapshots = h.collectSnapshots();
-            h.robotJvm(DemoCommand.WANDER, "r1", logs.resolve("r1.log"));
-            h.robotJvm(DemoCommand.WANDER, "r2", logs.resolve("r2.log"));
+            h.robotJvm("robosim.examples.wander.Wander", "r1", logs.resolve("r1.log"));
+            h.robotJvm("robosim.examples.wander.Wander", "r2", logs.resolve("r2.log"));
             h.await();
             return snapshots.get(60, TimeUnit.SECONDS);
         }

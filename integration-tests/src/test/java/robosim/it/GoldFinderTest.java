@@ -1,5 +1,6 @@
-package robosim.cli;
+package robosim.it;
 
+import robosim.cli.MazeCommand;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -8,14 +9,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Polygon;
-import robosim.env.core.Simulation;
-import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
@@ -44,20 +42,11 @@ class GoldFinderTest {
     Run run(long seed) throws Exception {
         Path file = MazeCommand.write(8, 8, 1500, seed, 8, dir.resolve("maze-" + seed + ".xml"));
         World world = WorldReader.read(file).withFirstRobots(ROBOTS);
-        Simulation sim = new Simulation(world, seed);
-        try (EnvironmentServer server = new EnvironmentServer(sim,
+        try (LocalEnvironment env = new LocalEnvironment(world, seed,
                 ServerOptions.loopback().withMaxSteps(STEP_LIMIT).withWaitViewers(1))) {
-            server.bind();
-            CompletableFuture<RunReport> report = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return server.run();
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
-            SnapshotCollector viewer = new SnapshotCollector(server.viewerPort());
-            List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), ROBOTS, 1500, seed);
-            RunReport r = report.get(3, TimeUnit.MINUTES);
+            SnapshotCollector viewer = new SnapshotCollector(env.viewerPort());
+            List<Thread> team = GoldFinder.start("127.0.0.1", env.robotPort(), ROBOTS, 1500, seed);
+            RunReport r = env.await(180);
             for (Thread t : team) {
                 t.join(10_000);
             }

@@ -1,5 +1,6 @@
-package robosim.cli;
+package robosim.it;
 
+import robosim.cli.Main;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -18,7 +19,7 @@ class CommsUpdateTest {
     @Test
     void theCommsCommandChangesOnlyTheSettingsItNames() throws Exception {
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 1, false, 10_000, 3_000, 0, 4 << 20);
-        try (Harness h = new Harness("empty-room.xml", options)) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
             int code = run("comms", "--port", Integer.toString(h.server.viewerPort()), "--latency", "3", "--loss", "0.25");
             assertEquals(0, code, "the Environment confirmed");
             CommsSettings s = h.sim.commsSettings();
@@ -31,7 +32,7 @@ class CommsUpdateTest {
     @Test
     void settingsThatBreakARuleAreRefused() throws Exception {
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 1, false, 10_000, 3_000, 0, 4 << 20);
-        try (Harness h = new Harness("empty-room.xml", options)) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
             assertEquals(1, run("comms", "--port", Integer.toString(h.server.viewerPort()), "--loss", "1.5"));
             assertEquals(CommsSettings.DEFAULT, h.sim.commsSettings());
         }

@@ -1,5 +1,6 @@
-package robosim.cli;
+package robosim.it;
 
+import robosim.cli.Main;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -183,7 +184,7 @@ class ReplayCommandTest {
 
     @Test
     void aFileThatIsNotARecordingExitsWith1AndSaysSo() throws Exception {
-        Path world = Harness.root().resolve("testLoadFiles/environment/empty-room.xml");
+        Path world = LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml");
         Run r = execute("replay", world.toString(), "--info");
         assertEquals(1, r.exit());
         assertEquals("robosim replay: " + world + " is not a RoboSim recording: it starts with \"<?xml ve\", not the magic \"RoboSimR\"",
