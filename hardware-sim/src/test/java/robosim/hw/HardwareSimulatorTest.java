@@ -1,0 +1,423 @@
+package robosim.hw;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robosim.hw.FakeEnvironment.WAIT_MS;
+
+import java.io.IOException;
+import java.net.BindException;
+import java.net.ConnectException;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.TimeStep;
+import robosim.protocol.Welcome;
+import robosim.protocol.params.RobotParameters;
+
+/**
+ * A robot's link to the Environment, against an Environment played by the test over loopback TCP:
+ * connecting, each step's requests, and every way the link ends. (The JVM-wide watchdog may send a
+ * step's requests instead of the robot's threads; the Environment sees the same frames either way.)
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class HardwareSimulatorTest {
+    private static final RobotParameters PARAMETERS = TestRobot.PARAMETERS;
+    private static final HardwareOptions OPTIONS = new HardwareOptions(WAIT_MS, WAIT_MS, WAIT_MS);
+
+    private final StepGate gate = new StepGate();
+    private final BlockingQueue<RobotSensorResponse> responses = new LinkedBlockingQueue<>();
+    private final RobotCode code = new RobotCode();
+    private FakeEnvironment env;
+
+    @BeforeEach
+    void listen() throws IOException {
+        env = new FakeEnvironment();
+    }
+
+    @AfterEach
+    void endRun() throws Exception {
+        try {
+            env.close();
+        } finally {
+            gate.close();
+            code.close();
+        }
+    }
+
+    private HardwareSimulator hardware(String name, HardwareOptions options) {
+        return new HardwareSimulator(new RobotHello(name, "pioneer", PARAMETERS), gate, responses::add, options);
+    }
+
+    /**
+     * Runs robot code on a thread of its own: it connects, joins the gate, starts the hardware
+     * thread, then runs {@code body}.
+     */
+    private Thread run(HardwareSimulator hw, RobotCode.Body body) {
+        return code.start("code", () -> {
+            hw.connect("127.0.0.1", env.port());
+            gate.join(Thread.currentThread());
+            hw.start();
+            body.run();
+        });
+    }
+
+    /** Yields until the link ends. */
+    private void yieldUntilTheEnd() throws InterruptedException {
+        gate.await(time -> false);
+    }
+
+    /** Connects on a thread of its own, for tests of a connect that fails. */
+    private CompletableFuture<Welcome> connecting(HardwareSimulator hw, int port) {
+        CompletableFuture<Welcome> welcome = new CompletableFuture<>();
+        code.start("connecting", () -> {
+            try {
+                welcome.complete(hw.connect("127.0.0.1", port));
+            } catch (Throwable e) {
+                welcome.completeExceptionally(e);
+            }
+        });
+        return welcome;
+    }
+
+    private static Throwable failureOf(CompletableFuture<?> f) {
+        ExecutionException e = assertThrows(ExecutionException.class, () -> f.get(WAIT_MS, TimeUnit.MILLISECONDS));
+        return e.getCause();
+    }
+
+    // ---- connecting ----
+
+    @Test
+    void theHelloCarriesTheRobotsNameTypeAndParametersAndTheWelcomeIsReturned() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        CompletableFuture<Welcome> welcome = connecting(hw, env.port());
+        assertEquals(new RobotHello("r1", "pioneer", PARAMETERS), env.acceptHello());
+        env.send(new Welcome("r1", 250, FakeEnvironment.state(0)));
+        Welcome w = welcome.get(WAIT_MS, TimeUnit.MILLISECONDS);
+        assertEquals("r1", w.name());
+        assertEquals(250, w.stepMs());
+        assertEquals(0, w.state().step());
+        hw.disconnect("the test is over");
+        assertEquals(new Bye("the test is over"), env.read());
+    }
+
+    @Test
+    void anEnvironmentThatRefusesTheRobotFailsTheConnectWithItsReason() throws Exception {
+        CompletableFuture<Welcome> welcome = connecting(hardware("r9", OPTIONS), env.port());
+        env.acceptHello();
+        env.send(new Bye("no robot r9 in this world"));
+        Throwable e = assertInstanceOf(IOException.class, failureOf(welcome));
+        assertEquals("the Environment at 127.0.0.1:" + env.port() + " no robot r9 in this world", e.getMessage());
+        assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void anEnvironmentThatAnswersTheHelloWithAStepFailsTheConnect() throws Exception {
+        CompletableFuture<Welcome> welcome = connecting(hardware("r1", OPTIONS), env.port());
+        env.acceptHello();
+        env.send(new TimeStep(1, 0, FakeEnvironment.state(0)));
+        Throwable e = assertInstanceOf(IOException.class, failureOf(welcome));
+        assertEquals("the Environment at 127.0.0.1:" + env.port() + " answered an unexpected TimeStep", e.getMessage());
+    }
+
+    @Test
+    void anEnvironmentThatClosesWithoutAnsweringFailsTheConnect() throws Exception {
+        CompletableFuture<Welcome> welcome = connecting(hardware("r1", OPTIONS), env.port());
+        env.acceptHello();
+        env.closeConnection();
+        Throwable e = assertInstanceOf(IOException.class, failureOf(welcome));
+        assertEquals("the Environment at 127.0.0.1:" + env.port() + " answered nothing (the connection closed)",
+                e.getMessage());
+    }
+
+    @Test
+    void anEnvironmentThatNeverWelcomesTheRobotTimesTheConnectOut() throws Exception {
+        CompletableFuture<Welcome> welcome = connecting(hardware("r1", new HardwareOptions(300, WAIT_MS, WAIT_MS)),
+                env.port());
+        env.acceptHello();
+        assertInstanceOf(SocketTimeoutException.class, failureOf(welcome));
+        assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void connectingWhereNothingListensRetriesThenFailsAtTheConnectTimeout() throws Exception {
+        int port = FakeEnvironment.closedPort();
+        HardwareSimulator hw = hardware("r1", new HardwareOptions(600, WAIT_MS, WAIT_MS));
+        long start = System.nanoTime();
+        ConnectException e = assertThrows(ConnectException.class, () -> hw.connect("127.0.0.1", port));
+        long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+        assertTrue(e.getMessage().startsWith("no Environment at 127.0.0.1:" + port + " within 600 ms ("),
+                e.getMessage());
+        assertTrue(tookMs >= 400, "it tries again every 200 ms while that fits in 600 ms; gave up after " + tookMs);
+        assertTrue(tookMs < WAIT_MS, "gave up after " + tookMs + " ms");
+    }
+
+    @Test
+    void aRobotStartedBeforeTheEnvironmentConnectsOnceItListens() throws Exception {
+        int port = FakeEnvironment.closedPort();
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        CompletableFuture<Welcome> welcome = connecting(hw, port);
+        Thread.sleep(300); // a deliberate head start, not a wait: the robot finds nobody at first
+        try (ServerSocket late = new ServerSocket()) {
+            late.setReuseAddress(true);
+            try {
+                late.bind(new InetSocketAddress(FakeEnvironment.loopback(), port), 1);
+            } catch (BindException taken) {
+                Assumptions.abort("port " + port + " was taken meanwhile");
+            }
+            late.setSoTimeout(WAIT_MS);
+            try (Socket peer = late.accept()) {
+                peer.setSoTimeout(WAIT_MS);
+                MessageCodec codec = new MessageCodec();
+                FrameReader in = new FrameReader(peer.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
+                assertEquals("r1", assertInstanceOf(RobotHello.class, in.read()).name());
+                new FrameWriter(peer.getOutputStream(), codec).write(new Welcome("r1", 100, FakeEnvironment.state(0)));
+                assertEquals("r1", welcome.get(WAIT_MS, TimeUnit.MILLISECONDS).name());
+                hw.disconnect("the test is over");
+                assertEquals(new Bye("the test is over"), in.read());
+            }
+        }
+    }
+
+    // ---- each step's requests ----
+
+    @Test
+    void requestsMadeBetweenTwoYieldsAreSentTogetherForTheOpenStepInOrder() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        run(hw, () -> {
+            hw.request(new RobotRequest(new Command.SetVel(300)));
+            hw.request(new RobotRequest(new Command.SetRotVel(-15)));
+            hw.request(new RobotRequest(new Command.Say("first")));
+            gate.await(time -> time >= 100);
+            hw.request(new RobotRequest(new Command.Stop()));
+            yieldUntilTheEnd();
+        });
+        env.acceptHello();
+        env.welcome("r1");
+        assertEquals(List.of(new Command.SetVel(300), new Command.SetRotVel(-15), new Command.Say("first")),
+                env.step(1));
+        assertEquals(List.of(new Command.Stop()), env.step(2));
+        assertEquals(List.of(), env.step(3));
+    }
+
+    @Test
+    void aStepInWhichNothingWasRequestedIsAnsweredWithAnEmptyList() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        assertEquals(List.of(), env.step(1));
+        assertEquals(List.of(), env.step(2));
+    }
+
+    @Test
+    void aStepThatArrivesWhileTheCodeRunsIsAnsweredWithEverythingRequestedUntilItYields() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        CountDownLatch mayYield = new CountDownLatch(1);
+        run(hw, () -> {
+            hw.request(new RobotRequest(new Command.Say("before step 1 arrived")));
+            assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
+            hw.request(new RobotRequest(new Command.Say("after step 1 arrived")));
+            yieldUntilTheEnd();
+        });
+        env.acceptHello();
+        env.welcome("r1");
+        env.send(new TimeStep(1, 0, FakeEnvironment.state(0)));
+        env.assertSilentFor(200);
+        mayYield.countDown();
+        RobotRequests r = assertInstanceOf(RobotRequests.class, env.read());
+        assertEquals(1, r.step());
+        assertEquals(List.of(new Command.Say("before step 1 arrived"), new Command.Say("after step 1 arrived")),
+                r.commands());
+    }
+
+    @Test
+    void eachStepsStateIsHandedToTheRobotAsAResponse() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        env.step(2);
+        assertEquals(0, responses.poll(WAIT_MS, TimeUnit.MILLISECONDS).step());
+        RobotSensorResponse second = responses.poll(WAIT_MS, TimeUnit.MILLISECONDS);
+        assertEquals(1, second.step());
+        assertEquals(100, second.timeMs());
+        assertEquals(1, gate.step());
+        assertEquals(100, gate.timeMs());
+    }
+
+    // ---- how the link ends ----
+
+    @Test
+    void aByeFromTheEnvironmentEndsTheLinkWithItsReason() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        assertNull(hw.endReason(), "connected");
+        env.send(new Bye("the run is over"));
+        RobotCode.join(robot);
+        assertEquals("the Environment said the run is over", hw.endReason());
+        assertTrue(gate.isClosed());
+        assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void anEnvironmentThatClosesTheConnectionEndsTheLink() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        env.closeConnection();
+        RobotCode.join(robot);
+        assertEquals("the Environment closed the connection", hw.endReason());
+    }
+
+    @Test
+    void anUnexpectedMessageInTheRunEndsTheLinkNamingIt() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        env.welcome("r1");
+        RobotCode.join(robot);
+        assertEquals("the Environment sent an unexpected Welcome", hw.endReason());
+        assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void noStepWithinTheStepTimeoutEndsTheLink() throws Exception {
+        HardwareSimulator hw = hardware("r1", new HardwareOptions(WAIT_MS, 300, WAIT_MS));
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        RobotCode.join(robot);
+        assertEquals("no step arrived within 300 ms", hw.endReason());
+        assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void disconnectSaysByeWithTheReasonAndEndsTheLink() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, () -> {
+            gate.await(time -> time >= 100);
+            hw.disconnect("the program is done");
+        });
+        env.acceptHello();
+        env.welcome("r1");
+        assertEquals(List.of(), env.step(1));
+        env.send(new TimeStep(2, 100, FakeEnvironment.state(1)));
+        assertEquals(new Bye("the program is done"), env.read());
+        RobotCode.join(robot);
+        assertEquals("disconnected: the program is done", hw.endReason());
+        assertTrue(gate.isClosed());
+    }
+
+    @Test
+    void aRobotWhoseCodeHasEndedSaysByeAtTheNextStep() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, () -> { });
+        env.acceptHello();
+        env.welcome("r1");
+        RobotCode.join(robot);
+        env.send(new TimeStep(1, 0, FakeEnvironment.state(0)));
+        assertEquals(new Bye("the robot's code has ended"), env.read());
+        assertNull(env.read(), "the robot has closed its end");
+        assertEquals("the robot's code has ended", hw.endReason());
+    }
+
+    @Test
+    void aRobotKeptAliveAnswersStepsAfterItsCodeHasEndedUntilTheRunEnds() throws Exception {
+        HardwareSimulator hw = hardware("r-kept", OPTIONS);
+        Thread robot = run(hw, () -> hw.keepAlive(true));
+        env.acceptHello();
+        env.welcome("r-kept");
+        RobotCode.join(robot);
+        assertEquals(List.of(), env.step(1));
+        assertEquals(List.of(), env.step(2));
+        env.send(new Bye("done"));
+        assertNull(env.read(), "the robot has closed its end");
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (t.getName().equals("hw-keep-r-kept")) {
+                RobotCode.join(t);
+            }
+        }
+        assertEquals("the Environment said done", hw.endReason());
+    }
+
+    @Test
+    void codeThatDoesNotYieldIsWarnedAboutOncePerStep() throws Exception {
+        BlockingQueue<String> warnings = new LinkedBlockingQueue<>();
+        Handler handler = new Handler() {
+            @Override
+            public void publish(LogRecord r) {
+                if (r.getLevel() == Level.WARNING && r.getMessage().startsWith("robot r-slow's")) {
+                    warnings.add(r.getMessage());
+                }
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        Logger log = Logger.getLogger(HardwareSimulator.class.getName());
+        log.addHandler(handler);
+        log.setUseParentHandlers(false); // the warning is expected: keep it off the console
+        try {
+            HardwareSimulator hw = hardware("r-slow", new HardwareOptions(WAIT_MS, WAIT_MS, 100));
+            CountDownLatch mayYield = new CountDownLatch(1);
+            run(hw, () -> {
+                assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
+                hw.request(new RobotRequest(new Command.Say("at last")));
+                yieldUntilTheEnd();
+            });
+            env.acceptHello();
+            env.welcome("r-slow");
+            env.send(new TimeStep(1, 0, FakeEnvironment.state(0)));
+            assertEquals("robot r-slow's code has not yielded for step 1 after 100 ms; it should wait with"
+                    + " ArUtil.sleep or a blocking call", warnings.poll(WAIT_MS, TimeUnit.MILLISECONDS));
+            assertNull(warnings.poll(300, TimeUnit.MILLISECONDS), "one warning for step 1");
+            mayYield.countDown();
+            RobotRequests r = assertInstanceOf(RobotRequests.class, env.read());
+            assertEquals(1, r.step());
+            assertEquals(List.of(new Command.Say("at last")), r.commands());
+        } finally {
+            log.setUseParentHandlers(true);
+            log.removeHandler(handler);
+        }
+    }
+}
