@@ -39,7 +39,7 @@ import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
-import robosim.protocol.params.RobotParameters;
+import robosim.protocol.RobotParameters;
 
 /**
  * A robot's link to the Environment, against an Environment played by the test over loopback TCP:

@@ -2,8 +2,8 @@ package robosim.hw;
 
 import java.util.List;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /** The smallest concrete robot: AbstractRobot as it is, plus a record of its welcome. */
 final class TestRobot extends AbstractRobot {

@@ -11,8 +11,8 @@ import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
-import robosim.protocol.params.RobotParameters;
-import robosim.protocol.params.SonarUnit;
+import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarUnit;
 
 /**
  * Which sides of its cell a Pioneer standing at the cell's centre reads as open, from given laser
