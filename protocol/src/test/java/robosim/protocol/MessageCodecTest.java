@@ -216,6 +216,16 @@ class MessageCodecTest {
                 new MessageCodec(Format.JSON).decode(payload));
     }
 
+    /** Recordings of format version 1 named the snapshot message {@code frame}. */
+    @Test
+    void aSnapshotUnderItsFormerNameFrameStillDecodes() throws FrameException {
+        byte[] payload = "{\"type\":\"frame\",\"step\":3,\"timeMs\":300,\"robots\":[]}".getBytes(StandardCharsets.UTF_8);
+
+        Snapshot decoded = (Snapshot) new MessageCodec(Format.JSON).decode(payload);
+        assertEquals(3, decoded.step());
+        assertEquals(300, decoded.timeMs());
+    }
+
     @Test
     void garbagePayloadIsUndecodable() {
         byte[] garbage = {1, 2, 3, 4, 5};

@@ -4,7 +4,8 @@ import java.nio.charset.StandardCharsets;
 
 /**
  * The recording file format, version {@value #VERSION}; docs/VIEWER.md describes it for readers in
- * other languages.
+ * other languages. Version 2 names the snapshot message {@code snapshot} where version 1 named it
+ * {@code frame}; this code reads both.
  *
  * <pre>
  * header   8 bytes  magic "RoboSimR" (ASCII)
@@ -29,7 +30,7 @@ public final class RecordingFormat {
     /** The first eight bytes of every recording. */
     static final byte[] MAGIC = "RoboSimR".getBytes(StandardCharsets.US_ASCII);
     /** The format version this code writes and the newest it reads. */
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
     /** Bytes before the first record. */
     public static final int HEADER_LENGTH = 12;
     /** Header flag: the snapshots keep their sonar and laser readings. */

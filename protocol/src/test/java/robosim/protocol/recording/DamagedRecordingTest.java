@@ -134,10 +134,10 @@ class DamagedRecordingTest {
     @Test
     void aNewerVersionIsRefusedWithBothVersions() {
         byte[] bytes = Arrays.copyOf("RoboSimR".getBytes(), 12);
-        bytes[9] = 2;
+        bytes[9] = 3;
         RecordingException e = assertThrows(RecordingException.class,
                 () -> new RecordingReader(new ByteArrayInputStream(bytes), "new.rsr"));
-        assertEquals("new.rsr is a recording of format version 2: this RoboSim reads versions 1 to 1", e.getMessage());
+        assertEquals("new.rsr is a recording of format version 3: this RoboSim reads versions 1 to 2", e.getMessage());
         assertEquals(8, e.offset());
     }
 
