@@ -23,6 +23,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
+import robosim.protocol.InvalidValueException;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.TimeStep;
@@ -260,6 +261,8 @@ public final class EnvironmentServer implements AutoCloseable {
                     rules.received(c, m);
                 }
             }
+        } catch (InvalidValueException e) {
+            rules.invalid(c, e.getMessage());
         } catch (IOException e) {
             rules.closed(c, e.getMessage());
             c.close(e.getMessage());

@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
-import robosim.env.core.CommandRules;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.comms.CommsSettings;
@@ -174,16 +173,26 @@ final class SessionRules {
             drop(c.name(), null);
             return;
         }
-        for (Command cmd : req.commands()) {
-            String problem = CommandRules.problem(cmd);
-            if (problem != null) {
-                c.close("robot " + c.name() + " sent an invalid request for step " + req.step() + ": " + problem);
-                drop(c.name(), null);
-                return;
-            }
-        }
         commands.put(c.name(), req.commands());
         waiting.remove(c.name());
+    }
+
+    /**
+     * A peer sent a frame holding a value that breaks a rule of its message (see
+     * {@link robosim.protocol.InvalidValueException}). A robot is dropped, its log line naming the
+     * step open; any other peer is closed.
+     *
+     * @param rule the rule's text
+     */
+    void invalid(Connection c, String rule) {
+        String name = c.name();
+        if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
+            String when = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+                    : "for step " + openStep;
+            drop(name, "robot " + name + " sent an invalid request " + when + ": " + rule);
+        } else {
+            closed(c, "sent an invalid message: " + rule);
+        }
     }
 
     private void fromViewer(Connection c, Message m) {
