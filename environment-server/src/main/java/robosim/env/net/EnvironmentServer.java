@@ -10,7 +10,6 @@ import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -186,8 +185,7 @@ public final class EnvironmentServer implements AutoCloseable {
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
-        Map<String, List<Command>> commands = new HashMap<>();
-        rules.openStep(current, commands);
+        rules.openStep(current);
         for (Map.Entry<String, Connection> r : new ArrayList<>(rules.connectedRobots().entrySet())) {
             r.getValue().send(new TimeStep(current, sim.timeMs(), sim.state(r.getKey())));
         }
@@ -203,8 +201,7 @@ public final class EnvironmentServer implements AutoCloseable {
             }
             pump(deadline);
         }
-        rules.closeStep();
-        return commands;
+        return rules.closeStep();
     }
 
     /** Serves every ready connection once, waiting until something is ready or the deadline. */

@@ -2,6 +2,7 @@ package robosim.env.net;
 
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -67,17 +68,25 @@ final class SessionRules {
         return waiting;
     }
 
-    void openStep(long step, Map<String, List<Command>> into) {
+    /** Opens a step: from now the connected robots' requests for it are collected. */
+    void openStep(long step) {
         openStep = step;
-        commands = into;
+        commands = new HashMap<>();
         waiting.clear();
         waiting.addAll(robots.keySet());
     }
 
-    void closeStep() {
+    /**
+     * Closes the open step.
+     *
+     * @return the requests collected for it, by robot; a robot absent sent none in time
+     */
+    Map<String, List<Command>> closeStep() {
+        Map<String, List<Command>> collected = commands;
         openStep = 0;
         commands = null;
         waiting.clear();
+        return collected;
     }
 
     /** Sends a frame to every viewer, encoded once. */
