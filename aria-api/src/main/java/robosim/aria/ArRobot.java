@@ -248,11 +248,13 @@ public class ArRobot extends AbstractRobot {
      * Travels a distance from the current pose; negative is backwards.
      *
      * @param distance mm
+     * @throws IllegalArgumentException if it is not finite
      */
     public void move(double distance) {
+        Command.Move move = new Command.Move(distance);
         moveStart = getPose();
         moveDistance = distance;
-        request(new Command.Move(distance));
+        request(move);
     }
 
     /** Translational and rotational velocity to zero at once. */
@@ -262,16 +264,24 @@ public class ArRobot extends AbstractRobot {
         request(new Command.Stop());
     }
 
-    /** @param velocity mm/s, rounded and clamped to the maximum translational velocity */
+    /**
+     * @param velocity mm/s, rounded and clamped to the maximum translational velocity
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setVel(double velocity) {
+        Command.SetVel vel = new Command.SetVel(Math.rint(velocity));
         moveStart = null;
-        request(new Command.SetVel(Math.rint(velocity)));
+        request(vel);
     }
 
-    /** @param velocity deg/s, counter-clockwise positive, clamped to the maximum rotational velocity */
+    /**
+     * @param velocity deg/s, counter-clockwise positive, clamped to the maximum rotational velocity
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setRotVel(double velocity) {
+        Command.SetRotVel rotVel = new Command.SetRotVel(velocity);
         headingTarget = null;
-        request(new Command.SetRotVel(velocity));
+        request(rotVel);
     }
 
     /**
@@ -279,35 +289,53 @@ public class ArRobot extends AbstractRobot {
      *
      * @param leftVelocity  mm/s
      * @param rightVelocity mm/s
+     * @throws IllegalArgumentException if either is not finite
      */
     public void setVel2(double leftVelocity, double rightVelocity) {
+        Command.SetVel2 vel2 = new Command.SetVel2(leftVelocity, rightVelocity);
         moveStart = null;
         headingTarget = null;
-        request(new Command.SetVel2(leftVelocity, rightVelocity));
+        request(vel2);
     }
 
-    /** @param heading absolute heading to turn to, degrees */
+    /**
+     * @param heading absolute heading to turn to, degrees
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setHeading(double heading) {
+        Command.SetHeading turn = new Command.SetHeading(heading);
         headingTarget = ArMath.fixAngle(heading);
-        request(new Command.SetHeading(heading));
+        request(turn);
     }
 
-    /** @param delta degrees to turn from the current heading */
+    /**
+     * @param delta degrees to turn from the current heading
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setDeltaHeading(double delta) {
+        Command.SetDeltaHeading turn = new Command.SetDeltaHeading(delta);
         headingTarget = ArMath.fixAngle(getTh() + delta);
-        request(new Command.SetDeltaHeading(delta));
+        request(turn);
     }
 
-    /** @param velocity new translational limit, mm/s, within the parameter file's maximum */
+    /**
+     * @param velocity new translational limit, mm/s, within the parameter file's maximum
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setMaxTransVel(double velocity) {
+        Command.SetMaxTransVel limit = new Command.SetMaxTransVel(velocity);
         maxTransVel = Math.max(0, Math.min(velocity, getParameters().maxVelocity()));
-        request(new Command.SetMaxTransVel(velocity));
+        request(limit);
     }
 
-    /** @param velocity new rotational limit, deg/s, within the parameter file's maximum */
+    /**
+     * @param velocity new rotational limit, deg/s, within the parameter file's maximum
+     * @throws IllegalArgumentException if it is not finite
+     */
     public void setMaxRotVel(double velocity) {
+        Command.SetMaxRotVel limit = new Command.SetMaxRotVel(velocity);
         maxRotVel = Math.max(0, Math.min(velocity, getParameters().maxRVelocity()));
-        request(new Command.SetMaxRotVel(velocity));
+        request(limit);
     }
 
     /** @return the translational limit, mm/s */

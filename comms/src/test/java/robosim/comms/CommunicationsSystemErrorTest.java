@@ -3,6 +3,7 @@ package robosim.comms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static robosim.comms.Messages.ids;
 import static robosim.comms.Messages.toGroup;
 import static robosim.comms.Messages.toRobot;
@@ -65,12 +66,16 @@ class CommunicationsSystemErrorTest {
     }
 
     @Test
-    void messageWithoutARecipientIsRefusedNotThrown() {
-        assertEquals("message 7 names no robot to send it to", comms.submit(1, "a", toRobot(7, null)));
+    void messageWithoutARecipientCannotBeMade() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> toRobot(7, null));
+
+        assertEquals("message 7 is addressed to a robot but names none", e.getMessage());
     }
 
     @Test
-    void multicastWithoutAGroupIsRefusedNotThrown() {
-        assertEquals("message 7 names no group to send it to", comms.submit(1, "a", toGroup(7, null)));
+    void multicastWithoutAGroupCannotBeMade() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> toGroup(7, null));
+
+        assertEquals("message 7 is addressed to a group but names none", e.getMessage());
     }
 }

@@ -139,6 +139,7 @@ public abstract class AbstractRobot {
      * @param robot   the recipient's name
      * @param payload a string, or an object Jackson can write as JSON
      * @return the message's number, named in any error about it
+     * @throws IllegalArgumentException if no robot is named
      */
     public long send(String robot, Object payload) {
         return message(Command.Addressing.ROBOT, robot, payload);
@@ -150,6 +151,7 @@ public abstract class AbstractRobot {
      * @param group   the group
      * @param payload a string, or an object Jackson can write as JSON
      * @return the message's number
+     * @throws IllegalArgumentException if no group is named
      */
     public long multicast(String group, Object payload) {
         return message(Command.Addressing.GROUP, group, payload);
@@ -189,6 +191,7 @@ public abstract class AbstractRobot {
      * Says something: viewers show it, recordings keep it, the Environment logs it.
      *
      * @param text at most 1000 characters
+     * @throws IllegalArgumentException if it is null or longer
      */
     public void say(String text) {
         request(new Command.Say(text));
@@ -199,17 +202,24 @@ public abstract class AbstractRobot {
      * checks it against the object's true position and refuses a report from too far away.
      *
      * @param object what was found
+     * @throws IllegalArgumentException if it is null or blank
      */
     public void reportFound(String object) {
         request(new Command.ReportFound(object));
     }
 
-    /** @param group a group whose multicasts this robot will receive */
+    /**
+     * @param group a group whose multicasts this robot will receive
+     * @throws IllegalArgumentException if it is null or blank
+     */
     public void joinGroup(String group) {
         request(new Command.JoinGroup(group));
     }
 
-    /** @param group a group to leave */
+    /**
+     * @param group a group to leave
+     * @throws IllegalArgumentException if it is null or blank
+     */
     public void leaveGroup(String group) {
         request(new Command.LeaveGroup(group));
     }

@@ -4,7 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
+import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.junit.jupiter.api.Test;
@@ -83,25 +89,41 @@ class BadFrameTest {
 
     @Test
     void aNonFiniteVelocityClosesThatRobotBeforeItReachesTheSimulation() throws Exception {
-        misbehaveAsR2(r2 -> send(r2, new RobotRequests(2, List.of(new robosim.protocol.Command.SetVel(Double.NaN)))),
+        misbehaveAsR2(r2 -> send(r2, requestsFrame(2, Map.of("cmd", "vel", "vel", Double.NaN))),
                 "sent an invalid request for step 2: NaN was supplied for vel: it must be a finite number");
     }
 
     @Test
     void aLaserIncrementNoSickHasClosesThatRobot() throws Exception {
-        misbehaveAsR2(r2 -> send(r2, new RobotRequests(2, List.of(
-                        new robosim.protocol.Command.ConfigureLaser(true, 0.25, 8000)))),
+        misbehaveAsR2(r2 -> send(r2, requestsFrame(2, Map.of("cmd", "laser", "on", true, "increment", 0.25,
+                        "maxRange", 8000.0))),
                 "0.25 was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees");
     }
 
     @Test
     void aMessageOfAnUnknownTypeClosesThatRobot() throws Exception {
-        byte[] json = new com.fasterxml.jackson.dataformat.smile.databind.SmileMapper()
-                .writeValueAsBytes(java.util.Map.of("type", "teleport"));
-        byte[] frame = new byte[4 + json.length];
-        frame[3] = (byte) json.length;
-        System.arraycopy(json, 0, frame, 4, json.length);
-        misbehaveAsR2(r2 -> send(r2, frame), "unknown message type 'teleport'");
+        misbehaveAsR2(r2 -> send(r2, smileFrame(Map.of("type", "teleport"))), "unknown message type 'teleport'");
+    }
+
+    /**
+     * Requests as raw bytes: a command whose values break its rule cannot be made as a record, so
+     * it is written as the map a misbehaving client would encode.
+     */
+    private static byte[] requestsFrame(long step, Map<String, Object> command) {
+        Map<String, Object> requests = new LinkedHashMap<>();
+        requests.put("type", "robotRequests");
+        requests.put("step", step);
+        requests.put("commands", List.of(command));
+        return smileFrame(requests);
+    }
+
+    private static byte[] smileFrame(Object value) {
+        try {
+            byte[] payload = new SmileMapper().writeValueAsBytes(value);
+            return ByteBuffer.allocate(4 + payload.length).putInt(payload.length).put(payload).array();
+        } catch (JsonProcessingException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     @Test

@@ -4,8 +4,13 @@ import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 
 /**
- * A request of a robot: ARIA's direct motion commands, and switching its sensors. Units: mm, mm/s,
- * degrees, deg/s.
+ * A request of a robot: ARIA's direct motion commands, switching its sensors, messages to other
+ * robots, and events of the run. Units: mm, mm/s, degrees, deg/s.
+ *
+ * <p>Each command belongs to one group, named after what carries it out in the Environment:
+ * {@link Motion}, {@link SensorSetting}, {@link Messaging} and {@link RunEvent}. Each record checks
+ * its values as it is made, so a command that breaks a rule (a non-finite velocity, a laser
+ * increment no SICK has) cannot exist, on the robot's side or decoded from the wire.
  */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "cmd")
 @JsonSubTypes({
@@ -30,38 +35,105 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.SetAccel.class, name = "accel"),
 })
 public sealed interface Command {
-    /** @param vel translational velocity, mm/s */
-    record SetVel(double vel) implements Command { }
+    /** Commands carried out by the robot's drive controller. */
+    sealed interface Motion extends Command { }
 
-    /** @param rotVel rotational velocity, deg/s, positive counter-clockwise */
-    record SetRotVel(double rotVel) implements Command { }
+    /** Commands that switch or configure the robot's sensors. */
+    sealed interface SensorSetting extends Command { }
+
+    /** Commands carried out by the Environment's CommunicationsSystem. */
+    sealed interface Messaging extends Command { }
+
+    /** Events of the run, kept in the run's log, recordings and viewers. */
+    sealed interface RunEvent extends Command { }
+
+    /**
+     * @param vel translational velocity, mm/s
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetVel(double vel) implements Motion {
+        public SetVel {
+            finite("vel", vel);
+        }
+    }
+
+    /**
+     * @param rotVel rotational velocity, deg/s, positive counter-clockwise
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetRotVel(double rotVel) implements Motion {
+        public SetRotVel {
+            finite("rotVel", rotVel);
+        }
+    }
 
     /**
      * @param left  left wheel velocity, mm/s
      * @param right right wheel velocity, mm/s
+     * @throws IllegalArgumentException if either is not finite
      */
-    record SetVel2(double left, double right) implements Command { }
+    record SetVel2(double left, double right) implements Motion {
+        public SetVel2 {
+            finite("left", left);
+            finite("right", right);
+        }
+    }
 
-    /** @param distance mm to travel from the current pose; negative is backwards */
-    record Move(double distance) implements Command { }
+    /**
+     * @param distance mm to travel from the current pose; negative is backwards
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record Move(double distance) implements Motion {
+        public Move {
+            finite("distance", distance);
+        }
+    }
 
-    /** @param heading absolute heading to turn to, degrees */
-    record SetHeading(double heading) implements Command { }
+    /**
+     * @param heading absolute heading to turn to, degrees
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetHeading(double heading) implements Motion {
+        public SetHeading {
+            finite("heading", heading);
+        }
+    }
 
-    /** @param delta degrees to turn from the current heading */
-    record SetDeltaHeading(double delta) implements Command { }
+    /**
+     * @param delta degrees to turn from the current heading
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetDeltaHeading(double delta) implements Motion {
+        public SetDeltaHeading {
+            finite("delta", delta);
+        }
+    }
 
     /** Translational and rotational velocity to zero at once. */
-    record Stop() implements Command { }
+    record Stop() implements Motion { }
 
-    /** @param vel new translational limit, mm/s, within the parameter file's maximum */
-    record SetMaxTransVel(double vel) implements Command { }
+    /**
+     * @param vel new translational limit, mm/s, within the parameter file's maximum
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetMaxTransVel(double vel) implements Motion {
+        public SetMaxTransVel {
+            finite("maxVel", vel);
+        }
+    }
 
-    /** @param rotVel new rotational limit, deg/s, within the parameter file's maximum */
-    record SetMaxRotVel(double rotVel) implements Command { }
+    /**
+     * @param rotVel new rotational limit, deg/s, within the parameter file's maximum
+     * @throws IllegalArgumentException if it is not finite
+     */
+    record SetMaxRotVel(double rotVel) implements Motion {
+        public SetMaxRotVel {
+            finite("maxRotVel", rotVel);
+        }
+    }
 
     /** @param on whether the sonars fire (ARIA's {@code enableSonar} / {@code disableSonar}) */
-    record SetSonar(boolean on) implements Command { }
+    record SetSonar(boolean on) implements SensorSetting { }
 
     /**
      * Switches the robot's laser (a SICK LMS200 at the parameter file's laser pose) on or off.
@@ -69,8 +141,18 @@ public sealed interface Command {
      * @param on        whether it scans
      * @param increment degrees between readings over its 180° field: 1 (181 readings) or 0.5 (361)
      * @param maxRange  its maximum range, mm
+     * @throws IllegalArgumentException if the increment is neither, or the range is not a finite
+     *                                  number greater than 0
      */
-    record ConfigureLaser(boolean on, double increment, double maxRange) implements Command { }
+    record ConfigureLaser(boolean on, double increment, double maxRange) implements SensorSetting {
+        public ConfigureLaser {
+            if (increment != 1 && increment != 0.5) {
+                throw new IllegalArgumentException(increment
+                        + " was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees");
+            }
+            positive("laser maxRange", maxRange);
+        }
+    }
 
     /**
      * Switches the robot's heat sensor on or off.
@@ -78,8 +160,19 @@ public sealed interface Command {
      * @param on          whether it senses
      * @param fieldOfView its field of view, degrees, centred on the robot's heading
      * @param maxRange    the farthest source it senses, mm
+     * @throws IllegalArgumentException if the field of view is not above 0 and at most 360, or the
+     *                                  range is not a finite number greater than 0
      */
-    record ConfigureHeatSensor(boolean on, double fieldOfView, double maxRange) implements Command { }
+    record ConfigureHeatSensor(boolean on, double fieldOfView, double maxRange) implements SensorSetting {
+        public ConfigureHeatSensor {
+            positive("heat fieldOfView", fieldOfView);
+            positive("heat maxRange", maxRange);
+            if (fieldOfView > 360) {
+                throw new IllegalArgumentException(fieldOfView
+                        + " was supplied for heat fieldOfView: at most 360 degrees");
+            }
+        }
+    }
 
     /** How a message is addressed. */
     enum Addressing {
@@ -99,39 +192,110 @@ public sealed interface Command {
      * @param to   the robot or group; ignored for {@link Addressing#ALL}
      * @param kind {@code text}, or the name of the type the JSON body encodes
      * @param body the payload
+     * @throws IllegalArgumentException if the mode, kind or body is missing, or a message to a robot
+     *                                  or a group names none
      */
-    record SendMessage(long id, Addressing mode, String to, String kind, String body) implements Command { }
+    record SendMessage(long id, Addressing mode, String to, String kind, String body) implements Messaging {
+        public SendMessage {
+            if (mode == null || kind == null || body == null) {
+                throw new IllegalArgumentException("message " + id + " needs a mode, a kind and a body");
+            }
+            if (mode != Addressing.ALL && (to == null || to.isBlank())) {
+                throw new IllegalArgumentException("message " + id + " is addressed to a "
+                        + mode.name().toLowerCase() + " but names none");
+            }
+        }
+    }
 
-    /** @param group a group to join: multicasts to it reach this robot */
-    record JoinGroup(String group) implements Command { }
+    /**
+     * @param group a group to join: multicasts to it reach this robot
+     * @throws IllegalArgumentException if it is missing or blank
+     */
+    record JoinGroup(String group) implements Messaging {
+        public JoinGroup {
+            named(group, "a group to join needs a name");
+        }
+    }
 
-    /** @param group a group to leave */
-    record LeaveGroup(String group) implements Command { }
+    /**
+     * @param group a group to leave
+     * @throws IllegalArgumentException if it is missing or blank
+     */
+    record LeaveGroup(String group) implements Messaging {
+        public LeaveGroup {
+            named(group, "a group to leave needs a name");
+        }
+    }
 
     /**
      * The robot reports that it has found an object of the world, for the Environment to check
      * against the object's true position (GoldFinder's gold).
      *
      * @param object what was found, for example {@code gold}
+     * @throws IllegalArgumentException if it is missing or blank
      */
-    record ReportFound(String object) implements Command { }
+    record ReportFound(String object) implements RunEvent {
+        public ReportFound {
+            named(object, "a report of a find needs the object's name");
+        }
+    }
 
-    /** @param text text the robot says: shown by viewers, kept in recordings and the log */
-    record Say(String text) implements Command { }
+    /**
+     * @param text text the robot says: shown by viewers, kept in recordings and the log
+     * @throws IllegalArgumentException if it is missing or longer than 1000 characters
+     */
+    record Say(String text) implements RunEvent {
+        public Say {
+            if (text == null || text.length() > 1000) {
+                throw new IllegalArgumentException("a robot says at most 1000 characters, not "
+                        + (text == null ? "nothing" : text.length()));
+            }
+        }
+    }
 
     /**
      * Moves each wheel by a distance (the Nomad's {@code pr}): both wheels start and finish together.
      *
      * @param left  mm for the left wheel, negative backwards
      * @param right mm for the right wheel
+     * @throws IllegalArgumentException if either is not finite
      */
-    record MoveWheels(double left, double right) implements Command { }
+    record MoveWheels(double left, double right) implements Motion {
+        public MoveWheels {
+            finite("left", left);
+            finite("right", right);
+        }
+    }
 
     /**
      * Sets the accelerations, within nothing but being positive (the Nomad's {@code ac}).
      *
      * @param trans translational acceleration and deceleration, mm/s²
      * @param rot   rotational acceleration and deceleration, deg/s²
+     * @throws IllegalArgumentException if either is not a finite number greater than 0
      */
-    record SetAccel(double trans, double rot) implements Command { }
+    record SetAccel(double trans, double rot) implements Motion {
+        public SetAccel {
+            positive("trans accel", trans);
+            positive("rot accel", rot);
+        }
+    }
+
+    private static void finite(String name, double v) {
+        if (!Double.isFinite(v)) {
+            throw new IllegalArgumentException(v + " was supplied for " + name + ": it must be a finite number");
+        }
+    }
+
+    private static void positive(String name, double v) {
+        if (!(Double.isFinite(v) && v > 0)) {
+            throw new IllegalArgumentException(v + " was supplied for " + name + ": it must be greater than 0");
+        }
+    }
+
+    private static void named(String name, String rule) {
+        if (name == null || name.isBlank()) {
+            throw new IllegalArgumentException(rule);
+        }
+    }
 }

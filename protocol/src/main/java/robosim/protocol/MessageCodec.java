@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.exc.InvalidTypeIdException;
+import com.fasterxml.jackson.databind.exc.ValueInstantiationException;
 import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -47,7 +48,9 @@ public final class MessageCodec {
     /**
      * @param payload a frame's payload
      * @return the message it holds
-     * @throws FrameException if the payload is not a message of a known type
+     * @throws InvalidValueException if the payload is a message whose values break a rule of their
+     *                               record, such as a non-finite velocity
+     * @throws FrameException        if the payload is not a message of a known type
      */
     public Message decode(byte[] payload) throws FrameException {
         try {
@@ -63,6 +66,10 @@ public final class MessageCodec {
             }
             throw new FrameException("unknown message type '" + e.getTypeId() + "'");
         } catch (JsonProcessingException e) {
+            // a record's constructor refused a value: the frame was sound, the message breaks a rule
+            if (e instanceof ValueInstantiationException && e.getCause() instanceof IllegalArgumentException rule) {
+                throw new InvalidValueException(rule.getMessage());
+            }
             throw new FrameException("undecodable frame of " + payload.length + " bytes: "
                     + e.getOriginalMessage());
         } catch (IOException e) {

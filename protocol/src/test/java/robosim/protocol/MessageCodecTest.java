@@ -2,13 +2,17 @@ package robosim.protocol;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robosim.protocol.RecordAssert.assertDeepEquals;
 
+import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
@@ -113,7 +117,13 @@ class MessageCodecTest {
         Set<Class<?>> covered = Messages.robotRequests().commands().stream().map(Object::getClass)
                 .collect(Collectors.toSet());
 
-        assertEquals(Set.of(Command.class.getPermittedSubclasses()), covered);
+        assertEquals(commandRecords(), covered);
+    }
+
+    /** The records of every group of commands. */
+    private static Set<Class<?>> commandRecords() {
+        return Arrays.stream(Command.class.getPermittedSubclasses())
+                .flatMap(group -> Arrays.stream(group.getPermittedSubclasses())).collect(Collectors.toSet());
     }
 
     @Test
@@ -261,6 +271,45 @@ class MessageCodecTest {
         FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
 
         assertTrue(e.getMessage().startsWith("no message type in frame of 17 bytes: "), e.getMessage());
+    }
+
+    @Test
+    void aCommandValueThatBreaksItsRuleIsAnInvalidValueNamingTheRule() {
+        byte[] payload = ("{\"type\":\"robotRequests\",\"step\":5,\"commands\":[{\"cmd\":\"vel\",\"vel\":200},"
+                + "{\"cmd\":\"laser\",\"on\":true,\"increment\":0.25,\"maxRange\":8000}]}")
+                .getBytes(StandardCharsets.UTF_8);
+
+        InvalidValueException e = assertThrows(InvalidValueException.class,
+                () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertEquals("0.25 was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees",
+                e.getMessage());
+    }
+
+    @Test
+    void aNonFiniteVelocityOnTheWireIsAnInvalidValue() throws Exception {
+        Map<String, Object> vel = new LinkedHashMap<>();
+        vel.put("cmd", "vel");
+        vel.put("vel", Double.NaN);
+        Map<String, Object> requests = new LinkedHashMap<>();
+        requests.put("type", "robotRequests");
+        requests.put("step", 2);
+        requests.put("commands", List.of(vel));
+        byte[] payload = new SmileMapper().writeValueAsBytes(requests);
+
+        InvalidValueException e = assertThrows(InvalidValueException.class, () -> new MessageCodec().decode(payload));
+
+        assertEquals("NaN was supplied for vel: it must be a finite number", e.getMessage());
+    }
+
+    @Test
+    void aConstructorFailureThatIsNoRuleIsUndecodable() {
+        byte[] payload = "{\"type\":\"robotRequests\",\"step\":5,\"commands\":null}".getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertFalse(e instanceof InvalidValueException, e.toString());
+        assertTrue(e.getMessage().startsWith("undecodable frame of 49 bytes"), e.getMessage());
     }
 
     @Test

@@ -54,8 +54,8 @@ final class DriveController {
         this.rotDecel = params.rotDecel();
     }
 
-    /** Applies one command; the pose is the robot's pose as the command arrives. */
-    void apply(Command command, double x, double y, double th) {
+    /** Applies one motion command; the pose is the robot's pose as the command arrives. */
+    void apply(Command.Motion command, double x, double y, double th) {
         if (command instanceof Command.SetVel c) {
             trans = Trans.VEL;
             transVel = c.vel();

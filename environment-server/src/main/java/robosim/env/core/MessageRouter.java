@@ -27,8 +27,8 @@ final class MessageRouter {
         this.comms = new CommunicationsSystem(robots, settings, seed);
     }
 
-    /** @return whether the command was a messaging command, now taken */
-    boolean take(long step, String robot, Command c) {
+    /** Submits a message, or changes the robot's groups, as the command says. */
+    void take(long step, String robot, Command.Messaging c) {
         if (c instanceof Command.SendMessage m) {
             String problem = comms.submit(step, robot, m);
             if (problem != null) {
@@ -41,10 +41,7 @@ final class MessageRouter {
             comms.join(robot, j.group());
         } else if (c instanceof Command.LeaveGroup l) {
             comms.leave(robot, l.group());
-        } else {
-            return false;
         }
-        return true;
     }
 
     /** Records an error for a robot, reported with the state after this step. */

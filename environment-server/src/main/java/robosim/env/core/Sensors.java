@@ -49,12 +49,11 @@ final class Sensors {
         this.laserMaxRange = params.laserMaxRange();
     }
 
-    /** @return whether the command was a sensor command, now applied */
-    boolean apply(Command c) {
+    /** Switches or configures a sensor as the command says. */
+    void configure(Command.SensorSetting c) {
         if (c instanceof Command.SetSonar s) {
             sonarOn = s.on();
         } else if (c instanceof Command.ConfigureLaser l) {
-            // CommandRules has checked the increment and range
             laserOn = l.on();
             laserIncrement = l.increment();
             laserMaxRange = l.maxRange();
@@ -64,10 +63,7 @@ final class Sensors {
             heatFieldOfView = h.fieldOfView();
             heatMaxRange = h.maxRange();
             heat = null;
-        } else {
-            return false;
         }
-        return true;
     }
 
     /** Takes every switched-on sensor's reading at the robot's true pose. */

@@ -52,12 +52,9 @@ final class SimRobot {
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
     }
 
-    void apply(List<Command> commands) {
-        for (Command c : commands) {
-            if (!sensors.apply(c)) {
-                drive.apply(c, odometry.x(), odometry.y(), odometry.th());
-            }
-        }
+    /** Hands a motion command to the drive controller, which steers by odometry. */
+    void drive(Command.Motion command) {
+        drive.apply(command, odometry.x(), odometry.y(), odometry.th());
     }
 
     /** Advances the robot one step of {@code dt} seconds, stopping at contact. */

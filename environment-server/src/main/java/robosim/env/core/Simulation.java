@@ -127,20 +127,11 @@ public final class Simulation {
         said.clear();
         for (SimRobot r : robots.values()) {
             List<Command> cs = commands.get(r.name);
-            if (cs == null) {
-                continue;
-            }
-            List<Command> own = new ArrayList<>(cs.size());
-            for (Command c : cs) {
-                if (c instanceof Command.Say say) {
-                    said.add(new Snapshot.Said(r.name, say.text()));
-                } else if (c instanceof Command.ReportFound found) {
-                    reportFound(r, found.object(), current);
-                } else if (!messages.take(current, r.name, c)) {
-                    own.add(c);
+            if (cs != null) {
+                for (Command c : cs) {
+                    apply(r, c, current);
                 }
             }
-            r.apply(own);
         }
         double dt = world.stepMs() / 1000.0;
         for (SimRobot r : robots.values()) {
@@ -149,6 +140,27 @@ public final class Simulation {
         step = current;
         readSensors();
         messages.deliver(step, positions(), connectedRobots());
+    }
+
+    /** Hands a command to what carries out its group, in the order the robot sent it. */
+    private void apply(SimRobot r, Command c, long current) {
+        if (c instanceof Command.Motion m) {
+            r.drive(m);
+        } else if (c instanceof Command.SensorSetting s) {
+            r.sensors().configure(s);
+        } else if (c instanceof Command.Messaging m) {
+            messages.take(current, r.name, m);
+        } else if (c instanceof Command.RunEvent e) {
+            runEvent(r, e, current);
+        }
+    }
+
+    private void runEvent(SimRobot r, Command.RunEvent e, long current) {
+        if (e instanceof Command.Say say) {
+            said.add(new Snapshot.Said(r.name, say.text()));
+        } else if (e instanceof Command.ReportFound found) {
+            reportFound(r, found.object(), current);
+        }
     }
 
     /** A robot's report of a find counts when its centre is this near the gold, mm. */
@@ -228,7 +240,7 @@ public final class Simulation {
      * @param name the robot
      */
     public void halt(String name) {
-        robot(name).apply(List.of(new Command.Stop()));
+        robot(name).drive(new Command.Stop());
     }
 
     /** @return the number of steps taken */

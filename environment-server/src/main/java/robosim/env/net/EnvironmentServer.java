@@ -10,7 +10,6 @@ import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -23,6 +22,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
+import robosim.protocol.InvalidValueException;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.TimeStep;
@@ -185,8 +185,7 @@ public final class EnvironmentServer implements AutoCloseable {
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
-        Map<String, List<Command>> commands = new HashMap<>();
-        rules.openStep(current, commands);
+        rules.openStep(current);
         for (Map.Entry<String, Connection> r : new ArrayList<>(rules.connectedRobots().entrySet())) {
             r.getValue().send(new TimeStep(current, sim.timeMs(), sim.state(r.getKey())));
         }
@@ -202,8 +201,7 @@ public final class EnvironmentServer implements AutoCloseable {
             }
             pump(deadline);
         }
-        rules.closeStep();
-        return commands;
+        return rules.closeStep();
     }
 
     /** Serves every ready connection once, waiting until something is ready or the deadline. */
@@ -260,6 +258,8 @@ public final class EnvironmentServer implements AutoCloseable {
                     rules.received(c, m);
                 }
             }
+        } catch (InvalidValueException e) {
+            rules.invalid(c, e.getMessage());
         } catch (IOException e) {
             rules.closed(c, e.getMessage());
             c.close(e.getMessage());

@@ -2,13 +2,13 @@ package robosim.env.net;
 
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
-import robosim.env.core.CommandRules;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.comms.CommsSettings;
@@ -68,17 +68,25 @@ final class SessionRules {
         return waiting;
     }
 
-    void openStep(long step, Map<String, List<Command>> into) {
+    /** Opens a step: from now the connected robots' requests for it are collected. */
+    void openStep(long step) {
         openStep = step;
-        commands = into;
+        commands = new HashMap<>();
         waiting.clear();
         waiting.addAll(robots.keySet());
     }
 
-    void closeStep() {
+    /**
+     * Closes the open step.
+     *
+     * @return the requests collected for it, by robot; a robot absent sent none in time
+     */
+    Map<String, List<Command>> closeStep() {
+        Map<String, List<Command>> collected = commands;
         openStep = 0;
         commands = null;
         waiting.clear();
+        return collected;
     }
 
     /** Sends a snapshot to every viewer, encoded once. */
@@ -174,16 +182,26 @@ final class SessionRules {
             drop(c.name(), null);
             return;
         }
-        for (Command cmd : req.commands()) {
-            String problem = CommandRules.problem(cmd);
-            if (problem != null) {
-                c.close("robot " + c.name() + " sent an invalid request for step " + req.step() + ": " + problem);
-                drop(c.name(), null);
-                return;
-            }
-        }
         commands.put(c.name(), req.commands());
         waiting.remove(c.name());
+    }
+
+    /**
+     * A peer sent a frame holding a value that breaks a rule of its message (see
+     * {@link robosim.protocol.InvalidValueException}). A robot is dropped, its log line naming the
+     * step open; any other peer is closed.
+     *
+     * @param rule the rule's text
+     */
+    void invalid(Connection c, String rule) {
+        String name = c.name();
+        if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
+            String when = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+                    : "for step " + openStep;
+            drop(name, "robot " + name + " sent an invalid request " + when + ": " + rule);
+        } else {
+            closed(c, "sent an invalid message: " + rule);
+        }
     }
 
     private void fromViewer(Connection c, Message m) {

@@ -1,0 +1,347 @@
+package robosim.env.net;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import robosim.env.core.Simulation;
+import robosim.env.world.xml.WorldReader;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.InvalidValueException;
+import robosim.protocol.Message;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.Welcome;
+import robosim.protocol.WorldDescription;
+
+/**
+ * The protocol's rules for each peer, over real loopback connections: the world is
+ * {@code empty-room.xml}, two Pioneers r1 and r2.
+ */
+@Timeout(value = 30, unit = TimeUnit.SECONDS)
+class SessionRulesTest {
+    private Loopback loopback;
+    private LogLines log;
+    private Simulation sim;
+    private SessionRules rules;
+
+    @BeforeEach
+    void open() throws IOException {
+        loopback = new Loopback();
+        log = new LogLines();
+        sim = new Simulation(WorldReader.read(root().resolve("testLoadFiles/environment/empty-room.xml")));
+        rules = new SessionRules(sim);
+    }
+
+    @AfterEach
+    void close() throws IOException {
+        log.close();
+        loopback.close();
+    }
+
+    private static Path root() {
+        Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
+        while (p != null && !Files.isDirectory(p.resolve("testLoadFiles"))) {
+            p = p.getParent();
+        }
+        if (p == null) {
+            throw new IllegalStateException("cannot find testLoadFiles above " + Path.of("").toAbsolutePath());
+        }
+        return p;
+    }
+
+    private RobotHello hello(String name, String type) {
+        return new RobotHello(name, type, sim.world().robots().get(0).parameters());
+    }
+
+    /** Hands what the peer sent to the rules, as the step loop does. */
+    private void deliver(Peer peer) throws IOException {
+        for (Message m : loopback.receive(peer.connection)) {
+            rules.received(peer.connection, m);
+        }
+    }
+
+    /** A robot that has said hello and been welcomed. */
+    private Peer robot(String name) throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+        peer.send(hello(name, "pioneer"));
+        deliver(peer);
+        assertInstanceOf(Welcome.class, peer.read());
+        return peer;
+    }
+
+    private String onlyWarning() {
+        List<String> warnings = log.warnings();
+        assertEquals(1, warnings.size(), warnings.toString());
+        return warnings.get(0);
+    }
+
+    @Test
+    void aHelloWithAWorldRobotsNameIsWelcomed() throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+        peer.send(hello("r1", "pioneer"));
+        deliver(peer);
+
+        Welcome welcome = assertInstanceOf(Welcome.class, peer.read());
+        assertEquals("r1", welcome.name());
+        assertEquals(100, welcome.stepMs());
+        assertEquals(1500, welcome.state().x());
+        assertEquals(Set.of("r1"), rules.connectedRobots().keySet());
+        assertEquals(List.of("r2"), rules.missing());
+    }
+
+    @Test
+    void everyRobotOfTheWorldConnected() throws IOException {
+        robot("r1");
+        robot("r2");
+
+        assertTrue(rules.allConnected());
+    }
+
+    private void assertRefused(Peer peer, String reason) throws IOException {
+        Bye bye = assertInstanceOf(Bye.class, peer.read());
+        assertEquals("refused: " + reason, bye.reason());
+        assertTrue(peer.closedByEnvironment());
+    }
+
+    @Test
+    void anUnknownNameIsRefusedNamingTheWorld() throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+        peer.send(hello("r9", "pioneer"));
+        deliver(peer);
+
+        assertRefused(peer, "world empty-room has no robot named 'r9'");
+        assertEquals(Set.of(), rules.connectedRobots().keySet());
+    }
+
+    @Test
+    void aRobotOfAnotherTypeIsRefusedNamingBoth() throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+        peer.send(hello("r1", "scout"));
+        deliver(peer);
+
+        assertRefused(peer, "robot r1 is a pioneer in the world, not a scout");
+    }
+
+    @Test
+    void aSecondProgramWithTheSameNameIsRefused() throws IOException {
+        robot("r1");
+        Peer second = loopback.connect(Connection.Kind.ROBOT);
+
+        second.send(hello("r1", "pioneer"));
+        deliver(second);
+
+        assertRefused(second, "robot r1 is already connected");
+        assertEquals(Set.of("r1"), rules.connectedRobots().keySet());
+    }
+
+    @Test
+    void aHelloAfterTheRunStartedIsRefused() throws IOException {
+        robot("r1");
+        rules.openStep(1);
+        Peer late = loopback.connect(Connection.Kind.ROBOT);
+
+        late.send(hello("r2", "pioneer"));
+        deliver(late);
+
+        assertRefused(late, "the run has started");
+    }
+
+    @Test
+    void aRobotWhoseFirstMessageIsNoHelloIsClosed() throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+        peer.send(new RobotRequests(1, List.of()));
+        deliver(peer);
+
+        assertTrue(peer.closedByEnvironment());
+        assertTrue(onlyWarning().endsWith(": expected robotHello as its first message, got RobotRequests"),
+                onlyWarning());
+    }
+
+    @Test
+    void theRequestsForTheOpenStepAreReturnedWhenItCloses() throws IOException {
+        Peer r1 = robot("r1");
+        Peer r2 = robot("r2");
+        rules.openStep(1);
+        assertEquals(Set.of("r1", "r2"), rules.waitingFor());
+
+        r1.send(new RobotRequests(1, List.of(new Command.SetVel(200), new Command.SetRotVel(-10))));
+        deliver(r1);
+        r2.send(new RobotRequests(1, List.of()));
+        deliver(r2);
+
+        assertEquals(Set.of(), rules.waitingFor());
+        assertEquals(Map.of("r1", List.of(new Command.SetVel(200), new Command.SetRotVel(-10)), "r2", List.of()),
+                rules.closeStep());
+    }
+
+    @Test
+    void aRobotThatSentNothingIsAbsentFromTheStepsRequests() throws IOException {
+        Peer r1 = robot("r1");
+        robot("r2");
+        rules.openStep(1);
+
+        r1.send(new RobotRequests(1, List.of(new Command.Stop())));
+        deliver(r1);
+
+        assertEquals(Set.of("r2"), rules.waitingFor());
+        assertEquals(Map.of("r1", List.of(new Command.Stop())), rules.closeStep());
+        assertEquals(Set.of(), rules.waitingFor());
+    }
+
+    @Test
+    void eachStepCollectsItsOwnRequests() throws IOException {
+        Peer r1 = robot("r1");
+        rules.openStep(1);
+        r1.send(new RobotRequests(1, List.of(new Command.SetVel(200))));
+        deliver(r1);
+        rules.closeStep();
+
+        rules.openStep(2);
+
+        assertEquals(Map.of(), rules.closeStep());
+    }
+
+    @Test
+    void requestsForAStepThatIsNotOpenCloseThatRobot() throws IOException {
+        Peer r1 = robot("r1");
+        robot("r2");
+        rules.openStep(1);
+
+        r1.send(new RobotRequests(5, List.of()));
+        deliver(r1);
+
+        assertTrue(r1.closedByEnvironment());
+        assertEquals("closing robot r1: robot r1 sent requests for step 5 while step 1 is open", onlyWarning());
+        assertEquals(Set.of("r2"), rules.connectedRobots().keySet());
+        assertEquals(Set.of("r2"), rules.waitingFor());
+    }
+
+    @Test
+    void requestsBeforeAStepIsOpenCloseThatRobot() throws IOException {
+        Peer r1 = robot("r1");
+
+        r1.send(new RobotRequests(1, List.of()));
+        deliver(r1);
+
+        assertTrue(r1.closedByEnvironment());
+        assertEquals("closing robot r1: robot r1 sent requests for step 1 before step 1 was opened", onlyWarning());
+    }
+
+    @Test
+    void requestsSentTwiceForAStepCloseThatRobot() throws IOException {
+        Peer r1 = robot("r1");
+        robot("r2");
+        rules.openStep(1);
+        r1.send(new RobotRequests(1, List.of()));
+        deliver(r1);
+
+        r1.send(new RobotRequests(1, List.of()));
+        deliver(r1);
+
+        assertTrue(r1.closedByEnvironment());
+        assertEquals("closing robot r1: robot r1 sent requests for step 1 after it had already sent its requests"
+                + " for step 1", onlyWarning());
+        assertEquals(Set.of("r2"), rules.connectedRobots().keySet());
+    }
+
+    private static byte[] requestsWith(long step, Map<String, Object> command) throws IOException {
+        Map<String, Object> requests = new LinkedHashMap<>();
+        requests.put("type", "robotRequests");
+        requests.put("step", step);
+        requests.put("commands", List.of(command));
+        return new SmileMapper().writeValueAsBytes(requests);
+    }
+
+    @Test
+    void aValueThatBreaksACommandsRuleClosesThatRobotNamingTheStep() throws IOException {
+        Peer r1 = robot("r1");
+        robot("r2");
+        rules.openStep(1);
+
+        r1.sendFrame(requestsWith(1, Map.of("cmd", "vel", "vel", Double.NaN)));
+        InvalidValueException e = assertThrows(InvalidValueException.class, () -> loopback.receive(r1.connection));
+        rules.invalid(r1.connection, e.getMessage());
+
+        assertTrue(r1.closedByEnvironment());
+        assertEquals("closing robot r1: robot r1 sent an invalid request for step 1: NaN was supplied for vel:"
+                + " it must be a finite number", onlyWarning());
+        assertEquals(Set.of("r2"), rules.connectedRobots().keySet());
+        assertEquals(Set.of("r2"), rules.waitingFor());
+    }
+
+    @Test
+    void aValueThatBreaksARuleBeforeAStepIsOpenNamesTheNextStep() throws IOException {
+        Peer r1 = robot("r1");
+
+        r1.sendFrame(requestsWith(1, Map.of("cmd", "laser", "on", true, "increment", 0.25, "maxRange", 8000.0)));
+        InvalidValueException e = assertThrows(InvalidValueException.class, () -> loopback.receive(r1.connection));
+        rules.invalid(r1.connection, e.getMessage());
+
+        assertTrue(r1.closedByEnvironment());
+        assertEquals("closing robot r1: robot r1 sent an invalid request before step 1 was opened: 0.25 was"
+                + " supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees", onlyWarning());
+    }
+
+    @Test
+    void aViewersHelloIsAnsweredWithTheWorldAndTheCurrentState() throws IOException {
+        sim.step(Map.of("r1", List.of(new Command.SetVel(300))));
+        Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+
+        viewer.send(new ViewerHello("v"));
+        deliver(viewer);
+
+        WorldDescription world = assertInstanceOf(WorldDescription.class, viewer.read());
+        assertEquals("empty-room", world.name());
+        assertArrayEquals(loopback.codec.encode(sim.snapshot()), loopback.codec.encode(viewer.read()));
+        assertEquals(1, rules.viewerCount());
+    }
+
+    @Test
+    void aViewerThatSendsAnythingButCommsUpdatesIsClosed() throws IOException {
+        Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+        viewer.send(new ViewerHello("v"));
+        deliver(viewer);
+
+        viewer.send(new RobotRequests(1, List.of()));
+        deliver(viewer);
+
+        assertTrue(viewer.closedByEnvironment());
+        assertEquals("closing viewer v: sent RobotRequests; a viewer sends viewerHello once, then only commsUpdate",
+                onlyWarning());
+    }
+
+    @Test
+    void aViewerWhoseFirstMessageIsNoHelloIsClosed() throws IOException {
+        Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+
+        viewer.send(hello("r1", "pioneer"));
+        deliver(viewer);
+
+        assertTrue(viewer.closedByEnvironment());
+        assertTrue(onlyWarning().endsWith(": sent RobotHello; a viewer sends viewerHello once, then only commsUpdate"),
+                onlyWarning());
+        assertEquals(Set.of(), rules.connectedRobots().keySet());
+    }
+}
