@@ -99,6 +99,8 @@ final class DriveController {
             maxVel = Math.max(0, Math.min(c.vel(), params.maxVelocity()));
         } else if (command instanceof Command.SetMaxRotVel c) {
             maxRotVel = Math.max(0, Math.min(c.rotVel(), params.maxRVelocity()));
+        } else {
+            throw new IllegalStateException("the drive controller has no rule for " + command);
         }
     }
 

@@ -41,6 +41,8 @@ final class MessageRouter {
             comms.join(robot, j.group());
         } else if (c instanceof Command.LeaveGroup l) {
             comms.leave(robot, l.group());
+        } else {
+            throw new IllegalStateException("the message router has no rule for " + c);
         }
     }
 

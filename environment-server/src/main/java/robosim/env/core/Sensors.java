@@ -63,6 +63,8 @@ final class Sensors {
             heatFieldOfView = h.fieldOfView();
             heatMaxRange = h.maxRange();
             heat = null;
+        } else {
+            throw new IllegalStateException("the sensors have no rule for " + c);
         }
     }
 

@@ -152,6 +152,8 @@ public final class Simulation {
             messages.take(current, r.name, m);
         } else if (c instanceof Command.RunEvent e) {
             runEvent(r, e, current);
+        } else {
+            throw new IllegalStateException("no handler for the command group of " + c);
         }
     }
 
@@ -160,6 +162,8 @@ public final class Simulation {
             said.add(new Snapshot.Said(r.name, say.text()));
         } else if (e instanceof Command.ReportFound found) {
             reportFound(r, found.object(), current);
+        } else {
+            throw new IllegalStateException("no handler for the run event " + e);
         }
     }
 

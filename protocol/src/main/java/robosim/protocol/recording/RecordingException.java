@@ -18,7 +18,7 @@ public final class RecordingException extends IOException {
     /**
      * @param message      what went wrong, naming the file, offset and step
      * @param offset       byte offset of the record that could not be read, from the file's start
-     * @param lastGoodStep the step of the last frame read whole, or -1 if none was
+     * @param lastGoodStep the step of the last snapshot read whole, or -1 if none was
      * @param truncated    whether the file merely ends early (a run that ended abruptly), rather
      *                     than holding bad bytes
      * @param cause        the underlying failure, or {@code null}
@@ -35,7 +35,7 @@ public final class RecordingException extends IOException {
         return offset;
     }
 
-    /** @return the step of the last frame read whole, or -1 if none was */
+    /** @return the step of the last snapshot read whole, or -1 if none was */
     public long lastGoodStep() {
         return lastGoodStep;
     }
