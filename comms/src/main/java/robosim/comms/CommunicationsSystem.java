@@ -98,25 +98,19 @@ public final class CommunicationsSystem {
         if (from == null || !robots.contains(from)) {
             return "message " + message.id() + " is from '" + from + "', but there is no robot of that name";
         }
-        int bytes = message.body() == null ? 0 : message.body().getBytes(StandardCharsets.UTF_8).length;
+        int bytes = message.body().getBytes(StandardCharsets.UTF_8).length;
         if (bytes > settings.maxMessageBytes()) {
             return "message " + message.id() + " of " + bytes + " bytes is over the limit of "
                     + settings.maxMessageBytes() + " bytes";
         }
         switch (message.mode()) {
             case ROBOT -> {
-                if (message.to() == null) {
-                    return "message " + message.id() + " names no robot to send it to";
-                }
                 if (!robots.contains(message.to())) {
                     return "message " + message.id() + " is addressed to '" + message.to()
                             + "', but there is no robot of that name";
                 }
             }
             case GROUP -> {
-                if (message.to() == null) {
-                    return "message " + message.id() + " names no group to send it to";
-                }
                 if (!groups.containsKey(message.to())) {
                     return "message " + message.id() + " is addressed to group '" + message.to()
                             + "', which no robot has joined";

@@ -3,7 +3,6 @@ package robosim.comms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static robosim.comms.Messages.ids;
 import static robosim.comms.Messages.toGroup;
 import static robosim.comms.Messages.toRobot;
@@ -63,19 +62,5 @@ class CommunicationsSystemErrorTest {
         assertEquals("message 7 is from 'ghost', but there is no robot of that name",
                 comms.submit(1, "ghost", toRobot(7, "b")));
         assertEquals(0, comms.inFlight());
-    }
-
-    @Test
-    void messageWithoutARecipientCannotBeMade() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> toRobot(7, null));
-
-        assertEquals("message 7 is addressed to a robot but names none", e.getMessage());
-    }
-
-    @Test
-    void multicastWithoutAGroupCannotBeMade() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> toGroup(7, null));
-
-        assertEquals("message 7 is addressed to a group but names none", e.getMessage());
     }
 }

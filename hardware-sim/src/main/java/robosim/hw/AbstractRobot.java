@@ -168,7 +168,6 @@ public abstract class AbstractRobot {
     }
 
     private long message(Command.Addressing mode, String to, Object payload) {
-        long id = messageIds.incrementAndGet();
         String kind;
         String body;
         if (payload instanceof String text) {
@@ -183,8 +182,14 @@ public abstract class AbstractRobot {
                         + e.getOriginalMessage(), e);
             }
         }
-        request(new Command.SendMessage(id, mode, to, kind, body));
-        return id;
+        // a message that breaks a rule throws before it takes a number, so the numbers stay dense
+        synchronized (messageIds) {
+            long id = messageIds.get() + 1;
+            Command.SendMessage m = new Command.SendMessage(id, mode, to, kind, body);
+            messageIds.set(id);
+            request(m);
+            return id;
+        }
     }
 
     /**

@@ -6,6 +6,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
 /**
  * Every message that crosses the wire between the Environment and its robots and viewers. One
  * message is one frame (see {@link FrameReader}); the {@code type} property names the kind.
+ *
+ * <p>The type names are the wire format and do not follow renames in the code: a {@link Snapshot}
+ * is still sent as {@code frame}, its first name, so that recordings and viewers made before it was
+ * renamed keep working.
  */
 @JsonTypeInfo(use = JsonTypeInfo.Id.NAME, property = "type")
 @JsonSubTypes({
@@ -15,7 +19,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = RobotRequests.class, name = "robotRequests"),
         @JsonSubTypes.Type(value = ViewerHello.class, name = "viewerHello"),
         @JsonSubTypes.Type(value = WorldDescription.class, name = "world"),
-        @JsonSubTypes.Type(value = Snapshot.class, name = "snapshot", names = "frame"),
+        @JsonSubTypes.Type(value = Snapshot.class, name = "frame"),
         @JsonSubTypes.Type(value = Bye.class, name = "bye"),
         @JsonSubTypes.Type(value = CommsUpdate.class, name = "commsUpdate"),
 })

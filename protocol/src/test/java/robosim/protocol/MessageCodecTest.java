@@ -178,7 +178,7 @@ class MessageCodecTest {
         "RobotRequests, robotRequests",
         "ViewerHello, viewerHello",
         "WorldDescription, world",
-        "Snapshot, snapshot",
+        "Snapshot, frame",
         "Bye, bye",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
@@ -224,16 +224,6 @@ class MessageCodecTest {
 
         assertEquals(new RobotRequests(5, List.of(new Command.SetVel(200))),
                 new MessageCodec(Format.JSON).decode(payload));
-    }
-
-    /** Recordings of format version 1 named the snapshot message {@code frame}. */
-    @Test
-    void aSnapshotUnderItsFormerNameFrameStillDecodes() throws FrameException {
-        byte[] payload = "{\"type\":\"frame\",\"step\":3,\"timeMs\":300,\"robots\":[]}".getBytes(StandardCharsets.UTF_8);
-
-        Snapshot decoded = (Snapshot) new MessageCodec(Format.JSON).decode(payload);
-        assertEquals(3, decoded.step());
-        assertEquals(300, decoded.timeMs());
     }
 
     @Test

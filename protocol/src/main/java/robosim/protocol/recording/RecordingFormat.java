@@ -4,8 +4,7 @@ import java.nio.charset.StandardCharsets;
 
 /**
  * The recording file format, version {@value #VERSION}; docs/VIEWER.md describes it for readers in
- * other languages. Version 2 names the snapshot message {@code snapshot} where version 1 named it
- * {@code frame}; this code reads both.
+ * other languages.
  *
  * <pre>
  * header   8 bytes  magic "RoboSimR" (ASCII)
@@ -30,7 +29,7 @@ public final class RecordingFormat {
     /** The first eight bytes of every recording. */
     static final byte[] MAGIC = "RoboSimR".getBytes(StandardCharsets.US_ASCII);
     /** The format version this code writes and the newest it reads. */
-    public static final int VERSION = 2;
+    public static final int VERSION = 1;
     /** Bytes before the first record. */
     public static final int HEADER_LENGTH = 12;
     /** Header flag: the snapshots keep their sonar and laser readings. */
@@ -53,12 +52,12 @@ public final class RecordingFormat {
 
     /**
      * @param kind a record's kind byte
-     * @return its description for messages, such as {@code 'F' (snapshot)}
+     * @return its description for messages, such as {@code 'F' (frame)}
      */
     static String describe(int kind) {
         String what = switch (kind) {
             case WORLD -> "world";
-            case SNAPSHOT -> "snapshot";
+            case SNAPSHOT -> "frame";
             case END -> "end";
             default -> "unknown";
         };

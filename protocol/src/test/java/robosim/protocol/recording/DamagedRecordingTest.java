@@ -95,7 +95,7 @@ class DamagedRecordingTest {
         assertFalse(e.truncated());
         assertEquals(record, e.offset());
         assertEquals(5, e.lastGoodStep());
-        assertEquals("run.rsr: bad record at byte offset " + record + ", after step 5: the 'F' (snapshot) record's CRC-32",
+        assertEquals("run.rsr: bad record at byte offset " + record + ", after step 5: the 'F' (frame) record's CRC-32",
                 e.getMessage().substring(0, e.getMessage().indexOf(" is ")));
         assertTrue(e.getMessage().endsWith("every record must match its checksum; steps up to 5 are readable"),
                 e.getMessage());
@@ -117,7 +117,7 @@ class DamagedRecordingTest {
         int record = recordOffsets(bytes).get(1);
         bytes[record + 1] = 0x7f;
         RecordingException e = (RecordingException) readAsFarAsPossible(bytes)[1];
-        assertTrue(e.getMessage().contains("byte offset " + record + ", after step -1: a 'F' (snapshot) record claims "
+        assertTrue(e.getMessage().contains("byte offset " + record + ", after step -1: a 'F' (frame) record claims "
                 + (0x7f000000 | (bytes[record + 4] & 0xff) | ((bytes[record + 3] & 0xff) << 8) | ((bytes[record + 2] & 0xff) << 16))
                 + " bytes of data: a record holds 1 to 16777216; no step is readable"), e.getMessage());
     }
@@ -134,10 +134,10 @@ class DamagedRecordingTest {
     @Test
     void aNewerVersionIsRefusedWithBothVersions() {
         byte[] bytes = Arrays.copyOf("RoboSimR".getBytes(), 12);
-        bytes[9] = 3;
+        bytes[9] = 2;
         RecordingException e = assertThrows(RecordingException.class,
                 () -> new RecordingReader(new ByteArrayInputStream(bytes), "new.rsr"));
-        assertEquals("new.rsr is a recording of format version 3: this RoboSim reads versions 1 to 2", e.getMessage());
+        assertEquals("new.rsr is a recording of format version 2: this RoboSim reads versions 1 to 1", e.getMessage());
         assertEquals(8, e.offset());
     }
 

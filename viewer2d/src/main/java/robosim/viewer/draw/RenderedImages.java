@@ -65,7 +65,11 @@ public final class RenderedImages implements SnapshotListener {
 
     @Override
     public void world(WorldDescription newWorld) throws IOException {
-        ViewTransform.fit(newWorld, 1);
+        try {
+            painter.checkDrawable(newWorld);
+        } catch (IllegalArgumentException e) {
+            throw new IOException("the world cannot be drawn: " + e.getMessage(), e);
+        }
         flush();
         last = null;
         if (trails != null) {

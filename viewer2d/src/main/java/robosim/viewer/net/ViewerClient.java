@@ -178,7 +178,14 @@ public final class ViewerClient {
             LOG.info(() -> "world '" + description.name() + "' from " + options.peer() + ": " + description.width()
                     + " x " + description.height() + " mm, " + description.obstacles().size() + " obstacles, "
                     + description.robots().size() + " robots");
-            tell(l -> l.world(description));
+            for (SnapshotListener l : listeners) {
+                try {
+                    l.world(description);
+                } catch (IOException | RuntimeException e) {
+                    throw fail("sent world '" + description.name() + "', which a listener cannot take: "
+                            + e.getMessage(), e);
+                }
+            }
         }
 
         ViewerSummary summary(String reason) {

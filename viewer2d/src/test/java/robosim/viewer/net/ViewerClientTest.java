@@ -130,6 +130,20 @@ class ViewerClientTest {
     }
 
     @Test
+    void aWorldThatCannotBeDrawnStopsTheRunNamingIt() throws Exception {
+        try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
+            out.write(new WorldDescription("flat", 5000, 0, 100, List.of(), List.of()));
+            out.write(new Bye("done"));
+        })) {
+            ViewerException e = assertThrows(ViewerException.class,
+                    () -> new ViewerClient(options(env.port()), drawing(new PngImageWriter(tmp), 1)).run());
+            assertEquals("the environment at 127.0.0.1:" + env.port() + " sent world 'flat', which a listener cannot"
+                    + " take: the world cannot be drawn: world 'flat' has height 0.0 mm: height must be greater"
+                    + " than 0 and finite", e.getMessage());
+        }
+    }
+
+    @Test
     void hugeLengthPrefixFailsNamingThePeerInsteadOfHanging() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             socket.getOutputStream().write(new byte[] {(byte) 0xff, (byte) 0xff, (byte) 0xff, (byte) 0xff, 1, 2, 3});
