@@ -25,14 +25,11 @@ public final class ArHeatSensor {
     /**
      * @param fieldOfView degrees, from above 0 to 360
      * @param maxRange    mm, greater than 0
+     * @throws IllegalArgumentException if either breaks the heat sensor's rules (those of
+     *                                  {@link Command.ConfigureHeatSensor})
      */
     public ArHeatSensor(double fieldOfView, double maxRange) {
-        if (!(fieldOfView > 0 && fieldOfView <= 360)) {
-            throw new IllegalArgumentException(fieldOfView + " was supplied for fieldOfView: it must be above 0 and at most 360");
-        }
-        if (!(maxRange > 0) || !Double.isFinite(maxRange)) {
-            throw new IllegalArgumentException(maxRange + " was supplied for maxRange: it must be greater than 0");
-        }
+        new Command.ConfigureHeatSensor(true, fieldOfView, maxRange);
         this.fieldOfView = fieldOfView;
         this.maxRange = maxRange;
     }

@@ -90,10 +90,7 @@ public class ArSick extends ArRangeDevice {
      * @param degrees 1 (181 readings a scan) or 0.5 (361)
      */
     public void setIncrement(double degrees) {
-        if (degrees != 1.0 && degrees != 0.5) {
-            throw new IllegalArgumentException(degrees
-                    + " was supplied for increment: a SICK LMS200 scans at 1 or 0.5 degrees");
-        }
+        Command.ConfigureLaser.requireIncrement("increment", degrees);
         increment = degrees;
         reconfigure();
     }

@@ -72,11 +72,11 @@ class EndToEndTest {
     private List<Snapshot> wanderRun(Path logs) throws Exception {
         Files.createDirectories(logs);
         try (LocalEnvironment h = new LocalEnvironment("small-maze.xml", ServerOptions.loopback().withMaxSteps(150).withWaitViewers(1))) {
-            var snapshots = h.collectSnapshots();
+            SnapshotCollector viewer = new SnapshotCollector(h.viewerPort());
             h.robotJvm("robosim.examples.wander.Wander", "r1", logs.resolve("r1.log"));
             h.robotJvm("robosim.examples.wander.Wander", "r2", logs.resolve("r2.log"));
             h.await();
-            return snapshots.get(60, TimeUnit.SECONDS);
+            return viewer.snapshots();
         }
     }
 }

@@ -1,6 +1,6 @@
 package robosim.it;
 
-import robosim.cli.MazeCommand;
+import robosim.cli.Main;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -40,7 +40,10 @@ class GoldFinderTest {
     record Run(RunReport report, WorldDescription world, List<Snapshot> snapshots) { }
 
     Run run(long seed) throws Exception {
-        Path file = MazeCommand.write(8, 8, 1500, seed, 8, dir.resolve("maze-" + seed + ".xml"));
+        Path file = dir.resolve("maze-" + seed + ".xml");
+        int exit = Main.commandLine().execute("maze", "--cells", "8", "8", "--cell-size", "1500",
+                "--seed", Long.toString(seed), "--robots", "8", "--out", file.toString());
+        assertEquals(0, exit, "robosim maze wrote " + file);
         World world = WorldReader.read(file).withFirstRobots(ROBOTS);
         try (LocalEnvironment env = new LocalEnvironment(world, seed,
                 ServerOptions.loopback().withMaxSteps(STEP_LIMIT).withWaitViewers(1))) {

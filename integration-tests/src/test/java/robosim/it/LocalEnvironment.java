@@ -1,6 +1,5 @@
 package robosim.it;
 
-import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -14,13 +13,6 @@ import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
-import robosim.protocol.Bye;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
-import robosim.protocol.Message;
-import robosim.protocol.MessageCodec;
-import robosim.protocol.Snapshot;
-import robosim.protocol.ViewerHello;
 import robosim.protocol.recording.SnapshotListener;
 
 /**
@@ -106,29 +98,6 @@ final class LocalEnvironment implements AutoCloseable {
     /** @return the run's report, within the given seconds */
     RunReport await(long seconds) throws Exception {
         return report.get(seconds, TimeUnit.SECONDS);
-    }
-
-    /** Attaches a viewer that keeps every snapshot, on a thread of its own. */
-    CompletableFuture<List<Snapshot>> collectSnapshots() throws Exception {
-        Socket s = new Socket("127.0.0.1", server.viewerPort());
-        s.setSoTimeout(60_000);
-        MessageCodec codec = new MessageCodec();
-        new FrameWriter(s.getOutputStream(), codec).write(new ViewerHello("test"));
-        return CompletableFuture.supplyAsync(() -> {
-            List<Snapshot> snapshots = new ArrayList<>();
-            try (s) {
-                FrameReader r = new FrameReader(s.getInputStream(), codec, 1 << 24);
-                Message m;
-                while ((m = r.read()) != null && !(m instanceof Bye)) {
-                    if (m instanceof Snapshot snapshot) {
-                        snapshots.add(snapshot);
-                    }
-                }
-            } catch (Exception e) {
-                throw new IllegalStateException(e);
-            }
-            return snapshots;
-        });
     }
 
     @Override

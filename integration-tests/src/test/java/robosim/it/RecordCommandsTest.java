@@ -54,16 +54,16 @@ class RecordCommandsTest {
         throw new AssertionError("the Environment did not say its ports:\n" + out);
     }
 
-    private static List<byte[]> frames(Path recording) throws Exception {
+    private static List<byte[]> snapshotRecords(Path recording) throws Exception {
         MessageCodec codec = new MessageCodec();
-        List<byte[]> frames = new ArrayList<>();
+        List<byte[]> encoded = new ArrayList<>();
         try (RecordingReader reader = RecordingReader.open(recording)) {
             Snapshot f;
             while ((f = reader.next()) != null) {
-                frames.add(codec.encode(f));
+                encoded.add(codec.encode(f));
             }
         }
-        return frames;
+        return encoded;
     }
 
     @Test
@@ -97,8 +97,8 @@ class RecordCommandsTest {
         assertTrue(viewerOut.toString().contains("3 PNG frames written"), viewerOut.toString());
         assertTrue(viewerOut.toString().contains("Recording: " + viewerFile.toAbsolutePath() + ", 41 steps in "),
                 viewerOut.toString());
-        List<byte[]> fromEnv = frames(envFile);
-        List<byte[]> fromViewer = frames(viewerFile);
+        List<byte[]> fromEnv = snapshotRecords(envFile);
+        List<byte[]> fromViewer = snapshotRecords(viewerFile);
         assertEquals(41, fromEnv.size());
         assertEquals(41, fromViewer.size());
         for (int step = 1; step <= 40; step++) {

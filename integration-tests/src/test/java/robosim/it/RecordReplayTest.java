@@ -49,7 +49,7 @@ class RecordReplayTest {
     }
 
     @Test
-    void replayedFramesEqualTheLiveViewersPixelForPixel() throws Exception {
+    void replayedImagesEqualTheLiveViewersPixelForPixel() throws Exception {
         Path live = dir.resolve("live");
         Path envRecording = dir.resolve("env.rsr");
         Path viewerRecording = dir.resolve("viewer.rsr");

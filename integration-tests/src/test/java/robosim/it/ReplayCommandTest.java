@@ -85,7 +85,7 @@ class ReplayCommandTest {
     }
 
     @Test
-    void pngFramesOfARangeEveryKSteps() throws Exception {
+    void pngImagesOfARangeEveryKSteps() throws Exception {
         Path png = dir.resolve("png");
         Run r = execute("replay", recording.toString(), "--png-dir", png.toString(), "--from", "10", "--to", "35",
                 "--every", "10", "--width", "300");
@@ -96,7 +96,7 @@ class ReplayCommandTest {
     }
 
     @Test
-    void threeDimensionalFramesWithTheCameraAndLightGiven() throws Exception {
+    void threeDimensionalImagesWithTheCameraAndLightGiven() throws Exception {
         Path png = dir.resolve("png3d");
         Run r = execute("replay", recording.toString(), "--png-dir", png.toString(), "--from", "60", "--3d",
                 "--azimuth", "-60", "--elevation", "35", "--zoom", "1.5", "--light", "0,45", "--trails");

@@ -10,7 +10,7 @@ import robosim.params.RobotParameterFiles;
 
 /**
  * {@code robosim demo}: GoldFinder with 3 Pioneers, each in a JVM of its own, on the medium maze;
- * frames written as PNG, the summary printed.
+ * images written as PNG, the summary printed.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "Run the demo: GoldFinder with 3 robots, each in its own JVM, on the medium maze; frames written as PNG.")

@@ -10,7 +10,7 @@ import robosim.viewer.view3d.SceneOptions;
 import robosim.viewer.view3d.SolidRenderer;
 import robosim.viewer.window.ViewState;
 
-/** How frames are drawn, shared by {@code viewer} and {@code replay}: 2D or 3D, and what to show. */
+/** How images are drawn, shared by {@code viewer} and {@code replay}: 2D or 3D, and what to show. */
 final class DrawingOptions {
     @Option(names = "--width", defaultValue = "800", paramLabel = "PX", description = "frame width in pixels; default ${DEFAULT-VALUE}")
     int width;
@@ -70,7 +70,7 @@ final class DrawingOptions {
         scene();
     }
 
-    /** @return the painter for PNG and GIF frames; throws IllegalArgumentException naming a bad value */
+    /** @return the painter for PNG and GIF images; throws IllegalArgumentException naming a bad value */
     SnapshotPainter painter() {
         return threeD ? new SolidRenderer(scene()) : SnapshotPainter.flat(new WorldRenderer(), render());
     }

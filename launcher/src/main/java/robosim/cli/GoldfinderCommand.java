@@ -29,7 +29,7 @@ import robosim.viewer.net.ViewerSummary;
 
 /**
  * {@code robosim goldfinder}: the Environment on a maze, a team of Gold robots (threads of one JVM,
- * or a JVM each) and a viewer writing frames; prints who found the gold.
+ * or a JVM each) and a viewer writing PNG images; prints who found the gold.
  */
 @Command(name = "goldfinder", mixinStandardHelpOptions = true,
         description = "Run GoldFinder: a team of Pioneers searches WORLD for the gold. Exit 0 when found, 3 when the step limit ran out.")

@@ -16,7 +16,7 @@ import robosim.params.RobotParameterFiles;
 /** {@code robosim maze}: writes a perfect maze as a world file for GoldFinder. */
 @Command(name = "maze", mixinStandardHelpOptions = true,
         description = "Write a perfect maze as a world: walls, the robots' start cells near the lower left, gold in the farthest cell.")
-public final class MazeCommand implements Callable<Integer> {
+final class MazeCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
@@ -49,7 +49,7 @@ public final class MazeCommand implements Callable<Integer> {
     }
 
     /** Writes a maze world and reads it back, so a file that breaks a world rule is never left. */
-    public static Path write(int w, int h, int cellSize, long seed, int robots, Path out) throws java.io.IOException {
+    static Path write(int w, int h, int cellSize, long seed, int robots, Path out) throws java.io.IOException {
         Path params = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Path dir = out.toAbsolutePath().getParent();
         String rel = dir.relativize(params).toString().replace('\\', '/');

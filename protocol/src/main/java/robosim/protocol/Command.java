@@ -146,11 +146,22 @@ public sealed interface Command {
      */
     record ConfigureLaser(boolean on, double increment, double maxRange) implements SensorSetting {
         public ConfigureLaser {
-            if (increment != 1 && increment != 0.5) {
-                throw new IllegalArgumentException(increment
-                        + " was supplied for the laser increment: a SICK LMS200 scans at 1 or 0.5 degrees");
-            }
+            requireIncrement("the laser increment", increment);
             positive("laser maxRange", maxRange);
+        }
+
+        /**
+         * The increments a SICK LMS200 has, as one rule for every place that takes one.
+         *
+         * @param name      what the value is called where it was given
+         * @param increment degrees between readings
+         * @throws IllegalArgumentException if it is neither 1 nor 0.5
+         */
+        public static void requireIncrement(String name, double increment) {
+            if (increment != 1 && increment != 0.5) {
+                throw new IllegalArgumentException(increment + " was supplied for " + name
+                        + ": a SICK LMS200 scans at 1 or 0.5 degrees");
+            }
         }
     }
 

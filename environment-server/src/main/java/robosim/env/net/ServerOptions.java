@@ -1,5 +1,7 @@
 package robosim.env.net;
 
+import robosim.protocol.FrameReader;
+
 /**
  * How an {@link EnvironmentServer} runs.
  *
@@ -33,7 +35,7 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
      * @return the options
      */
     public static ServerOptions loopback() {
-        return new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 60_000, 0, robosim.protocol.FrameReader.DEFAULT_MAX_FRAME);
+        return new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 60_000, 0, FrameReader.DEFAULT_MAX_FRAME);
     }
 
     /** @param steps the step limit @return a copy with it */

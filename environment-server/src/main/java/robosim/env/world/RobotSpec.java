@@ -33,7 +33,7 @@ public record RobotSpec(String name, String type, double x, double y, double th,
      * @param p the robot's parameters
      * @return its body
      */
-    public static BodyShape bodyOf(robosim.protocol.RobotParameters p) {
+    public static BodyShape bodyOf(RobotParameters p) {
         if (p.isRound()) {
             return BodyShape.disc(p.robotRadius(), ROUND_SIDES);
         }

@@ -48,7 +48,7 @@ class MessagingTest {
     }
 
     @Test
-    void theFrameListsWhatWasSentAndSaid() {
+    void theSnapshotListsWhatWasSentAndSaid() {
         Simulation sim = twoRobots(CommsSettings.DEFAULT, null);
         sim.step(Map.of("a", List.of(to("b", "hi"), new Command.Say("on my way"))));
         assertEquals(1, sim.snapshot().messages().size());

@@ -78,7 +78,7 @@ class RecordingRoundTripTest {
     }
 
     @Test
-    void aStepCostsFarLessThanItsWireSnapshot() throws IOException {
+    void aStepCostsFarLessThanItsWireFrame() throws IOException {
         byte[] recording = Runs.record(true, true);
         int wire = 0;
         for (Snapshot f : Runs.snapshots()) {
@@ -86,7 +86,7 @@ class RecordingRoundTripTest {
         }
         int world = RecordingFormat.OVERHEAD + 400;
         assertTrue(recording.length - world < wire / 2,
-                "recording of " + recording.length + " bytes vs " + wire + " bytes of wire snapshots");
+                "recording of " + recording.length + " bytes vs " + wire + " bytes of wire frames");
     }
 
     @Test

@@ -9,11 +9,11 @@ import java.io.IOException;
 @FunctionalInterface
 public interface ImageSink {
     /**
-     * Takes one rendered image. The image is the sink's to keep; the client does not reuse it.
+     * Takes one rendered image. The image is the sink's to keep; the caller does not reuse it.
      *
      * @param step  the simulation step the image shows
      * @param image the rendered image
-     * @throws IOException if the sink cannot store the image; the client then stops
+     * @throws IOException if the sink cannot store the image; the run being drawn then stops
      */
     void accept(long step, BufferedImage image) throws IOException;
 }

@@ -1,7 +1,7 @@
 package robosim.viewer.draw;
 
 /**
- * How a frame is drawn. The image height follows from the width and the world's aspect ratio.
+ * How an image is drawn. The image height follows from the width and the world's aspect ratio.
  * Heat sources are always drawn: they are part of the static world.
  *
  * @param width        image width in pixels, from 1 to {@value #MAX_WIDTH}
@@ -115,7 +115,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
     }
 
     /**
-     * @param show whether to write the step and time on the frame
+     * @param show whether to write the step and time on the image
      * @return these options with the caption shown or hidden
      */
     public RenderOptions withCaption(boolean show) {

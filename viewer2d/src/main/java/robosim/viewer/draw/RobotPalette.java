@@ -4,7 +4,7 @@ import java.awt.Color;
 
 /**
  * The colours robots are drawn in: one per robot, by its index in the world, so that a robot keeps
- * its colour from frame to frame and across the 2D, 3D and replay views.
+ * its colour from image to image and across the 2D, 3D and replay views.
  */
 public final class RobotPalette {
     /** Fill for a robot whose program is not connected. */

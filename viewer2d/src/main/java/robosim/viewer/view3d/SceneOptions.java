@@ -3,7 +3,7 @@ package robosim.viewer.view3d;
 import robosim.viewer.draw.RenderOptions;
 
 /**
- * How a 3D frame is drawn.
+ * How a 3D image is drawn.
  *
  * @param width       image width in pixels, 1 to {@link RenderOptions#MAX_WIDTH}; the height
  *                    follows from the camera (see {@link Projection#heightFor})

@@ -4,7 +4,7 @@
  * drawn back to front (the painter's algorithm) in plain Java2D.
  *
  * <p>{@link robosim.viewer.view3d.SolidRenderer} is a {@link robosim.viewer.draw.SnapshotPainter}, so PNG
- * snapshots, GIFs and the window draw the 3D view through it just as they draw the 2D view through
+ * images, GIFs and the window draw the 3D view through it just as they draw the 2D view through
  * the {@link robosim.viewer.draw.WorldRenderer}. Pure drawing: no I/O.
  */
 package robosim.viewer.view3d;

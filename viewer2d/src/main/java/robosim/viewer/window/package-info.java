@@ -11,6 +11,6 @@
  * <p>The state behind them ({@link robosim.viewer.window.ViewModel},
  * {@link robosim.viewer.window.ViewState}) is plain Java, and every panel paints off-screen, so
  * the window is tested headless. All of it runs on the Swing event thread;
- * {@link robosim.viewer.window.LiveFeed} carries frames there from the network thread.
+ * {@link robosim.viewer.window.LiveFeed} carries snapshots there from the network thread.
  */
 package robosim.viewer.window;

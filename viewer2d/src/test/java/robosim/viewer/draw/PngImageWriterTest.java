@@ -36,7 +36,7 @@ class PngImageWriterTest {
     }
 
     @Test
-    void writesARenderedFrameAtItsSize() throws IOException {
+    void writesARenderedImageAtItsSize() throws IOException {
         PngImageWriter writer = new PngImageWriter(tmp);
         writer.accept(120, new WorldRenderer().render(Fixtures.world(),
                 Fixtures.snapshot(120, Fixtures.robotAtRest()), RenderOptions.of(Fixtures.WIDTH_PX)));

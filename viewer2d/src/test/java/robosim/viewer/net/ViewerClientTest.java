@@ -47,7 +47,7 @@ class ViewerClientTest {
         return List.of(RenderedImages.flat(sink, new RenderOptions(400, true, true), every));
     }
 
-    private static void worldThenTenFrames(FrameWriter out) throws IOException {
+    private static void worldThenTenSnapshots(FrameWriter out) throws IOException {
         out.write(Fixtures.world());
         for (int step = 1; step <= 10; step++) {
             out.write(Fixtures.snapshot(step, Fixtures.robot(1000 + 100 * step, 1500, 0, false, true)));
@@ -60,11 +60,11 @@ class ViewerClientTest {
         }
     }
 
-    @ParameterizedTest(name = "every {0} writes {1} frames")
+    @ParameterizedTest(name = "every {0} writes {1} images")
     @CsvSource({"1, 10", "3, 4", "5, 2", "20, 1"})
-    void writesEveryKthFrameAndAlwaysTheLast(int every, int expected) throws Exception {
+    void writesEveryKthImageAndAlwaysTheLast(int every, int expected) throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
-            worldThenTenFrames(out);
+            worldThenTenSnapshots(out);
             out.write(new Bye("done"));
         })) {
             PngImageWriter png = new PngImageWriter(tmp.resolve("frames"));
@@ -73,16 +73,16 @@ class ViewerClientTest {
             assertEquals(new ViewerSummary("fixture", 10, 10, "done"), summary);
             assertEquals(expected, png.imagesWritten());
             assertEquals(expected, files(png.directory()).size());
-            assertTrue(Files.exists(png.fileFor(10)), "the last frame is always written");
+            assertTrue(Files.exists(png.fileFor(10)), "the last image is always written");
             assertEquals(new ViewerHello("test-viewer"), env.hello());
             assertNull(env.failure());
         }
     }
 
     @Test
-    void framesWrittenAtThreeAreTheMultiplesOfThreeAndTheLast() throws Exception {
+    void imagesWrittenAtThreeAreTheMultiplesOfThreeAndTheLast() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
-            worldThenTenFrames(out);
+            worldThenTenSnapshots(out);
             out.write(new Bye("done"));
         })) {
             PngImageWriter png = new PngImageWriter(tmp);
@@ -96,9 +96,9 @@ class ViewerClientTest {
     }
 
     @Test
-    void endOfStreamWithoutByeEndsTheRunAndKeepsTheLastFrame() throws Exception {
+    void endOfStreamWithoutByeEndsTheRunAndKeepsTheLastImage() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
-            worldThenTenFrames(out);
+            worldThenTenSnapshots(out);
             socket.shutdownOutput();
         })) {
             PngImageWriter png = new PngImageWriter(tmp);
@@ -109,7 +109,7 @@ class ViewerClientTest {
     }
 
     @Test
-    void reloadedWorldKeepsTheOldWorldsLastFrame() throws Exception {
+    void reloadedWorldKeepsTheOldWorldsLastImage() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
             out.write(Fixtures.world());
             for (int step = 1; step <= 3; step++) {
@@ -215,7 +215,7 @@ class ViewerClientTest {
     @Test
     void failingSinkStopsTheRunNamingTheStep() throws Exception {
         try (FakeEnvironment env = new FakeEnvironment((out, socket) -> {
-            worldThenTenFrames(out);
+            worldThenTenSnapshots(out);
             out.write(new Bye("done"));
         })) {
             ImageSink full = (step, image) -> {

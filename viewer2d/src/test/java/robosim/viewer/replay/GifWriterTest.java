@@ -30,7 +30,7 @@ class GifWriterTest {
     }
 
     @Test
-    void threeFramesLoopForEverAtTheStepLength() throws IOException {
+    void threeImagesLoopForEverAtTheStepLength() throws IOException {
         Path file = dir.resolve("anim/run.gif");
         try (GifWriter gif = new GifWriter(file, 100)) {
             gif.accept(0, filled(Color.RED));

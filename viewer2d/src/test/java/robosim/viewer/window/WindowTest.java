@@ -19,7 +19,7 @@ import robosim.viewer.view3d.SolidRenderer;
 
 /**
  * The live window, painted off-screen (no display needed): its screenshot shows the world, its
- * drawing equals the PNG snapshots', and its controls change what it shows.
+ * drawing equals the PNG images', and its controls change what it shows.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WindowTest {
@@ -60,7 +60,7 @@ class WindowTest {
     }
 
     @Test
-    void theViewDrawsThePixelsOfThePngFrame() throws Exception {
+    void theViewDrawsThePixelsOfThePngImage() throws Exception {
         ViewModel model = new ViewModel();
         BufferedImage window = Scenes.onEdt(() -> {
             ViewerPane pane = livePane(model);
@@ -74,7 +74,7 @@ class WindowTest {
         });
         BufferedImage png = new WorldRenderer().render(Scenes.world(), Scenes.snapshot(7),
                 RenderOptions.of(800).withTrails(true), model.trails());
-        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG snapshot");
+        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG image");
     }
 
     @Test
