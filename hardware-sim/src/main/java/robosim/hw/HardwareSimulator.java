@@ -136,9 +136,7 @@ public final class HardwareSimulator {
     /** Starts the robot's hardware thread; call after {@link #connect}. */
     public void start() {
         WATCHED.add(this);
-        Thread thread = new Thread(this::run, "hw-" + hello.name());
-        thread.setDaemon(true);
-        thread.start();
+        RobotThreads.unstarted("hw-" + hello.name(), this::run).start();
     }
 
     /** @param request a request of the robot's code, sent with the current step's requests */

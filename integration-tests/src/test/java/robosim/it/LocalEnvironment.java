@@ -14,6 +14,7 @@ import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.recording.SnapshotListener;
+import robosim.cli.Background;
 
 /**
  * The one way the end-to-end tests start an Environment: in this JVM, on loopback and free ports,
@@ -50,7 +51,7 @@ final class LocalEnvironment implements AutoCloseable {
         for (SnapshotListener l : listeners) {
             server.addSnapshotListener(l);
         }
-        report = CompletableFuture.supplyAsync(() -> {
+        report = Background.supply("environment", () -> {
             try {
                 return server.run();
             } catch (InterruptedException e) {

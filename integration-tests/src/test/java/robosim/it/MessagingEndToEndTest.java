@@ -11,6 +11,7 @@ import robosim.aria.ArRobot;
 import robosim.aria.ArUtil;
 import robosim.env.net.ServerOptions;
 import robosim.hw.RobotMessage;
+import robosim.cli.Background;
 
 /** Robot-side messaging over TCP: objects and text, a blocking receive in simulated time, errors. */
 @Timeout(value = 1, unit = TimeUnit.MINUTES)
@@ -24,7 +25,7 @@ class MessagingEndToEndTest {
     @Test
     void robotsTalkThroughTheEnvironment() throws Exception {
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(40))) {
-            CompletableFuture<Void> sender = CompletableFuture.runAsync(() -> {
+            CompletableFuture<Void> sender = Background.run("robot r1", () -> {
                 ArRobot r1 = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 r1.blockingConnect();
                 ArUtil.sleep(500);
@@ -32,7 +33,7 @@ class MessagingEndToEndTest {
                 r1.broadcast("after the waypoint");
                 r1.waitForRunExit();
             });
-            CompletableFuture<Seen> receiver = CompletableFuture.supplyAsync(() -> {
+            CompletableFuture<Seen> receiver = Background.supply("robot r2", () -> {
                 ArRobot r2 = new ArRobot("r2", "127.0.0.1", h.server.robotPort(), "p3dx");
                 r2.blockingConnect();
                 long before = r2.getStep();

@@ -23,6 +23,7 @@ import robosim.examples.wander.Wander;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.recording.RecordingReader;
+import robosim.cli.Background;
 
 /**
  * {@code robosim env --record} and {@code robosim viewer --record}, run as a user runs them (in
@@ -39,7 +40,7 @@ class RecordCommandsTest {
         CommandLine cl = Main.commandLine();
         cl.setOut(new PrintWriter(out, true));
         cl.setErr(new PrintWriter(err, true));
-        return CompletableFuture.supplyAsync(() -> cl.execute(args));
+        return Background.supply("robosim " + args[0], () -> cl.execute(args));
     }
 
     private static Matcher awaitPorts(StringWriter out) throws InterruptedException {

@@ -16,6 +16,7 @@ import robosim.viewer.draw.RenderOptions;
 import robosim.viewer.net.ViewerClient;
 import robosim.viewer.net.ViewerOptions;
 import robosim.viewer.net.ViewerSummary;
+import robosim.cli.Background;
 
 /**
  * A deterministic run for the recording tests, all in this JVM: the Environment on the small maze
@@ -42,7 +43,7 @@ final class RecordedRun {
         try (LocalEnvironment env = new LocalEnvironment(LocalEnvironment.shipped("small-maze.xml"), 1, options,
                 RecordingWriter.create(recording, true))) {
             CompletableFuture<ViewerSummary> live = viewer.isEmpty() ? CompletableFuture.completedFuture(null)
-                    : CompletableFuture.supplyAsync(() -> {
+                    : Background.supply("live viewer", () -> {
                         try {
                             ViewerOptions o = ViewerOptions.of("127.0.0.1", env.viewerPort()).withName("live")
                                     .withReadTimeout(Duration.ofSeconds(60));

@@ -21,6 +21,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
+import robosim.cli.Background;
 
 /** The whole Pioneer interface over TCP: range devices, the laser, heat, backing into a wall, noise. */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)
@@ -43,7 +44,7 @@ class SensorsEndToEndTest {
                 </world>
                 """.formatted(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 7, ServerOptions.loopback())) {
-            CompletableFuture<Seen> seen = CompletableFuture.supplyAsync(() -> drive(env.robotPort()));
+            CompletableFuture<Seen> seen = Background.supply("robot r1", () -> drive(env.robotPort()));
             Seen s = seen.get(60, TimeUnit.SECONDS);
             RunReport report = env.await(60);
 

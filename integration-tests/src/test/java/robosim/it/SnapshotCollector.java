@@ -13,6 +13,7 @@ import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
+import robosim.cli.Background;
 
 /** A viewer for tests: attaches and keeps the world and every snapshot until the run ends. */
 final class SnapshotCollector {
@@ -25,7 +26,7 @@ final class SnapshotCollector {
         s.setSoTimeout(120_000);
         MessageCodec codec = new MessageCodec();
         new FrameWriter(s.getOutputStream(), codec).write(new ViewerHello("test"));
-        done = CompletableFuture.runAsync(() -> {
+        done = Background.run("snapshot-collector", () -> {
             try (s) {
                 FrameReader r = new FrameReader(s.getInputStream(), codec, 1 << 24);
                 Message m;

@@ -92,7 +92,7 @@ final class GoldfinderCommand implements Callable<Integer> {
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
             PngImageWriter png = new PngImageWriter(frames);
-            CompletableFuture<ViewerSummary> viewer = noFrames ? null : CompletableFuture.supplyAsync(() -> {
+            CompletableFuture<ViewerSummary> viewer = noFrames ? null : Background.supply("png viewer", () -> {
                 try {
                     return Viewers.pngClient("127.0.0.1", server.viewerPort(), png, every, 800, false, true,
                             Duration.ofMinutes(5)).run();

@@ -120,7 +120,7 @@ final class ViewerCommand implements Callable<Integer> {
         ViewState state = drawing.windowState();
         model.source("live from " + client.options().peer());
         ViewerWindow w = Windows.open("RoboSim viewer - " + client.options().peer(), () -> new ViewerPane(model, state));
-        CompletableFuture<ViewerSummary> run = CompletableFuture.supplyAsync(() -> {
+        CompletableFuture<ViewerSummary> run = Background.supply("viewer", () -> {
             try {
                 return client.run();
             } catch (ViewerException e) {

@@ -75,13 +75,14 @@ class ViewerClientListenersTest {
             out.write(Fixtures.snapshot(1, Fixtures.robotAtRest()));
         })) {
             ViewerClient client = new ViewerClient(options(env.port()), List.of(listener));
+            // a thread of its own: the common pool may have a single worker on two cores
             CompletableFuture<ViewerSummary> run = CompletableFuture.supplyAsync(() -> {
                 try {
                     return client.run();
                 } catch (ViewerException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, task -> new Thread(task, "viewer").start());
             assertTrue(framed.await(10, TimeUnit.SECONDS));
             client.stop();
             assertEquals("stopped", run.get(10, TimeUnit.SECONDS).endReason());

@@ -2,6 +2,7 @@ package robosim.examples.goldfinder;
 
 import java.util.ArrayList;
 import java.util.List;
+import robosim.hw.RobotThreads;
 
 /**
  * Starts a team of {@link Gold} robots as threads of this JVM. (The {@code bin/robosim goldfinder}
@@ -12,7 +13,8 @@ public final class GoldFinder {
     }
 
     /**
-     * Starts robots {@code r1..rN} as threads; each searches until the run ends.
+     * Starts robots {@code r1..rN} as threads (virtual ones where the JDK allows; see
+     * {@link RobotThreads}); each searches until the run ends.
      *
      * @param host     the Environment's host
      * @param port     its robot port
@@ -25,14 +27,13 @@ public final class GoldFinder {
         List<Thread> threads = new ArrayList<>();
         for (int k = 1; k <= robots; k++) {
             String name = "r" + k;
-            Thread t = new Thread(() -> {
+            Thread t = RobotThreads.unstarted("gold-" + name, () -> {
                 Gold g = new Gold(name, host, port, cellSize, seed);
                 if (g.blockingConnect()) {
                     g.search();
                     g.disconnect();
                 }
-            }, "gold-" + name);
-            t.setDaemon(true);
+            });
             t.start();
             threads.add(t);
         }
