@@ -99,7 +99,8 @@ public final class BenchRobots {
             Thread t = new Thread(() -> drive(name, host, port, params, sensors, () -> {
                 if (connected.incrementAndGet() == share.count()) {
                     LOG.info("all " + share.count() + " robots connected " + ManagementFactory.getRuntimeMXBean().getUptime()
-                            + " ms after this JVM started (main began at " + mainMs + " ms)");
+                            + " ms after this JVM started (main began at " + mainMs + " ms), " + cpuMs()
+                            + " ms of CPU used by this JVM");
                 }
             }), name);
             t.setUncaughtExceptionHandler(failed);
@@ -111,6 +112,12 @@ public final class BenchRobots {
         for (Thread t : threads) {
             t.join();
         }
+    }
+
+    /** @return the CPU time this JVM has used, ms, or -1 if the JVM does not tell */
+    private static long cpuMs() {
+        return ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
+                ? os.getProcessCpuTime() / 1_000_000 : -1;
     }
 
     private static void drive(String name, String host, int port, String params, BenchSensors sensors, Runnable welcomed) {
