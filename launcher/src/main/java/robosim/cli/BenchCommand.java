@@ -40,11 +40,11 @@ final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N[,N...]",
+    @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N",
             description = "robot counts to measure, 1 to " + MAX_ROBOTS + "; default ${DEFAULT-VALUE}")
     List<Integer> robots;
 
-    @Option(names = "--sensors", split = ",", defaultValue = "sonar", paramLabel = "S[,S...]",
+    @Option(names = "--sensors", split = ",", defaultValue = "sonar", paramLabel = "S",
             description = "what every robot reads each step: sonar (its 16 sonars) or laser (the sonars and a SICK laser,"
                     + " 181 beams at 1 deg, 8000 mm); repeatable; default ${DEFAULT-VALUE}")
     List<String> sensors;
