@@ -6,8 +6,10 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
+import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
+import robosim.protocol.RobotState;
 
 /**
  * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
@@ -20,25 +22,41 @@ public final class CoreBench {
 
     /**
      * @param robots    robots in the grid
+     * @param sensors   what each robot reads: with the laser, every robot switches it on with its first
+     *                  step's commands ({@code ConfigureLaser(true, 1, 8000)}), as the clients do
      * @param steps     steps to run
      * @param dir       where to write the world
      * @param robotFile the p3dx parameter file
-     * @return the figures
+     * @return the figures; the load time is reading the world and building the Simulation
      * @throws IOException if the world cannot be written
      */
-    public static StepRateBench.Result run(int robots, long steps, Path dir, Path robotFile) throws IOException {
-        Simulation sim = new Simulation(WorldReader.read(GridWorld.write(robots, dir, robotFile)));
-        List<String> names = sim.robotNames();
+    public static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path dir, Path robotFile)
+            throws IOException {
+        Path worldFile = GridWorld.write(robots, dir, robotFile);
         long t0 = System.nanoTime();
+        World world = WorldReader.read(worldFile);
+        long t1 = System.nanoTime();
+        Simulation sim = new Simulation(world);
+        long t2 = System.nanoTime();
+        List<String> names = sim.robotNames();
+        int[] none = new int[0];
+        long start = System.nanoTime();
         for (long s = 0; s < steps; s++) {
             Map<String, List<Command>> commands = new HashMap<>();
             for (String name : names) {
-                int[] sonar = sim.state(name).sonar();
-                boolean blocked = BenchRobots.blocked(i -> sonar[i], sonar.length);
-                commands.put(name, List.of(new Command.SetVel(blocked ? 0 : 300), new Command.SetRotVel(blocked ? 30 : 0)));
+                RobotState state = sim.state(name);
+                int[] sonar = state.sonar();
+                int[] laser = state.laser() == null ? none : state.laser();
+                boolean blocked = BenchRobots.blocked(i -> sonar[i], sonar.length, laser);
+                Command vel = new Command.SetVel(blocked ? 0 : 300);
+                Command rot = new Command.SetRotVel(blocked ? 30 : 0);
+                commands.put(name, s == 0 && sensors.laser()
+                        ? List.of(new Command.ConfigureLaser(true, BenchSensors.LASER_INCREMENT, BenchSensors.LASER_MAX_RANGE), vel, rot)
+                        : List.of(vel, rot));
             }
             sim.step(commands);
         }
-        return new StepRateBench.Result(robots, steps, (System.nanoTime() - t0) / 1e9);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        return new StepRateBench.Result("core", robots, sensors, 0, new StepRateBench.Load(t1 - t0, t2 - t1, 0), steps, seconds);
     }
 }

@@ -4,22 +4,61 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
+import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
+import robosim.protocol.FrameReader;
 
 /**
  * Steps per second, as fast as possible, in the grid world: the Environment in this JVM, the robots
- * in one client JVM of their own, over TCP on loopback.
+ * in client JVMs of their own (robots spread evenly over them), over TCP on loopback. Also times
+ * loading: reading the world file, building the {@link Simulation}, and starting the clients until
+ * every robot has connected.
  */
 public final class StepRateBench {
-    /** One measurement. */
-    public record Result(int robots, long steps, double seconds) {
+    /** How long the Environment waits for every robot to connect, ms. */
+    static final long CONNECT_TIMEOUT_MS = 180_000;
+    /** How long the Environment waits for a robot's requests, ms: long, so a slow step drops no one. */
+    static final long STEP_TIMEOUT_MS = 60_000;
+    /** How long the client JVMs get to end by themselves after the run, ms. */
+    private static final long CLIENT_EXIT_MS = 30_000;
+
+    /**
+     * Where the load-and-connect time went.
+     *
+     * @param readNanos    reading the world file
+     * @param buildNanos   building the {@link Simulation}
+     * @param connectNanos from starting the client JVMs until every robot had connected (0 for the
+     *                     core alone)
+     */
+    public record Load(long readNanos, long buildNanos, long connectNanos) {
+        /** @return the whole load-and-connect time, seconds */
+        public double seconds() {
+            return (readNanos + buildNanos + connectNanos) / 1e9;
+        }
+    }
+
+    /**
+     * One measurement.
+     *
+     * @param run     {@code tcp} (robots in client JVMs) or {@code core} (the core alone, one thread)
+     * @param robots  robots in the grid
+     * @param sensors what each robot reads
+     * @param clients client JVMs (0 for the core alone)
+     * @param load    the load-and-connect time
+     * @param steps   steps run
+     * @param seconds wall-clock time of the steps
+     */
+    public record Result(String run, int robots, BenchSensors sensors, int clients, Load load, long steps,
+                         double seconds) {
         /** @return steps per second */
         public double stepsPerSecond() {
             return steps / seconds;
@@ -29,61 +68,204 @@ public final class StepRateBench {
         public double realtimeFactor() {
             return stepsPerSecond() * 0.1;
         }
+
+        /** @return robots × steps per second */
+        public double robotStepsPerSecond() {
+            return robots * stepsPerSecond();
+        }
     }
 
     private StepRateBench() {
     }
 
     /**
-     * Runs one measurement.
+     * Runs one measurement over TCP. The client JVMs are stopped before this returns, also when it
+     * fails: each gets a bounded time to end by itself, then is ended.
      *
      * @param robots    robots in the grid
+     * @param sensors   what each robot reads
+     * @param clients   client JVMs to spread the robots over (fewer if there are fewer robots)
      * @param steps     steps to run
-     * @param dir       where to write the world
+     * @param dir       where to write the world and the clients' logs
      * @param robotFile the p3dx parameter file
      * @return the figures
-     * @throws IOException          if the world or the client JVM fail
-     * @throws InterruptedException if interrupted
+     * @throws IOException           if the world or a client JVM cannot be started
+     * @throws InterruptedException  if interrupted
+     * @throws IllegalStateException if a client JVM fails or the run ends early
      */
-    public static Result run(int robots, long steps, Path dir, Path robotFile) throws IOException, InterruptedException {
-        Path world = GridWorld.write(robots, dir, robotFile);
-        Simulation sim = new Simulation(WorldReader.read(world));
-        ServerOptions options = ServerOptions.loopback().withMaxSteps(steps);
+    public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile)
+            throws IOException, InterruptedException {
+        Path worldFile = GridWorld.write(robots, dir, robotFile);
+        long t0 = System.nanoTime();
+        World world = WorldReader.read(worldFile);
+        long t1 = System.nanoTime();
+        Simulation sim = new Simulation(world);
+        long t2 = System.nanoTime();
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS,
+                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME);
+        List<BenchRobots.Share> shares = BenchRobots.split(robots, clients);
+        List<Process> started = new CopyOnWriteArrayList<>();
+        ClientWatch watch = new ClientWatch(Thread.currentThread());
+        Thread stopOnExit = new Thread(() -> started.forEach(Process::destroyForcibly), "bench-stop-clients");
+        Runtime.getRuntime().addShutdownHook(stopOnExit);
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
-            Process client = clientJvm(server.robotPort(), robots, robotFile, dir.resolve("client-" + robots + ".log"));
+            for (int c = 0; c < shares.size(); c++) {
+                Process p = clientJvm(server.robotPort(), shares.get(c), sensors, robotFile, log(dir, robots, sensors, c));
+                started.add(p);
+                watch.watch(p, log(dir, robots, sensors, c));
+            }
+            RunReport report;
             try {
-                RunReport report = server.run();
-                if (report.steps() != steps) {
-                    throw new IllegalStateException("the run ended early: " + report.endReason()
-                            + " (see " + dir.resolve("client-" + robots + ".log") + ")");
+                report = server.run();
+            } catch (InterruptedException e) {
+                String failure = watch.failure();
+                if (failure != null) {
+                    throw new IllegalStateException(failure);
                 }
-                return new Result(robots, report.steps(), report.wallNanos() / 1e9);
+                throw e;
             } finally {
-                if (!client.waitFor(30, TimeUnit.SECONDS)) {
-                    client.destroyForcibly().waitFor(5, TimeUnit.SECONDS);
+                watch.stop();
+            }
+            if (report.steps() != steps) {
+                throw new IllegalStateException("the run ended early: " + report.endReason() + " (see " + dir + "/client-*.log)");
+            }
+            Load load = new Load(t1 - t0, t2 - t1, report.connectedNanoTime() - t2);
+            return new Result("tcp", robots, sensors, shares.size(), load, report.steps(), report.wallNanos() / 1e9);
+        } finally {
+            stop(started);
+            try {
+                Runtime.getRuntime().removeShutdownHook(stopOnExit);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook runs anyway
+            }
+        }
+    }
+
+    private static Path log(Path dir, int robots, BenchSensors sensors, int client) {
+        return dir.resolve("client-" + robots + "-" + sensors.optionName() + "-" + client + ".log");
+    }
+
+    /**
+     * Interrupts the thread running the Environment when a client JVM ends with a failure before the
+     * run is over, so a failed client ends the measurement at once instead of at a timeout.
+     */
+    private static final class ClientWatch {
+        private final Thread runner;
+        private boolean stopped;
+        private String failure;
+
+        ClientWatch(Thread runner) {
+            this.runner = runner;
+        }
+
+        void watch(Process p, Path log) {
+            p.onExit().thenAccept(q -> {
+                synchronized (this) {
+                    if (!stopped && q.exitValue() != 0 && failure == null) {
+                        failure = "a client JVM ended with exit status " + q.exitValue() + " (see " + log + ")";
+                        runner.interrupt();
+                    }
+                }
+            });
+        }
+
+        synchronized String failure() {
+            return failure;
+        }
+
+        /** No more interrupts; clears one that was made for a failure. */
+        void stop() {
+            synchronized (this) {
+                stopped = true;
+                if (failure != null) {
+                    Thread.interrupted();
                 }
             }
         }
     }
 
-    private static Process clientJvm(int port, int robots, Path robotFile, Path log) throws IOException {
+    /** Gives the clients a bounded time to end by themselves, then ends them. */
+    private static void stop(List<Process> clients) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CLIENT_EXIT_MS);
+        for (Process p : clients) {
+            p.waitFor(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+        }
+        for (Process p : clients) {
+            if (p.isAlive()) {
+                p.destroy();
+            }
+        }
+        for (Process p : clients) {
+            if (!p.waitFor(5, TimeUnit.SECONDS)) {
+                p.destroyForcibly().waitFor(5, TimeUnit.SECONDS);
+            }
+        }
+    }
+
+    private static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log)
+            throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"),
-                BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(robots),
-                robotFile.toAbsolutePath().toString()));
+                "-Djava.awt.headless=true", "-Xss256k", "-Xmx" + clientHeapMb(share.count()) + "m",
+                "-cp", System.getProperty("java.class.path"),
+                BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
+                Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName()));
         return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
     }
 
     /**
-     * Prints a result as one line.
+     * @param robots robots in one client JVM
+     * @return its maximum heap, MiB
+     */
+    static int clientHeapMb(int robots) {
+        return 256 + robots;
+    }
+
+    /**
+     * Prints what the figures mean, once before them.
+     *
+     * @param out where
+     */
+    public static void printLegend(PrintWriter out) {
+        out.println("step rate: one line per run; load_s = reading the world + building the Simulation (read_s, build_s)"
+                + " + starting the client JVMs until every robot has connected (connect_s, 0 for the core alone);"
+                + " x_realtime with 100 ms steps; robot_steps_per_s = robots x steps / s");
+        out.flush();
+    }
+
+    /**
+     * Prints a result as one line of {@code key=value} fields.
      *
      * @param out where
      * @param r   the result
      */
     public static void print(PrintWriter out, Result r) {
-        out.printf(Locale.ROOT, "step rate: %3d robots  %6d steps in %7.2f s  %8.1f steps/s  %6.1fx real time%n",
-                r.robots(), r.steps(), r.seconds(), r.stepsPerSecond(), r.realtimeFactor());
+        out.printf(Locale.ROOT, "%-4s robots=%-4d sensors=%-11s clients=%d load_s=%.3f read_s=%.3f build_s=%.3f connect_s=%.3f"
+                        + " steps=%d s=%.2f steps_per_s=%.1f x_realtime=%.2f robot_steps_per_s=%.0f%n",
+                r.run(), r.robots(), r.sensors().label(), r.clients(), r.load().seconds(), r.load().readNanos() / 1e9,
+                r.load().buildNanos() / 1e9, r.load().connectNanos() / 1e9, r.steps(), r.seconds(), r.stepsPerSecond(),
+                r.realtimeFactor(), r.robotStepsPerSecond());
+        out.flush();
+    }
+
+    /**
+     * Prints the median of repeated runs of one kind, robot count and sensors, as one line: the
+     * medians of the load time and of the step rate, and the range of × real time.
+     *
+     * @param out  where
+     * @param runs the results, at least one
+     */
+    public static void printMedian(PrintWriter out, List<Result> runs) {
+        List<Result> byRate = new ArrayList<>(runs);
+        byRate.sort(Comparator.comparingDouble(Result::stepsPerSecond));
+        List<Double> loads = new ArrayList<>(runs.stream().map(r -> r.load().seconds()).toList());
+        loads.sort(null);
+        Result m = byRate.get(byRate.size() / 2);
+        out.printf(Locale.ROOT, "%-4s robots=%-4d sensors=%-11s clients=%d median_of=%d load_s=%.3f steps_per_s=%.1f"
+                        + " x_realtime=%.2f x_realtime_min=%.2f x_realtime_max=%.2f robot_steps_per_s=%.0f%n",
+                m.run(), m.robots(), m.sensors().label(), m.clients(), runs.size(), loads.get(loads.size() / 2),
+                m.stepsPerSecond(), m.realtimeFactor(), byRate.get(0).realtimeFactor(),
+                byRate.get(byRate.size() - 1).realtimeFactor(), m.robotStepsPerSecond());
         out.flush();
     }
 }

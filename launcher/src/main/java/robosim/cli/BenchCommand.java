@@ -3,13 +3,20 @@ package robosim.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.bench.BenchSensors;
 import robosim.bench.CodecBench;
 import robosim.bench.CoreBench;
 import robosim.bench.GoldFinderBench;
@@ -19,14 +26,33 @@ import robosim.params.RobotParameterFiles;
 
 /** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = "Measure steps per second in the grid world (Environment in this JVM, robots in one client JVM, over TCP), the wire formats and the laser.")
+        description = "Measure load-and-connect time and steps per second in the grid world (Environment in this JVM,"
+                + " robots in client JVMs, over TCP; and the core alone), the wire formats and the laser.")
 final class BenchCommand implements Callable<Integer> {
+    /** The most robots one measurement may have. */
+    static final int MAX_ROBOTS = 5000;
+    /** The most client JVMs one measurement may start. */
+    static final int MAX_CLIENTS = 64;
+
+    /** The Environment's per-connection lines, quieted while measuring: thousands of them say nothing. */
+    private static final Logger NET_LOG = Logger.getLogger("robosim.env.net");
+
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N[,N...]",
-            description = "robot counts to measure; default ${DEFAULT-VALUE}")
+    @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N",
+            description = "robot counts to measure, 1 to " + MAX_ROBOTS + "; default ${DEFAULT-VALUE}")
     List<Integer> robots;
+
+    @Option(names = "--sensors", split = ",", defaultValue = "sonar", paramLabel = "S",
+            description = "what every robot reads each step: sonar (its 16 sonars) or laser (the sonars and a SICK laser,"
+                    + " 181 beams at 1 deg, 8000 mm); repeatable; default ${DEFAULT-VALUE}")
+    List<String> sensors;
+
+    @Option(names = "--clients", defaultValue = "1", paramLabel = "K",
+            description = "client JVMs to spread the robots over, 1 to " + MAX_CLIENTS + " (never more than the robots);"
+                    + " default ${DEFAULT-VALUE}")
+    int clients;
 
     @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = "steps per measurement; default ${DEFAULT-VALUE}")
     long steps;
@@ -37,7 +63,7 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--skip-codec", description = "do not measure the wire formats")
     boolean skipCodec;
 
-    @Option(names = "--skip-laser", description = "do not measure the laser")
+    @Option(names = "--skip-laser", description = "do not measure the laser's cost alone")
     boolean skipLaser;
 
     @Option(names = "--goldfinder", description = "instead: steps to find the gold with 1, 2, 4 and 8 robots over --mazes generated 10x10 mazes")
@@ -46,24 +72,39 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--mazes", defaultValue = "20", paramLabel = "N", description = "mazes for --goldfinder; default ${DEFAULT-VALUE}")
     int mazes;
 
-    @Option(names = "--repeat", defaultValue = "1", paramLabel = "R", description = "runs per robot count; the median is printed too; default ${DEFAULT-VALUE}")
+    @Option(names = "--repeat", defaultValue = "1", paramLabel = "R",
+            description = "runs over TCP per robot count and sensors; the median and range are printed too; default ${DEFAULT-VALUE}")
     int repeat;
 
     @Override
     public Integer call() throws Exception {
         PrintWriter o = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
         for (int n : robots) {
-            if (n < 1 || n > 400) {
-                spec.commandLine().getErr().println("robosim bench: " + n + " was supplied for --robots: counts are 1 to 400");
+            if (n < 1 || n > MAX_ROBOTS) {
+                err.println("robosim bench: " + n + " was supplied for --robots: counts are 1 to " + MAX_ROBOTS);
                 return 2;
             }
         }
+        Set<BenchSensors> sensorSets = new LinkedHashSet<>();
+        for (String s : sensors) {
+            Optional<BenchSensors> named = BenchSensors.named(s);
+            if (named.isEmpty()) {
+                err.println("robosim bench: " + s + " was supplied for --sensors: sensors are sonar or laser");
+                return 2;
+            }
+            sensorSets.add(named.get());
+        }
+        if (clients < 1 || clients > MAX_CLIENTS) {
+            err.println("robosim bench: " + clients + " was supplied for --clients: client JVMs are 1 to " + MAX_CLIENTS);
+            return 2;
+        }
         if (repeat < 1) {
-            spec.commandLine().getErr().println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
+            err.println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
             return 2;
         }
         if (steps < 10) {
-            spec.commandLine().getErr().println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
+            err.println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
             return 2;
         }
         Path root = RobotParameterFiles.root();
@@ -84,20 +125,29 @@ final class BenchCommand implements Callable<Integer> {
             LaserBench.print(o, LaserBench.run(cluttered, 1.0, 5000));
             LaserBench.print(o, LaserBench.run(cluttered, 0.5, 5000));
         }
-        for (int n : robots) {
-            o.printf(Locale.ROOT, "core only (no TCP, one thread): ");
-            StepRateBench.print(o, CoreBench.run(n, steps, out, p3dx));
-            double[] rates = new double[repeat];
-            for (int r = 0; r < repeat; r++) {
-                StepRateBench.Result tcp = StepRateBench.run(n, steps, out, p3dx);
-                StepRateBench.print(o, tcp);
-                rates[r] = tcp.realtimeFactor();
+        StepRateBench.printLegend(o);
+        Level level = NET_LOG.getLevel();
+        NET_LOG.setLevel(Level.WARNING);
+        try {
+            for (BenchSensors s : sensorSets) {
+                for (int n : robots) {
+                    StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx));
+                    List<StepRateBench.Result> runs = new ArrayList<>();
+                    for (int r = 0; r < repeat; r++) {
+                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx);
+                        StepRateBench.print(o, tcp);
+                        runs.add(tcp);
+                    }
+                    if (repeat > 1) {
+                        StepRateBench.printMedian(o, runs);
+                    }
+                }
             }
-            if (repeat > 1) {
-                java.util.Arrays.sort(rates);
-                o.printf(Locale.ROOT, "step rate: %3d robots  median of %d runs: %.1fx real time (range %.1f to %.1f)%n",
-                        n, repeat, rates[repeat / 2], rates[0], rates[repeat - 1]);
-            }
+        } catch (IllegalStateException e) {
+            err.println("robosim bench: " + e.getMessage());
+            return 1;
+        } finally {
+            NET_LOG.setLevel(level);
         }
         return 0;
     }

@@ -156,6 +156,24 @@ class CommandLineTest {
         assertEquals("robosim robot: 70000 was supplied for PORT: a port is 1 to 65535", r.err().strip());
     }
 
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "--robots 0          | 0 was supplied for --robots: counts are 1 to 5000",
+            "--robots 10,6000    | 6000 was supplied for --robots: counts are 1 to 5000",
+            "--sensors radar     | radar was supplied for --sensors: sensors are sonar or laser",
+            "--sensors sonar,sky | sky was supplied for --sensors: sensors are sonar or laser",
+            "--clients 0         | 0 was supplied for --clients: client JVMs are 1 to 64",
+            "--repeat 0          | 0 was supplied for --repeat: it must be at least 1"})
+    void benchWithAnInvalidOptionExitsWith2AndSaysWhyBeforeMeasuringAnything(String args, String message) {
+        java.util.List<String> line = new java.util.ArrayList<>(java.util.List.of("bench", "--out", dir.toString()));
+        line.addAll(java.util.List.of(args.split(" ")));
+        Run r = execute(line.toArray(String[]::new));
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim bench: " + message, r.err().strip());
+        assertEquals("", r.out(), "nothing was measured");
+        r.assertNoStackTrace();
+    }
+
     /** The RoboSim root: the nearest folder above the working directory that holds testLoadFiles. */
     private static Path root() {
         Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();

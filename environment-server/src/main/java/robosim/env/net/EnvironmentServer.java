@@ -117,6 +117,7 @@ public final class EnvironmentServer implements AutoCloseable {
      */
     public RunReport run() throws InterruptedException {
         awaitRobots();
+        long connected = System.nanoTime();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
         listeners.world(sim.description());
         listeners.snapshot(sim.snapshot());
@@ -136,7 +137,7 @@ public final class EnvironmentServer implements AutoCloseable {
         for (String name : sim.robotNames()) {
             summaries.add(sim.summary(name));
         }
-        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find());
+        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find(), connected);
     }
 
     private void awaitRobots() throws InterruptedException {
