@@ -9,6 +9,7 @@ import java.util.logging.Logger;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 import robosim.aria.ArUtil;
+import robosim.hw.RobotThreads;
 
 /**
  * The benchmark's client JVM: robots {@code b<first>..b<first+count-1>}, one thread each, each
@@ -96,13 +97,13 @@ public final class BenchRobots {
         List<Thread> threads = new ArrayList<>();
         for (int k = share.first(); k < share.first() + share.count(); k++) {
             String name = "b" + k;
-            Thread t = new Thread(() -> drive(name, host, port, params, sensors, () -> {
+            Thread t = RobotThreads.unstarted(name, () -> drive(name, host, port, params, sensors, () -> {
                 if (connected.incrementAndGet() == share.count()) {
                     LOG.info("all " + share.count() + " robots connected " + ManagementFactory.getRuntimeMXBean().getUptime()
                             + " ms after this JVM started (main began at " + mainMs + " ms), " + cpuMs()
                             + " ms of CPU used by this JVM");
                 }
-            }), name);
+            }));
             t.setUncaughtExceptionHandler(failed);
             threads.add(t);
         }

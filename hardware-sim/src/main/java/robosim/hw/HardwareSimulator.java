@@ -59,7 +59,8 @@ public final class HardwareSimulator {
     private final StepGate gate;
     private final Consumer<RobotSensorResponse> responses;
     private final Queue<RobotRequest> robotRequestQueue = new ConcurrentLinkedQueue<>();
-    private final MessageCodec codec = new MessageCodec();
+    /** One codec for every robot of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
+    private static final MessageCodec CODEC = new MessageCodec();
     private final HardwareOptions options;
     private Socket socket;
     private FrameWriter writer;
@@ -117,8 +118,8 @@ public final class HardwareSimulator {
         try {
             socket.setTcpNoDelay(true);
             socket.setSoTimeout((int) options.connectTimeoutMs());
-            reader = new FrameReader(socket.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
-            writer = new FrameWriter(socket.getOutputStream(), codec);
+            reader = new FrameReader(socket.getInputStream(), CODEC, FrameReader.DEFAULT_MAX_FRAME);
+            writer = new FrameWriter(socket.getOutputStream(), CODEC);
             writer.write(hello);
             Message first = reader.read();
             if (first instanceof Welcome w) {
