@@ -22,7 +22,18 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  *
  * <p>Ranges are exact: a ray reports the nearest intersection with any edge; a cone reports the
  * nearest point of any edge that lies inside the cone's wedge (no reflections, no beam pattern).
- * Not thread-safe; the simulation owns one instance.
+ *
+ * <p>The bodies are kept by the cells of a uniform grid ({@link BodyGrid}), so a query looks only at
+ * the bodies near it; those it looks at are taken in body-id order, as a scan of all bodies would.
+ *
+ * <p>Threads: the methods that change the world ({@link #addBody}, {@link #moveBody},
+ * {@link #replaceBody}) must not run while any other method runs. The queries sensors use
+ * ({@link #rayRange}, {@link #coneRange}, {@link #around}, {@link #lineOfSight}, {@link #bodyPose},
+ * {@link #bodyPolygon}, {@link #bodyShape}) keep no scratch state, only read, and may run
+ * concurrently with each other, for example one robot's sensors per thread. The motion queries
+ * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep no scratch state here either, but
+ * they go through JTS's prepared geometries and distance operations; the simulation calls them
+ * from one thread.
  */
 public final class GeometryClient {
     /** Largest heading change of one sweep piece; bounds the hull's error on arcs to about 0.1 mm. */
@@ -31,16 +42,34 @@ public final class GeometryClient {
     private static final double MAX_PIECE_LENGTH = 50;
     /** The contact search stops when the remaining gap of motion is below this, in mm. */
     private static final double CONTACT_TOLERANCE = 0.05;
+    /** The side of a cell of the bodies' grid, mm: a few robots across. */
+    static final double DEFAULT_CELL_SIZE = 2000;
 
     private final GeometryFactory factory = new GeometryFactory();
     private final STRtree obstacleIndex = new STRtree();
     private final STRtree segmentIndex = new STRtree();
     private final List<Body> bodies = new ArrayList<>();
+    private final double cellSize;
+    /** The area the bodies' grid covers; null until there is an obstacle or a body. */
+    private Envelope gridExtent;
+    private BodyGrid grid;
 
     /**
      * @param obstacles the static walls and obstacles
      */
     public GeometryClient(List<Polygon> obstacles) {
+        this(obstacles, DEFAULT_CELL_SIZE);
+    }
+
+    /**
+     * @param obstacles the static walls and obstacles
+     * @param cellSize  the side of a cell of the bodies' grid, mm, greater than 0
+     */
+    GeometryClient(List<Polygon> obstacles, double cellSize) {
+        if (!(cellSize > 0) || !Double.isFinite(cellSize)) {
+            throw new IllegalArgumentException(cellSize + " was supplied for cellSize: it must be greater than 0");
+        }
+        this.cellSize = cellSize;
         for (Polygon p : obstacles) {
             obstacleIndex.insert(p.getEnvelopeInternal(), PreparedGeometryFactory.prepare(p));
             addRing(p.getExteriorRing());
@@ -50,6 +79,39 @@ public final class GeometryClient {
         }
         obstacleIndex.build();
         segmentIndex.build();
+        for (Polygon p : obstacles) {
+            if (gridExtent == null) {
+                gridExtent = new Envelope(p.getEnvelopeInternal());
+            } else {
+                gridExtent.expandToInclude(p.getEnvelopeInternal());
+            }
+        }
+        if (gridExtent != null) {
+            grid = new BodyGrid(gridExtent, cellSize);
+        }
+    }
+
+    /**
+     * Grows the bodies' grid, when a body lies outside it, to about twice the size it then needs,
+     * and lists every body in it again.
+     *
+     * @return false if the grid already covered the envelope and nothing was done
+     */
+    private boolean regrid(Envelope env) {
+        if (grid != null && grid.covers(env)) {
+            return false;
+        }
+        Envelope extent = new Envelope(env);
+        if (gridExtent != null) {
+            extent.expandToInclude(gridExtent);
+        }
+        extent.expandBy(Math.max(extent.getWidth(), extent.getHeight()) / 2 + cellSize);
+        gridExtent = extent;
+        grid = new BodyGrid(extent, cellSize);
+        for (int i = 0; i < bodies.size(); i++) {
+            grid.add(i, bodies.get(i).envelope);
+        }
+        return true;
     }
 
     private void addRing(LineString ring) {
@@ -89,8 +151,12 @@ public final class GeometryClient {
     public int addBody(BodyShape shape, Pose2D pose) {
         Body b = new Body(shape);
         b.place(pose, factory);
+        int id = bodies.size();
         bodies.add(b);
-        return bodies.size() - 1;
+        if (!regrid(b.envelope)) {
+            grid.add(id, b.envelope);
+        }
+        return id;
     }
 
     /**
@@ -100,7 +166,35 @@ public final class GeometryClient {
      * @param pose its new pose
      */
     public void moveBody(int id, Pose2D pose) {
-        bodies.get(id).place(pose, factory);
+        Body b = bodies.get(id);
+        b.place(pose, factory);
+        if (!regrid(b.envelope)) {
+            grid.move(id, b.envelope);
+        }
+    }
+
+    /**
+     * Gives a body another shape where it stands, with no collision check: a robot's body as its
+     * program describes it. The other bodies and the obstacles stay as they are.
+     *
+     * @param id    the body
+     * @param shape its new shape
+     */
+    public void replaceBody(int id, BodyShape shape) {
+        Body b = new Body(shape);
+        b.place(bodies.get(id).pose, factory);
+        bodies.set(id, b);
+        if (!regrid(b.envelope)) {
+            grid.move(id, b.envelope);
+        }
+    }
+
+    /**
+     * @param id the body
+     * @return its shape
+     */
+    public BodyShape bodyShape(int id) {
+        return bodies.get(id).shape;
     }
 
     /**
@@ -196,7 +290,7 @@ public final class GeometryClient {
                 return true;
             }
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body other = bodies.get(i);
             if (i != ignoreId && other.envelope.intersects(env) && other.polygon.intersects(g)) {
                 return true;
@@ -223,7 +317,7 @@ public final class GeometryClient {
         for (Object o : segmentIndex.query(env)) {
             best = Math.min(best, ((Segment) o).rayHit(x, y, dx, dy));
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 for (Segment s : b.segments) {
@@ -259,7 +353,7 @@ public final class GeometryClient {
         for (Object o : segmentIndex.query(env)) {
             best = Math.min(best, ((Segment) o).wedgeDistance(x, y, rx, ry, lx, ly));
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 for (Segment s : b.segments) {
@@ -287,7 +381,7 @@ public final class GeometryClient {
             Geometry g = ((PreparedGeometry) o).getGeometry();
             addContact(body, g, tolerance, out);
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body other = bodies.get(i);
             if (i != id && other.envelope.intersects(env)) {
                 addContact(body, other.polygon, tolerance, out);
@@ -345,13 +439,18 @@ public final class GeometryClient {
         for (Object o : segmentIndex.query(env)) {
             found.add((Segment) o);
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 found.addAll(java.util.Arrays.asList(b.segments));
             }
         }
         return new Surroundings(x, y, found);
+    }
+
+    /** @return the ids of the bodies that may intersect an envelope, ascending */
+    private int[] bodiesNear(Envelope env) {
+        return grid == null ? new int[0] : grid.query(env);
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {

@@ -21,18 +21,72 @@ public final class Surroundings {
         this.cy = cy;
         int n = found.size();
         double[] d = new double[n];
-        Integer[] order = new Integer[n];
         for (int i = 0; i < n; i++) {
             d[i] = found.get(i).distanceTo(cx, cy);
-            order[i] = i;
         }
-        java.util.Arrays.sort(order, (a, b) -> Double.compare(d[a], d[b]));
+        int[] order = stableOrder(d);
         segments = new Segment[n];
         nearest = new double[n];
         for (int i = 0; i < n; i++) {
             segments[i] = found.get(order[i]);
             nearest[i] = d[order[i]];
         }
+    }
+
+    /** Runs shorter than this are sorted by insertion. */
+    private static final int INSERTION_RUN = 16;
+
+    /**
+     * The indexes of {@code keys} in ascending order of their keys ({@link Double#compare}), equal
+     * keys in the order they came: the order a stable sort gives, without boxing.
+     */
+    static int[] stableOrder(double[] keys) {
+        int n = keys.length;
+        int[] a = new int[n];
+        for (int i = 0; i < n; i++) {
+            a[i] = i;
+        }
+        for (int lo = 0; lo < n; lo += INSERTION_RUN) {
+            int hi = Math.min(n, lo + INSERTION_RUN);
+            for (int i = lo + 1; i < hi; i++) {
+                int v = a[i];
+                int j = i - 1;
+                while (j >= lo && Double.compare(keys[a[j]], keys[v]) > 0) {
+                    a[j + 1] = a[j];
+                    j--;
+                }
+                a[j + 1] = v;
+            }
+        }
+        int[] b = new int[n];
+        for (int width = INSERTION_RUN; width < n; width *= 2) {
+            for (int lo = 0; lo < n; lo += 2 * width) {
+                int mid = Math.min(n, lo + width);
+                int hi = Math.min(n, lo + 2 * width);
+                int i = lo;
+                int j = mid;
+                int k = lo;
+                while (i < mid && j < hi) {
+                    // the left run wins ties: equal keys keep their order
+                    b[k++] = Double.compare(keys[a[j]], keys[a[i]]) < 0 ? a[j++] : a[i++];
+                }
+                while (i < mid) {
+                    b[k++] = a[i++];
+                }
+                while (j < hi) {
+                    b[k++] = a[j++];
+                }
+            }
+            int[] t = a;
+            a = b;
+            b = t;
+        }
+        return a;
+    }
+
+    /** @return the edges gathered, nearest the centre first (equal distances in the order found) */
+    List<Segment> edges() {
+        return List.of(segments);
     }
 
     /** @return the number of edges gathered */
