@@ -23,8 +23,10 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  * <p>Ranges are exact: a ray reports the nearest intersection with any edge; a cone reports the
  * nearest point of any edge that lies inside the cone's wedge (no reflections, no beam pattern).
  *
- * <p>The bodies are kept by the cells of a uniform grid ({@link BodyGrid}), so a query looks only at
- * the bodies near it; those it looks at are taken in body-id order, as a scan of all bodies would.
+ * <p>The bodies, and the obstacles' edges, are kept by the cells of uniform grids ({@link CellGrid}),
+ * so a query looks only at what is near it. The bodies it looks at are taken in body-id order, as a
+ * scan of all bodies would; the edges in the order a JTS STRtree of them answers a query (the order
+ * of its leaves), as this class looked them up before it had grids. The answers are the same.
  *
  * <p>Threads: the methods that change the world ({@link #addBody}, {@link #moveBody},
  * {@link #replaceBody}) must not run while any other method runs. The queries sensors use
@@ -42,17 +44,20 @@ public final class GeometryClient {
     private static final double MAX_PIECE_LENGTH = 50;
     /** The contact search stops when the remaining gap of motion is below this, in mm. */
     private static final double CONTACT_TOLERANCE = 0.05;
-    /** The side of a cell of the bodies' grid, mm: a few robots across. */
+    /** The side of a cell of the grids, mm: a few robots across. */
     static final double DEFAULT_CELL_SIZE = 2000;
 
     private final GeometryFactory factory = new GeometryFactory();
     private final STRtree obstacleIndex = new STRtree();
-    private final STRtree segmentIndex = new STRtree();
+    /** The obstacles' edges, in the order of an STRtree's leaves, each with its envelope, and their grid. */
+    private final Segment[] edges;
+    private final Envelope[] edgeEnvelopes;
+    private final CellGrid edgeGrid;
     private final List<Body> bodies = new ArrayList<>();
     private final double cellSize;
     /** The area the bodies' grid covers; null until there is an obstacle or a body. */
     private Envelope gridExtent;
-    private BodyGrid grid;
+    private CellGrid grid;
 
     /**
      * @param obstacles the static walls and obstacles
@@ -70,15 +75,25 @@ public final class GeometryClient {
             throw new IllegalArgumentException(cellSize + " was supplied for cellSize: it must be greater than 0");
         }
         this.cellSize = cellSize;
+        STRtree segmentIndex = new STRtree();
+        int count = 0;
         for (Polygon p : obstacles) {
             obstacleIndex.insert(p.getEnvelopeInternal(), PreparedGeometryFactory.prepare(p));
-            addRing(p.getExteriorRing());
+            count += addRing(segmentIndex, p.getExteriorRing());
             for (int i = 0; i < p.getNumInteriorRing(); i++) {
-                addRing(p.getInteriorRingN(i));
+                count += addRing(segmentIndex, p.getInteriorRingN(i));
             }
         }
         obstacleIndex.build();
         segmentIndex.build();
+        // an STRtree answers a query with the leaves that meet it, in the order of its leaves
+        List<?> ordered = segmentIndex.query(new Envelope(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY));
+        if (ordered.size() != count) {
+            throw new IllegalStateException("the STRtree of " + count + " edges gave back " + ordered.size());
+        }
+        edges = ordered.toArray(new Segment[0]);
+        edgeEnvelopes = new Envelope[edges.length];
         for (Polygon p : obstacles) {
             if (gridExtent == null) {
                 gridExtent = new Envelope(p.getEnvelopeInternal());
@@ -87,8 +102,30 @@ public final class GeometryClient {
             }
         }
         if (gridExtent != null) {
-            grid = new BodyGrid(gridExtent, cellSize);
+            grid = new CellGrid(gridExtent, cellSize);
         }
+        edgeGrid = edges.length == 0 ? null : new CellGrid(gridExtent, cellSize);
+        for (int i = 0; i < edges.length; i++) {
+            edgeEnvelopes[i] = envelope(edges[i]);
+            edgeGrid.add(i, edgeEnvelopes[i]);
+        }
+    }
+
+    private static Envelope envelope(Segment s) {
+        return new Envelope(s.x1(), s.x2(), s.y1(), s.y2());
+    }
+
+    /** @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer */
+    List<Segment> edgesNear(Envelope env) {
+        List<Segment> out = new ArrayList<>();
+        if (edgeGrid != null) {
+            for (int i : edgeGrid.query(env)) {
+                if (edgeEnvelopes[i].intersects(env)) {
+                    out.add(edges[i]);
+                }
+            }
+        }
+        return out;
     }
 
     /**
@@ -107,19 +144,21 @@ public final class GeometryClient {
         }
         extent.expandBy(Math.max(extent.getWidth(), extent.getHeight()) / 2 + cellSize);
         gridExtent = extent;
-        grid = new BodyGrid(extent, cellSize);
+        grid = new CellGrid(extent, cellSize);
         for (int i = 0; i < bodies.size(); i++) {
             grid.add(i, bodies.get(i).envelope);
         }
         return true;
     }
 
-    private void addRing(LineString ring) {
+    /** @return how many edges the ring has */
+    private static int addRing(STRtree segmentIndex, LineString ring) {
         Coordinate[] c = ring.getCoordinates();
         for (int i = 0; i + 1 < c.length; i++) {
             Segment s = new Segment(c[i].x, c[i].y, c[i + 1].x, c[i + 1].y);
-            segmentIndex.insert(new Envelope(s.x1(), s.x2(), s.y1(), s.y2()), s);
+            segmentIndex.insert(envelope(s), s);
         }
+        return Math.max(0, c.length - 1);
     }
 
     /**
@@ -314,8 +353,8 @@ public final class GeometryClient {
         double dy = Math.sin(th);
         Envelope env = new Envelope(x, x + dx * maxRange, y, y + dy * maxRange);
         double best = maxRange;
-        for (Object o : segmentIndex.query(env)) {
-            best = Math.min(best, ((Segment) o).rayHit(x, y, dx, dy));
+        for (Segment s : edgesNear(env)) {
+            best = Math.min(best, s.rayHit(x, y, dx, dy));
         }
         for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
@@ -350,8 +389,8 @@ public final class GeometryClient {
         double ly = Math.sin(th + halfAngle);
         Envelope env = coneEnvelope(x, y, th, halfAngle, maxRange);
         double best = maxRange;
-        for (Object o : segmentIndex.query(env)) {
-            best = Math.min(best, ((Segment) o).wedgeDistance(x, y, rx, ry, lx, ly));
+        for (Segment s : edgesNear(env)) {
+            best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
         }
         for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
@@ -415,8 +454,8 @@ public final class GeometryClient {
         }
         double dx = (x2 - x1) / len;
         double dy = (y2 - y1) / len;
-        for (Object o : segmentIndex.query(new Envelope(x1, x2, y1, y2))) {
-            if (((Segment) o).rayHit(x1, y1, dx, dy) < len) {
+        for (Segment s : edgesNear(new Envelope(x1, x2, y1, y2))) {
+            if (s.rayHit(x1, y1, dx, dy) < len) {
                 return false;
             }
         }
@@ -435,10 +474,7 @@ public final class GeometryClient {
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        List<Segment> found = new ArrayList<>();
-        for (Object o : segmentIndex.query(env)) {
-            found.add((Segment) o);
-        }
+        List<Segment> found = edgesNear(env);
         for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {

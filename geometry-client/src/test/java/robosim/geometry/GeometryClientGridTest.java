@@ -9,13 +9,15 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
+import org.locationtech.jts.index.strtree.STRtree;
 
 /**
- * Keeping the bodies by grid cells changes no answer: clients with cells of every size answer
- * every query exactly (bit for bit) as one whose single cell holds all bodies, which looks at
- * every body in id order as a scan of all bodies does; rays and cones also agree with a
- * brute-force pass over every edge in the world. Bodies move (across cell borders, out of the
+ * Keeping the bodies and edges by grid cells changes no answer: clients with cells of every size
+ * answer every query exactly (bit for bit) as one whose single cell holds everything, which looks
+ * at every body in id order as a scan of all bodies does; the edges come in the order an STRtree
+ * of them gives; rays and cones also agree with a brute-force pass over every edge in the world. Bodies move (across cell borders, out of the
  * grid), some are far larger than a cell, and some change shape.
  */
 class GeometryClientGridTest {
@@ -180,6 +182,43 @@ class GeometryClientGridTest {
                 }
             }
             moveSome(rnd, bodies);
+        }
+    }
+
+    @Test
+    void edgesComeAsAnStrTreeOfThemGivesThem() {
+        Random rnd = new Random(8);
+        List<Polygon> obs = new ArrayList<>(obstacles(rnd));
+        obs.add(Worlds.room());
+        STRtree tree = new STRtree();
+        for (Polygon p : obs) {
+            List<Coordinate[]> rings = new ArrayList<>();
+            rings.add(p.getExteriorRing().getCoordinates());
+            for (int i = 0; i < p.getNumInteriorRing(); i++) {
+                rings.add(p.getInteriorRingN(i).getCoordinates());
+            }
+            for (Coordinate[] c : rings) {
+                for (int k = 0; k + 1 < c.length; k++) {
+                    Segment e = new Segment(c[k].x, c[k].y, c[k + 1].x, c[k + 1].y);
+                    tree.insert(new Envelope(e.x1(), e.x2(), e.y1(), e.y2()), e);
+                }
+            }
+        }
+        for (double cell : CELLS) {
+            GeometryClient g = new GeometryClient(obs, cell);
+            for (int k = 0; k < 2000; k++) {
+                double x = rnd.nextDouble() * SPAN * 1.2 - SPAN * 0.1 - 2100;
+                double y = rnd.nextDouble() * SPAN * 1.2 - SPAN * 0.1 - 2100;
+                double side = k % 10 == 0 ? rnd.nextDouble() * SPAN : rnd.nextDouble() * 3000;
+                Envelope env = new Envelope(x, x + side * rnd.nextDouble(), y, y + side * rnd.nextDouble());
+                // the same edges, in the same order (equal edges of two obstacles told apart by identity)
+                List<?> expected = tree.query(env);
+                List<Segment> actual = g.edgesNear(env);
+                assertEquals(expected.size(), actual.size(), "cell " + cell + ", " + env);
+                for (int i = 0; i < actual.size(); i++) {
+                    assertEquals(expected.get(i), actual.get(i), "edge " + i + ", cell " + cell + ", " + env);
+                }
+            }
         }
     }
 

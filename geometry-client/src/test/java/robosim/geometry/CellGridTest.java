@@ -14,8 +14,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.locationtech.jts.geom.Envelope;
 
-/** The bodies' grid finds every body whose envelope meets a query's, once each, in id order. */
-class BodyGridTest {
+/** The grid finds every item whose envelope meets a query's, once each, in id order. */
+class CellGridTest {
     private static Envelope randomBox(Random rnd, double span, double maxSide) {
         double x = rnd.nextDouble() * span - span * 0.1;
         double y = rnd.nextDouble() * span - span * 0.1;
@@ -37,7 +37,7 @@ class BodyGridTest {
         Random rnd = new Random(11);
         double span = 20000;
         // the grid covers only part of where bodies go: outside it they fall into the border cells
-        BodyGrid grid = new BodyGrid(new Envelope(0, span * 0.8, 0, span * 0.8), cell);
+        CellGrid grid = new CellGrid(new Envelope(0, span * 0.8, 0, span * 0.8), cell);
         List<Envelope> bodies = new ArrayList<>();
         for (int i = 0; i < 300; i++) {
             // some bodies are big, spanning many cells
@@ -70,7 +70,7 @@ class BodyGridTest {
 
     @Test
     void aQueryTouchingABodyOnlyAtItsEdgeFindsIt() {
-        BodyGrid grid = new BodyGrid(new Envelope(0, 10000, 0, 10000), 1000);
+        CellGrid grid = new CellGrid(new Envelope(0, 10000, 0, 10000), 1000);
         Envelope body = new Envelope(1000, 2000, 1000, 2000);
         grid.add(0, body);
         // closed envelopes: touching counts as meeting, as JTS's Envelope.intersects has it
@@ -82,18 +82,18 @@ class BodyGridTest {
 
     @Test
     void aHugeExtentGetsLargerCells() {
-        BodyGrid grid = new BodyGrid(new Envelope(0, 1e9, 0, 1e9), 100);
-        assertTrue(grid.cellSize() >= 1e9 / Math.sqrt(BodyGrid.MAX_CELLS), "cell " + grid.cellSize());
+        CellGrid grid = new CellGrid(new Envelope(0, 1e9, 0, 1e9), 100);
+        assertTrue(grid.cellSize() >= 1e9 / Math.sqrt(CellGrid.MAX_CELLS), "cell " + grid.cellSize());
         grid.add(0, new Envelope(5, 6, 5, 6));
         assertArrayEquals(new int[] {0}, grid.query(new Envelope(0, 10, 0, 10)));
     }
 
     @Test
     void idsComeInOrder() {
-        BodyGrid grid = new BodyGrid(new Envelope(0, 100, 0, 100), 10);
+        CellGrid grid = new CellGrid(new Envelope(0, 100, 0, 100), 10);
         grid.add(0, new Envelope(1, 2, 1, 2));
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> grid.add(5, new Envelope(1, 2, 1, 2)));
-        assertEquals("5 was supplied for id: the next body's id is 1", e.getMessage());
+        assertEquals("5 was supplied for id: the next item's id is 1", e.getMessage());
     }
 }

@@ -4,20 +4,20 @@ import java.util.Arrays;
 import org.locationtech.jts.geom.Envelope;
 
 /**
- * The moving bodies by the cells of a uniform grid, so that a query looks only at the bodies near
- * it instead of at all of them. A body is listed in every cell its envelope overlaps. Cell
- * coordinates are clamped to the grid: a body or a query outside it falls into the border cells,
- * so answers stay complete there, only slower.
+ * Items (the moving bodies, or the static edges) by the cells of a uniform grid, so that a query
+ * looks only at the items near it instead of at all of them. An item is listed in every cell its
+ * envelope overlaps. Cell coordinates are clamped to the grid: an item or a query outside it falls
+ * into the border cells, so answers stay complete there, only slower.
  *
- * <p>A query answers the ids of every body whose envelope's cells overlap the query's, so every
- * body whose envelope intersects the query's envelope is among them (the mapping from a coordinate
+ * <p>A query answers the ids of every item whose envelope's cells overlap the query's, so every
+ * item whose envelope intersects the query's envelope is among them (the mapping from a coordinate
  * to its cell is monotonic); the caller applies its exact test. Ids come in ascending order, so
- * whatever the caller does with them happens in body-id order, as a scan of all bodies would.
+ * whatever the caller does with them happens in id order, as a scan of all items would.
  *
  * <p>Changes ({@link #add}, {@link #move}) must not run during queries; queries allocate their own
  * answer and may run concurrently with each other.
  */
-final class BodyGrid {
+final class CellGrid {
     /** At most this many cells; a larger extent gets larger cells. */
     static final int MAX_CELLS = 1 << 20;
 
@@ -26,10 +26,10 @@ final class BodyGrid {
     private final double cell;
     private final int nx;
     private final int ny;
-    /** Per cell, the ids of the bodies in it (in no particular order), and how many there are. */
+    /** Per cell, the ids of the items in it (in no particular order), and how many there are. */
     private final int[][] cells;
     private final int[] counts;
-    /** Per body: the first and last cell column and row of its envelope. */
+    /** Per item: the first and last cell column and row of its envelope. */
     private int[] ranges = new int[4 * 16];
     private int size;
 
@@ -38,7 +38,7 @@ final class BodyGrid {
      * @param cellSize the side of a cell, mm, greater than 0; larger if the extent would need more
      *                 than {@value #MAX_CELLS} cells
      */
-    BodyGrid(Envelope extent, double cellSize) {
+    CellGrid(Envelope extent, double cellSize) {
         if (extent.isNull()) {
             throw new IllegalArgumentException("a body grid needs an extent");
         }
@@ -79,14 +79,14 @@ final class BodyGrid {
     }
 
     /**
-     * Lists a new body; ids must come in order 0, 1, 2, ...
+     * Lists a new item; ids must come in order 0, 1, 2, ...
      *
-     * @param id  the body's id
+     * @param id  the item's id
      * @param env its envelope
      */
     void add(int id, Envelope env) {
         if (id != size) {
-            throw new IllegalArgumentException(id + " was supplied for id: the next body's id is " + size);
+            throw new IllegalArgumentException(id + " was supplied for id: the next item's id is " + size);
         }
         if (ranges.length < 4 * (size + 1)) {
             ranges = Arrays.copyOf(ranges, ranges.length * 2);
@@ -101,9 +101,9 @@ final class BodyGrid {
     }
 
     /**
-     * Moves a body to the cells of its new envelope.
+     * Moves an item to the cells of its new envelope.
      *
-     * @param id  the body's id
+     * @param id  the item's id
      * @param env its new envelope
      */
     void move(int id, Envelope env) {
@@ -160,10 +160,10 @@ final class BodyGrid {
     }
 
     /**
-     * The bodies that may intersect an envelope.
+     * The items that may intersect an envelope.
      *
      * @param env the envelope looked in
-     * @return the ids of every body whose cells overlap the envelope's, each once, ascending
+     * @return the ids of every item whose cells overlap the envelope's, each once, ascending
      */
     int[] query(Envelope env) {
         if (env.isNull() || size == 0) {
@@ -186,7 +186,7 @@ final class BodyGrid {
                 for (int i = 0; i < k; i++) {
                     int id = ids[i];
                     int r = 4 * id;
-                    // a body in several of these cells is taken only in the first of them
+                    // an item in several of these cells is taken only in the first of them
                     if (x == Math.max(ranges[r], qx0) && y == Math.max(ranges[r + 1], qy0)) {
                         if (n == out.length) {
                             out = Arrays.copyOf(out, n * 2);
