@@ -9,11 +9,29 @@ import java.util.List;
  * the gathered radius.
  */
 public final class Surroundings {
+    /**
+     * How far outside a cone or off a ray an edge must lie, beyond its own half length, to be
+     * passed over without computing its range, mm: far above the rounding of either computation, so
+     * an edge passed over is one whose range would have come out infinite.
+     */
+    private static final double SKIP_MARGIN = 1e-3;
+    /** The rounding of coordinates grows with their size: this much per mm of coordinate. */
+    private static final double SKIP_MARGIN_PER_MM = 1e-9;
+
     private final double cx;
     private final double cy;
     private final Segment[] segments;
     /** Each segment's distance from the centre, ascending, in the order of {@link #segments}. */
     private final double[] nearest;
+    /** Each segment's first point and its vector to the second. */
+    private final double[] x1;
+    private final double[] y1;
+    private final double[] ex;
+    private final double[] ey;
+    /** Each segment's midpoint, and its half length plus the margin for rounding. */
+    private final double[] mx;
+    private final double[] my;
+    private final double[] slack;
 
     /** Sorts the edges by their distance from the centre, so a query can stop early. */
     Surroundings(double cx, double cy, List<Segment> found) {
@@ -27,9 +45,25 @@ public final class Surroundings {
         int[] order = stableOrder(d);
         segments = new Segment[n];
         nearest = new double[n];
+        x1 = new double[n];
+        y1 = new double[n];
+        ex = new double[n];
+        ey = new double[n];
+        mx = new double[n];
+        my = new double[n];
+        slack = new double[n];
         for (int i = 0; i < n; i++) {
-            segments[i] = found.get(order[i]);
+            Segment e = found.get(order[i]);
+            segments[i] = e;
             nearest[i] = d[order[i]];
+            x1[i] = e.x1();
+            y1[i] = e.y1();
+            ex[i] = e.x2() - e.x1();
+            ey[i] = e.y2() - e.y1();
+            mx[i] = (e.x1() + e.x2()) / 2;
+            my[i] = (e.y1() + e.y2()) / 2;
+            slack[i] = Math.sqrt(ex[i] * ex[i] + ey[i] * ey[i]) / 2 + SKIP_MARGIN
+                    + SKIP_MARGIN_PER_MM * (Math.abs(e.x1()) + Math.abs(e.y1()) + Math.abs(e.x2()) + Math.abs(e.y2()));
         }
     }
 
@@ -108,12 +142,21 @@ public final class Surroundings {
         double dy = Math.sin(th);
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+        double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
         for (int i = 0; i < segments.length; i++) {
             // no edge farther from the centre can be hit nearer than this
             if (nearest[i] - offset > best) {
                 break;
             }
-            best = Math.min(best, segments[i].rayHit(x, y, dx, dy));
+            // an edge wholly to one side of the ray's line, or behind its origin, is missed
+            double ax = mx[i] - x;
+            double ay = my[i] - y;
+            double off = slack[i] + apexSlack;
+            double side = dx * ay - dy * ax;
+            if (side > off || side < -off || dx * ax + dy * ay < -off) {
+                continue;
+            }
+            best = Math.min(best, Segment.rayHit(x1[i], y1[i], ex[i], ey[i], x, y, dx, dy));
         }
         return best;
     }
@@ -135,12 +178,20 @@ public final class Surroundings {
         double ly = Math.sin(th + halfAngle);
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+        double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
         for (int i = 0; i < segments.length; i++) {
             // no edge farther from the centre can be nearer the apex than this one
             if (nearest[i] - offset > best) {
                 break;
             }
-            best = Math.min(best, segments[i].wedgeDistance(x, y, rx, ry, lx, ly));
+            // an edge wholly outside either side of the wedge has no part inside it
+            double ax = mx[i] - x;
+            double ay = my[i] - y;
+            double off = -(slack[i] + apexSlack);
+            if (rx * ay - ry * ax < off || ax * ly - ay * lx < off) {
+                continue;
+            }
+            best = Math.min(best, Segment.wedgeDistance(x1[i], y1[i], ex[i], ey[i], x, y, rx, ry, lx, ly));
         }
         return best;
     }
