@@ -1,88 +1,132 @@
 package robosim.env.net;
 
-import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.ForkJoinWorkerThread;
-import java.util.concurrent.RecursiveAction;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.IntConsumer;
 import robosim.env.core.Parallel;
 
 /**
- * The simulation's parallel loop on a pool of worker threads: the indexes are cut into a few
- * chunks per thread, which the pool's threads share out while the caller waits. With one thread
- * there is no pool and the loop runs on the caller. Close it to stop the threads.
+ * The simulation's parallel loop on a fixed pool: the calling thread and {@code threads − 1}
+ * workers (daemons named {@code env-worker-N}) take chunks of the indexes, a few chunks per
+ * thread, until none is left; the call returns when every chunk has run. A chunk holds at least
+ * {@value #MIN_CHUNK} indexes (waking a worker costs about as much as reading a few robots'
+ * sensors), so a short loop runs on the caller alone. With one thread there is no pool and the
+ * loop always runs on the caller. Close it to stop the workers.
+ *
+ * <p>Each index runs exactly once; which thread runs it does not matter to the simulation, whose
+ * loop bodies touch only their own robot. The workers' writes are visible to the caller when the
+ * call returns.
  */
 public final class PooledParallel implements Parallel, AutoCloseable {
     /** Chunks per thread: enough for an even share when robots cost unequally (a laser costs more). */
     private static final int CHUNKS_PER_THREAD = 4;
+    /** The fewest indexes in a chunk. */
+    static final int MIN_CHUNK = 16;
 
     private final int threads;
-    private final ForkJoinPool pool;
+    private final ExecutorService workers;
 
     /**
-     * @param threads how many threads run the loop, at least 1
+     * @param threads how many threads run the loop, the caller included, at least 1
      * @throws IllegalArgumentException if {@code threads} is below 1
      */
     public PooledParallel(int threads) {
         ServerOptions.requireAtLeast("threads", threads, 1);
         this.threads = threads;
-        this.pool = threads == 1 ? null : new ForkJoinPool(threads, p -> {
-            ForkJoinWorkerThread t = ForkJoinPool.defaultForkJoinWorkerThreadFactory.newThread(p);
-            t.setName("env-worker-" + t.getPoolIndex());
+        AtomicInteger made = new AtomicInteger();
+        this.workers = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {
+            Thread t = new Thread(r, "env-worker-" + made.incrementAndGet());
             t.setDaemon(true);
             return t;
-        }, null, false);
+        });
     }
 
-    /** @return how many threads run the loop */
+    /** @return how many threads run the loop, the caller included */
     public int threads() {
         return threads;
     }
 
     @Override
     public void forEach(int n, IntConsumer body) {
-        if (pool == null || n < 2) {
+        int chunks = Math.min(n / MIN_CHUNK, threads * CHUNKS_PER_THREAD);
+        if (workers == null || chunks < 2) {
             Parallel.SERIAL.forEach(n, body);
             return;
         }
-        int chunks = Math.min(n, threads * CHUNKS_PER_THREAD);
-        pool.invoke(new Chunks(0, chunks, chunks, n, body));
+        Loop loop = new Loop(n, chunks, body);
+        for (int i = 1; i < threads; i++) {
+            workers.execute(loop::work);
+        }
+        loop.work();
+        loop.await();
     }
 
-    /** Chunks {@code from} to {@code to} − 1 of {@code chunks} equal parts of the indexes 0 to n − 1. */
-    private static final class Chunks extends RecursiveAction {
-        private final int from;
-        private final int to;
-        private final int chunks;
+    /** One call's chunks: taken in turn by whichever thread asks next. */
+    private static final class Loop {
         private final int n;
-        private final transient IntConsumer body;
+        private final int chunks;
+        private final IntConsumer body;
+        private final AtomicInteger next = new AtomicInteger();
+        private final CountDownLatch done;
+        private final AtomicReference<Throwable> failure = new AtomicReference<>();
 
-        Chunks(int from, int to, int chunks, int n, IntConsumer body) {
-            this.from = from;
-            this.to = to;
-            this.chunks = chunks;
+        Loop(int n, int chunks, IntConsumer body) {
             this.n = n;
+            this.chunks = chunks;
             this.body = body;
+            this.done = new CountDownLatch(chunks);
         }
 
-        @Override
-        protected void compute() {
-            if (to - from > 1) {
-                int mid = (from + to) >>> 1;
-                invokeAll(new Chunks(from, mid, chunks, n, body), new Chunks(mid, to, chunks, n, body));
-                return;
+        void work() {
+            for (int c = next.getAndIncrement(); c < chunks; c = next.getAndIncrement()) {
+                try {
+                    int end = (int) ((long) (c + 1) * n / chunks);
+                    for (int i = (int) ((long) c * n / chunks); i < end; i++) {
+                        body.accept(i);
+                    }
+                } catch (Throwable t) {
+                    failure.compareAndSet(null, t);
+                } finally {
+                    done.countDown();
+                }
             }
-            int end = (int) ((long) to * n / chunks);
-            for (int i = (int) ((long) from * n / chunks); i < end; i++) {
-                body.accept(i);
+        }
+
+        /** Waits for every chunk, then throws what a body threw, if any did. */
+        void await() {
+            boolean interrupted = false;
+            while (true) {
+                try {
+                    done.await();
+                    break;
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+            Throwable t = failure.get();
+            if (t instanceof RuntimeException e) {
+                throw e;
+            }
+            if (t instanceof Error e) {
+                throw e;
+            }
+            if (t != null) {
+                throw new IllegalStateException(t);
             }
         }
     }
 
-    /** Stops the pool's threads; the loop must not be used after. */
+    /** Stops the workers; the loop must not be used after. */
     @Override
     public void close() {
-        if (pool != null) {
-            pool.shutdown();
+        if (workers != null) {
+            workers.shutdown();
         }
     }
 }
