@@ -6,13 +6,14 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
+import robosim.env.net.PooledParallel;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
 
 /**
  * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
- * {@link BenchRobots}, without TCP or threads. The gap to {@link StepRateBench} is what the wire
- * and the lockstep handoffs cost.
+ * {@link BenchRobots}, without TCP or robot threads (the sensors read on one thread, or on as many
+ * as asked). The gap to {@link StepRateBench} is what the wire and the lockstep handoffs cost.
  */
 public final class CoreBench {
     private CoreBench() {
@@ -27,7 +28,28 @@ public final class CoreBench {
      * @throws IOException if the world cannot be written
      */
     public static StepRateBench.Result run(int robots, long steps, Path dir, Path robotFile) throws IOException {
-        Simulation sim = new Simulation(WorldReader.read(GridWorld.write(robots, dir, robotFile)));
+        return run(robots, steps, dir, robotFile, 1);
+    }
+
+    /**
+     * @param robots    robots in the grid
+     * @param steps     steps to run
+     * @param dir       where to write the world
+     * @param robotFile the p3dx parameter file
+     * @param threads   threads that read the sensors, as the Environment's {@code --threads}; 1 for
+     *                  the calling thread alone
+     * @return the figures
+     * @throws IOException if the world cannot be written
+     */
+    public static StepRateBench.Result run(int robots, long steps, Path dir, Path robotFile, int threads)
+            throws IOException {
+        try (PooledParallel parallel = new PooledParallel(threads)) {
+            Simulation sim = new Simulation(WorldReader.read(GridWorld.write(robots, dir, robotFile)), 1, parallel);
+            return run(sim, robots, steps);
+        }
+    }
+
+    private static StepRateBench.Result run(Simulation sim, int robots, long steps) {
         List<String> names = sim.robotNames();
         long t0 = System.nanoTime();
         for (long s = 0; s < steps; s++) {
