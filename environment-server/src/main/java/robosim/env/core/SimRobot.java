@@ -2,6 +2,7 @@ package robosim.env.core;
 
 import java.util.List;
 import java.util.random.RandomGenerator;
+import org.locationtech.jts.geom.Envelope;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.geometry.BodyShape;
@@ -131,13 +132,13 @@ final class SimRobot {
      * @param env an envelope in the world
      * @return whether a body within it could change what this robot's range sensors read now
      */
-    boolean sees(org.locationtech.jts.geom.Envelope env) {
+    boolean sees(Envelope env) {
         double reach = sensors.reach();
         if (reach <= 0) {
             return false;
         }
         double r = reach + body.radius();
-        return env.intersects(new org.locationtech.jts.geom.Envelope(x - r, x + r, y - r, y + r));
+        return env.intersects(new Envelope(x - r, x + r, y - r, y + r));
     }
 
     Pose2D pose() {
