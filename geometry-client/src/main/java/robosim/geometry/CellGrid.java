@@ -173,7 +173,7 @@ final class CellGrid {
         int qy0 = row(env.getMinY());
         int qx1 = column(env.getMaxX());
         int qy1 = row(env.getMaxY());
-        int[] out = new int[16];
+        int[] out = new int[64];
         int n = 0;
         for (int y = qy0; y <= qy1; y++) {
             for (int x = qx0; x <= qx1; x++) {

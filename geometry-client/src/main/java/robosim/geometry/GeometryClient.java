@@ -117,12 +117,22 @@ public final class GeometryClient {
 
     /** @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer */
     List<Segment> edgesNear(Envelope env) {
-        List<Segment> out = new ArrayList<>();
-        if (edgeGrid != null) {
-            for (int i : edgeGrid.query(env)) {
-                if (edgeEnvelopes[i].intersects(env)) {
-                    out.add(edges[i]);
-                }
+        return edgesNear(env, 0);
+    }
+
+    /**
+     * @param room how many more items the list will be given
+     * @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer
+     */
+    private List<Segment> edgesNear(Envelope env, int room) {
+        if (edgeGrid == null) {
+            return new ArrayList<>(room);
+        }
+        int[] near = edgeGrid.query(env);
+        List<Segment> out = new ArrayList<>(near.length + room);
+        for (int i : near) {
+            if (edgeEnvelopes[i].intersects(env)) {
+                out.add(edges[i]);
             }
         }
         return out;
@@ -474,8 +484,9 @@ public final class GeometryClient {
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        List<Segment> found = edgesNear(env);
-        for (int i : bodiesNear(env)) {
+        int[] near = bodiesNear(env);
+        List<Segment> found = edgesNear(env, 4 * near.length);
+        for (int i : near) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 found.addAll(java.util.Arrays.asList(b.segments));

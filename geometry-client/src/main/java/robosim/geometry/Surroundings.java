@@ -67,14 +67,68 @@ public final class Surroundings {
         }
     }
 
-    /** Runs shorter than this are sorted by insertion. */
-    private static final int INSERTION_RUN = 16;
+    /** A bucket holding more keys than this sends the keys to the merge sort. */
+    private static final int MAX_BUCKET = 32;
 
     /**
      * The indexes of {@code keys} in ascending order of their keys ({@link Double#compare}), equal
-     * keys in the order they came: the order a stable sort gives, without boxing.
+     * keys in the order they came: the order a stable sort gives, without boxing. The keys (the
+     * edges' distances) are spread evenly enough for a bucket sort: a counting sort into as many
+     * buckets as keys, each bucket a slice of the range up to the largest key, then insertion by
+     * the exact key and index, which has only the few keys sharing a bucket to put in order.
      */
     static int[] stableOrder(double[] keys) {
+        int n = keys.length;
+        double max = 0;
+        for (double k : keys) {
+            if (k > max) {
+                max = k;
+            }
+        }
+        if (n < 2 || !(max > 0 && max < Double.POSITIVE_INFINITY)) {
+            return mergeOrder(keys);
+        }
+        double scale = (n - 1) / max;
+        int[] start = new int[n + 1];
+        int[] bucket = new int[n];
+        for (int i = 0; i < n; i++) {
+            double b = keys[i] * scale;
+            int k = b >= 0 ? (int) Math.min(n - 1, b) : 0;
+            bucket[i] = k;
+            if (++start[k + 1] > MAX_BUCKET) {
+                return mergeOrder(keys);
+            }
+        }
+        for (int k = 0; k < n; k++) {
+            start[k + 1] += start[k];
+        }
+        int[] order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[start[bucket[i]]++] = i;
+        }
+        for (int p = 1; p < n; p++) {
+            int v = order[p];
+            int j = p - 1;
+            while (j >= 0 && after(keys, order[j], v)) {
+                order[j + 1] = order[j];
+                j--;
+            }
+            order[j + 1] = v;
+        }
+        return order;
+    }
+
+    /** @return whether index {@code a} comes after index {@code b}: a larger key, or an equal key and a larger index */
+    private static boolean after(double[] keys, int a, int b) {
+        int c = Double.compare(keys[a], keys[b]);
+        return c > 0 || c == 0 && a > b;
+    }
+
+    /** Runs shorter than this are sorted by insertion. */
+    private static final int INSERTION_RUN = 16;
+
+    /** {@link #stableOrder} by a merge sort, for any keys. */
+    static int[] mergeOrder(double[] keys) {
         int n = keys.length;
         int[] a = new int[n];
         for (int i = 0; i < n; i++) {

@@ -251,19 +251,35 @@ class GeometryClientGridTest {
     @Test
     void stableOrderIsTheOrderOfAStableSort() {
         Random rnd = new Random(3);
-        for (int n : new int[] {0, 1, 2, 15, 16, 17, 33, 100, 257, 1000}) {
-            double[] keys = new double[n];
-            for (int i = 0; i < n; i++) {
-                // many ties, and zeros of both signs
-                keys[i] = rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 0.0 : -0.0) : rnd.nextInt(n / 3 + 1) * 0.5;
+        for (int kind = 0; kind < 6; kind++) {
+            for (int n : new int[] {0, 1, 2, 15, 16, 17, 33, 100, 257, 1000}) {
+                double[] keys = new double[n];
+                for (int i = 0; i < n; i++) {
+                    keys[i] = switch (kind) {
+                        // many ties, and zeros of both signs
+                        case 0 -> rnd.nextInt(4) == 0 ? (rnd.nextBoolean() ? 0.0 : -0.0) : rnd.nextInt(n / 3 + 1) * 0.5;
+                        // distances spread as an edge's are
+                        case 1 -> Math.sqrt(rnd.nextDouble()) * 7000;
+                        // bunched up near one value, one far away
+                        case 2 -> i == n / 2 ? 1e9 : 1000 + rnd.nextDouble();
+                        // all equal
+                        case 3 -> 42;
+                        // keys only one ulp apart
+                        case 4 -> Math.nextUp(1000.0 + rnd.nextInt(3) * Math.ulp(1000.0));
+                        // now and then not a number or infinite
+                        default -> rnd.nextInt(20) == 0 ? (rnd.nextBoolean() ? Double.NaN : Double.POSITIVE_INFINITY)
+                                : rnd.nextDouble() * 5000;
+                    };
+                }
+                Integer[] boxed = new Integer[n];
+                for (int i = 0; i < n; i++) {
+                    boxed[i] = i;
+                }
+                Arrays.sort(boxed, (a, b) -> Double.compare(keys[a], keys[b]));
+                int[] expected = Arrays.stream(boxed).mapToInt(Integer::intValue).toArray();
+                assertArrayEquals(expected, Surroundings.stableOrder(keys), "kind " + kind + ", n = " + n);
+                assertArrayEquals(expected, Surroundings.mergeOrder(keys), "kind " + kind + ", n = " + n);
             }
-            Integer[] boxed = new Integer[n];
-            for (int i = 0; i < n; i++) {
-                boxed[i] = i;
-            }
-            Arrays.sort(boxed, (a, b) -> Double.compare(keys[a], keys[b]));
-            assertArrayEquals(Arrays.stream(boxed).mapToInt(Integer::intValue).toArray(), Surroundings.stableOrder(keys),
-                    "n = " + n);
         }
     }
 }
