@@ -57,7 +57,8 @@ public final class Simulation {
     private final Map<String, Integer> indexes = new HashMap<>();
     /** Before step 1: whose sensors are yet to be read (their noise streams untouched). */
     private final boolean[] unread;
-    private Parallel parallel = Parallel.SERIAL;
+    /** Volatile: the Environment may put the simulation back on one thread as it closes. */
+    private volatile Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
     private final List<Snapshot.Said> said = new ArrayList<>();
     private Find find;

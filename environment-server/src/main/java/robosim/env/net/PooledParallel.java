@@ -3,6 +3,7 @@ package robosim.env.net;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.IntConsumer;
@@ -58,7 +59,12 @@ public final class PooledParallel implements Parallel, AutoCloseable {
         }
         Loop loop = new Loop(n, chunks, body);
         for (int i = 1; i < threads; i++) {
-            workers.execute(loop::work);
+            try {
+                workers.execute(loop::work);
+            } catch (RejectedExecutionException e) {
+                // closed meanwhile: the caller takes every chunk left
+                break;
+            }
         }
         loop.work();
         loop.await();
@@ -122,7 +128,7 @@ public final class PooledParallel implements Parallel, AutoCloseable {
         }
     }
 
-    /** Stops the workers; the loop must not be used after. */
+    /** Stops the workers; a loop after that runs on the caller alone. */
     @Override
     public void close() {
         if (workers != null) {

@@ -45,6 +45,17 @@ class PooledParallelTest {
     }
 
     @Test
+    void aClosedPoolRunsTheLoopOnTheCaller() {
+        PooledParallel p = new PooledParallel(3);
+        p.close();
+        AtomicIntegerArray runs = new AtomicIntegerArray(500);
+        p.forEach(500, runs::incrementAndGet);
+        for (int i = 0; i < 500; i++) {
+            assertEquals(1, runs.get(i), "index " + i);
+        }
+    }
+
+    @Test
     void noThreadsIsRefused() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new PooledParallel(0));
         assertEquals("0 was supplied for threads: it must be at least 1", e.getMessage());
