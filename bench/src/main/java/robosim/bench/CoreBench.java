@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
+import robosim.env.net.PooledParallel;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
@@ -13,7 +14,7 @@ import robosim.protocol.RobotState;
 
 /**
  * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
- * {@link BenchRobots}, without TCP or threads. The gap to {@link StepRateBench} is what the wire
+ * {@link BenchRobots}, without TCP or robot threads (the sensors read on one thread, or on as many as asked). The gap to {@link StepRateBench} is what the wire
  * and the lockstep handoffs cost.
  */
 public final class CoreBench {
@@ -27,16 +28,24 @@ public final class CoreBench {
      * @param steps     steps to run
      * @param dir       where to write the world
      * @param robotFile the p3dx parameter file
+     * @param threads   threads that read the sensors, as the Environment's {@code --threads}; 1 for
+     *                  the calling thread alone
      * @return the figures; the load time is reading the world and building the Simulation
      * @throws IOException if the world cannot be written
      */
-    public static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path dir, Path robotFile)
-            throws IOException {
-        Path worldFile = GridWorld.write(robots, dir, robotFile);
+    public static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path dir, Path robotFile,
+                                           int threads) throws IOException {
+        try (PooledParallel parallel = new PooledParallel(threads)) {
+            return run(robots, sensors, steps, GridWorld.write(robots, dir, robotFile), parallel);
+        }
+    }
+
+    private static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path worldFile,
+                                            PooledParallel parallel) {
         long t0 = System.nanoTime();
         World world = WorldReader.read(worldFile);
         long t1 = System.nanoTime();
-        Simulation sim = new Simulation(world);
+        Simulation sim = new Simulation(world, 1, parallel);
         long t2 = System.nanoTime();
         List<String> names = sim.robotNames();
         int[] none = new int[0];

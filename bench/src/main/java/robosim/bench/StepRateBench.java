@@ -88,13 +88,14 @@ public final class StepRateBench {
      * @param steps     steps to run
      * @param dir       where to write the world and the clients' logs
      * @param robotFile the p3dx parameter file
+     * @param threads   threads of the Environment that read the robots' sensors ({@code --threads})
      * @return the figures
      * @throws IOException           if the world or a client JVM cannot be started
      * @throws InterruptedException  if interrupted
      * @throws IllegalStateException if a client JVM fails or the run ends early
      */
-    public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile)
-            throws IOException, InterruptedException {
+    public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile,
+                             int threads) throws IOException, InterruptedException {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
         long t0 = System.nanoTime();
         World world = WorldReader.read(worldFile);
@@ -102,7 +103,7 @@ public final class StepRateBench {
         Simulation sim = new Simulation(world);
         long t2 = System.nanoTime();
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS,
-                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME);
+                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads);
         List<BenchRobots.Share> shares = BenchRobots.split(robots, clients);
         List<Process> started = new CopyOnWriteArrayList<>();
         ClientWatch watch = new ClientWatch(Thread.currentThread());

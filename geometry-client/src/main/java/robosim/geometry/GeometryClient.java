@@ -22,7 +22,20 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  *
  * <p>Ranges are exact: a ray reports the nearest intersection with any edge; a cone reports the
  * nearest point of any edge that lies inside the cone's wedge (no reflections, no beam pattern).
- * Not thread-safe; the simulation owns one instance.
+ *
+ * <p>The bodies, and the obstacles' edges, are kept by the cells of uniform grids ({@link CellGrid}),
+ * so a query looks only at what is near it. The bodies it looks at are taken in body-id order, as a
+ * scan of all bodies would; the edges in the order a JTS STRtree of them answers a query (the order
+ * of its leaves), as this class looked them up before it had grids. The answers are the same.
+ *
+ * <p>Threads: the methods that change the world ({@link #addBody}, {@link #moveBody},
+ * {@link #replaceBody}) must not run while any other method runs. The queries sensors use
+ * ({@link #rayRange}, {@link #coneRange}, {@link #around}, {@link #lineOfSight}, {@link #bodyPose},
+ * {@link #bodyPolygon}, {@link #bodyShape}) keep no scratch state, only read, and may run
+ * concurrently with each other, for example one robot's sensors per thread. The motion queries
+ * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep no scratch state here either, but
+ * they go through JTS's prepared geometries and distance operations; the simulation calls them
+ * from one thread.
  */
 public final class GeometryClient {
     /** Largest heading change of one sweep piece; bounds the hull's error on arcs to about 0.1 mm. */
@@ -31,33 +44,131 @@ public final class GeometryClient {
     private static final double MAX_PIECE_LENGTH = 50;
     /** The contact search stops when the remaining gap of motion is below this, in mm. */
     private static final double CONTACT_TOLERANCE = 0.05;
+    /** The side of a cell of the grids, mm: a few robots across. */
+    static final double DEFAULT_CELL_SIZE = 2000;
 
     private final GeometryFactory factory = new GeometryFactory();
     private final STRtree obstacleIndex = new STRtree();
-    private final STRtree segmentIndex = new STRtree();
+    /** The obstacles' edges, in the order of an STRtree's leaves, each with its envelope, and their grid. */
+    private final Segment[] edges;
+    private final Envelope[] edgeEnvelopes;
+    private final CellGrid edgeGrid;
     private final List<Body> bodies = new ArrayList<>();
+    private final double cellSize;
+    /** The area the bodies' grid covers; null until there is an obstacle or a body. */
+    private Envelope gridExtent;
+    private CellGrid grid;
 
     /**
      * @param obstacles the static walls and obstacles
      */
     public GeometryClient(List<Polygon> obstacles) {
+        this(obstacles, DEFAULT_CELL_SIZE);
+    }
+
+    /**
+     * @param obstacles the static walls and obstacles
+     * @param cellSize  the side of a cell of the bodies' grid, mm, greater than 0
+     */
+    GeometryClient(List<Polygon> obstacles, double cellSize) {
+        if (!(cellSize > 0) || !Double.isFinite(cellSize)) {
+            throw new IllegalArgumentException(cellSize + " was supplied for cellSize: it must be greater than 0");
+        }
+        this.cellSize = cellSize;
+        STRtree segmentIndex = new STRtree();
+        int count = 0;
         for (Polygon p : obstacles) {
             obstacleIndex.insert(p.getEnvelopeInternal(), PreparedGeometryFactory.prepare(p));
-            addRing(p.getExteriorRing());
+            count += addRing(segmentIndex, p.getExteriorRing());
             for (int i = 0; i < p.getNumInteriorRing(); i++) {
-                addRing(p.getInteriorRingN(i));
+                count += addRing(segmentIndex, p.getInteriorRingN(i));
             }
         }
         obstacleIndex.build();
         segmentIndex.build();
+        // an STRtree answers a query with the leaves that meet it, in the order of its leaves
+        List<?> ordered = segmentIndex.query(new Envelope(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY));
+        if (ordered.size() != count) {
+            throw new IllegalStateException("the STRtree of " + count + " edges gave back " + ordered.size());
+        }
+        edges = ordered.toArray(new Segment[0]);
+        edgeEnvelopes = new Envelope[edges.length];
+        for (Polygon p : obstacles) {
+            if (gridExtent == null) {
+                gridExtent = new Envelope(p.getEnvelopeInternal());
+            } else {
+                gridExtent.expandToInclude(p.getEnvelopeInternal());
+            }
+        }
+        if (gridExtent != null) {
+            grid = new CellGrid(gridExtent, cellSize);
+        }
+        edgeGrid = edges.length == 0 ? null : new CellGrid(gridExtent, cellSize);
+        for (int i = 0; i < edges.length; i++) {
+            edgeEnvelopes[i] = envelope(edges[i]);
+            edgeGrid.add(i, edgeEnvelopes[i]);
+        }
     }
 
-    private void addRing(LineString ring) {
+    private static Envelope envelope(Segment s) {
+        return new Envelope(s.x1(), s.x2(), s.y1(), s.y2());
+    }
+
+    /** @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer */
+    List<Segment> edgesNear(Envelope env) {
+        return edgesNear(env, 0);
+    }
+
+    /**
+     * @param room how many more items the list will be given
+     * @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer
+     */
+    private List<Segment> edgesNear(Envelope env, int room) {
+        if (edgeGrid == null) {
+            return new ArrayList<>(room);
+        }
+        int[] near = edgeGrid.query(env);
+        List<Segment> out = new ArrayList<>(near.length + room);
+        for (int i : near) {
+            if (edgeEnvelopes[i].intersects(env)) {
+                out.add(edges[i]);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Grows the bodies' grid, when a body lies outside it, to about twice the size it then needs,
+     * and lists every body in it again.
+     *
+     * @return false if the grid already covered the envelope and nothing was done
+     */
+    private boolean regrid(Envelope env) {
+        if (grid != null && grid.covers(env)) {
+            return false;
+        }
+        Envelope extent = new Envelope(env);
+        if (gridExtent != null) {
+            extent.expandToInclude(gridExtent);
+        }
+        extent.expandBy(Math.max(extent.getWidth(), extent.getHeight()) / 2 + cellSize);
+        gridExtent = extent;
+        grid = new CellGrid(extent, cellSize);
+        for (int i = 0; i < bodies.size(); i++) {
+            grid.add(i, bodies.get(i).envelope);
+        }
+        return true;
+    }
+
+    /** @return how many edges the ring has */
+    private static int addRing(STRtree segmentIndex, LineString ring) {
         Coordinate[] c = ring.getCoordinates();
         for (int i = 0; i + 1 < c.length; i++) {
             Segment s = new Segment(c[i].x, c[i].y, c[i + 1].x, c[i + 1].y);
-            segmentIndex.insert(new Envelope(s.x1(), s.x2(), s.y1(), s.y2()), s);
+            segmentIndex.insert(envelope(s), s);
         }
+        return Math.max(0, c.length - 1);
     }
 
     /**
@@ -89,8 +200,12 @@ public final class GeometryClient {
     public int addBody(BodyShape shape, Pose2D pose) {
         Body b = new Body(shape);
         b.place(pose, factory);
+        int id = bodies.size();
         bodies.add(b);
-        return bodies.size() - 1;
+        if (!regrid(b.envelope)) {
+            grid.add(id, b.envelope);
+        }
+        return id;
     }
 
     /**
@@ -100,7 +215,35 @@ public final class GeometryClient {
      * @param pose its new pose
      */
     public void moveBody(int id, Pose2D pose) {
-        bodies.get(id).place(pose, factory);
+        Body b = bodies.get(id);
+        b.place(pose, factory);
+        if (!regrid(b.envelope)) {
+            grid.move(id, b.envelope);
+        }
+    }
+
+    /**
+     * Gives a body another shape where it stands, with no collision check: a robot's body as its
+     * program describes it. The other bodies and the obstacles stay as they are.
+     *
+     * @param id    the body
+     * @param shape its new shape
+     */
+    public void replaceBody(int id, BodyShape shape) {
+        Body b = new Body(shape);
+        b.place(bodies.get(id).pose, factory);
+        bodies.set(id, b);
+        if (!regrid(b.envelope)) {
+            grid.move(id, b.envelope);
+        }
+    }
+
+    /**
+     * @param id the body
+     * @return its shape
+     */
+    public BodyShape bodyShape(int id) {
+        return bodies.get(id).shape;
     }
 
     /**
@@ -196,7 +339,7 @@ public final class GeometryClient {
                 return true;
             }
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body other = bodies.get(i);
             if (i != ignoreId && other.envelope.intersects(env) && other.polygon.intersects(g)) {
                 return true;
@@ -220,10 +363,10 @@ public final class GeometryClient {
         double dy = Math.sin(th);
         Envelope env = new Envelope(x, x + dx * maxRange, y, y + dy * maxRange);
         double best = maxRange;
-        for (Object o : segmentIndex.query(env)) {
-            best = Math.min(best, ((Segment) o).rayHit(x, y, dx, dy));
+        for (Segment s : edgesNear(env)) {
+            best = Math.min(best, s.rayHit(x, y, dx, dy));
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 for (Segment s : b.segments) {
@@ -256,10 +399,10 @@ public final class GeometryClient {
         double ly = Math.sin(th + halfAngle);
         Envelope env = coneEnvelope(x, y, th, halfAngle, maxRange);
         double best = maxRange;
-        for (Object o : segmentIndex.query(env)) {
-            best = Math.min(best, ((Segment) o).wedgeDistance(x, y, rx, ry, lx, ly));
+        for (Segment s : edgesNear(env)) {
+            best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 for (Segment s : b.segments) {
@@ -287,7 +430,7 @@ public final class GeometryClient {
             Geometry g = ((PreparedGeometry) o).getGeometry();
             addContact(body, g, tolerance, out);
         }
-        for (int i = 0; i < bodies.size(); i++) {
+        for (int i : bodiesNear(env)) {
             Body other = bodies.get(i);
             if (i != id && other.envelope.intersects(env)) {
                 addContact(body, other.polygon, tolerance, out);
@@ -321,8 +464,8 @@ public final class GeometryClient {
         }
         double dx = (x2 - x1) / len;
         double dy = (y2 - y1) / len;
-        for (Object o : segmentIndex.query(new Envelope(x1, x2, y1, y2))) {
-            if (((Segment) o).rayHit(x1, y1, dx, dy) < len) {
+        for (Segment s : edgesNear(new Envelope(x1, x2, y1, y2))) {
+            if (s.rayHit(x1, y1, dx, dy) < len) {
                 return false;
             }
         }
@@ -341,17 +484,20 @@ public final class GeometryClient {
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        List<Segment> found = new ArrayList<>();
-        for (Object o : segmentIndex.query(env)) {
-            found.add((Segment) o);
-        }
-        for (int i = 0; i < bodies.size(); i++) {
+        int[] near = bodiesNear(env);
+        List<Segment> found = edgesNear(env, 4 * near.length);
+        for (int i : near) {
             Body b = bodies.get(i);
             if (i != ignoreId && b.envelope.intersects(env)) {
                 found.addAll(java.util.Arrays.asList(b.segments));
             }
         }
         return new Surroundings(x, y, found);
+    }
+
+    /** @return the ids of the bodies that may intersect an envelope, ascending */
+    private int[] bodiesNear(Envelope env) {
+        return grid == null ? new int[0] : grid.query(env);
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {

@@ -20,8 +20,15 @@ record Segment(double x1, double y1, double x2, double y2) {
      * @return the distance, or {@link Double#POSITIVE_INFINITY} if the ray misses
      */
     double rayHit(double ox, double oy, double dx, double dy) {
-        double ex = x2 - x1;
-        double ey = y2 - y1;
+        return rayHit(x1, y1, x2 - x1, y2 - y1, ox, oy, dx, dy);
+    }
+
+    /**
+     * Distance along a ray to the segment from (x1, y1) to (x1 + ex, y1 + ey).
+     *
+     * @return the distance, or {@link Double#POSITIVE_INFINITY} if the ray misses
+     */
+    static double rayHit(double x1, double y1, double ex, double ey, double ox, double oy, double dx, double dy) {
         double denom = dx * ey - dy * ex;
         double wx = x1 - ox;
         double wy = y1 - oy;
@@ -44,27 +51,48 @@ record Segment(double x1, double y1, double x2, double y2) {
      * @return the distance, or {@link Double#POSITIVE_INFINITY} if no part of the segment is inside
      */
     double wedgeDistance(double ox, double oy, double rx, double ry, double lx, double ly) {
+        return wedgeDistance(x1, y1, x2 - x1, y2 - y1, ox, oy, rx, ry, lx, ly);
+    }
+
+    /**
+     * {@link #wedgeDistance(double, double, double, double, double, double)} of the segment from
+     * (x1, y1) to (x1 + ex, y1 + ey).
+     *
+     * @return the distance, or {@link Double#POSITIVE_INFINITY} if no part of the segment is inside
+     */
+    static double wedgeDistance(double x1, double y1, double ex, double ey, double ox, double oy,
+                                double rx, double ry, double lx, double ly) {
         double ax = x1 - ox;
         double ay = y1 - oy;
-        double ex = x2 - x1;
-        double ey = y2 - y1;
         double lo = 0;
         double hi = 1;
         // inside: cross(r, p) >= 0 and cross(p, l) >= 0, with p = a + t e, each linear in t
-        double[] c0 = {rx * ay - ry * ax, ax * ly - ay * lx};
-        double[] c1 = {rx * ey - ry * ex, ex * ly - ey * lx};
-        for (int k = 0; k < 2; k++) {
-            if (Math.abs(c1[k]) < 1e-15) {
-                if (c0[k] < 0) {
-                    return Double.POSITIVE_INFINITY;
-                }
+        double c0 = rx * ay - ry * ax;
+        double c1 = rx * ey - ry * ex;
+        if (Math.abs(c1) < 1e-15) {
+            if (c0 < 0) {
+                return Double.POSITIVE_INFINITY;
+            }
+        } else {
+            double t = -c0 / c1;
+            if (c1 > 0) {
+                lo = Math.max(lo, t);
             } else {
-                double t = -c0[k] / c1[k];
-                if (c1[k] > 0) {
-                    lo = Math.max(lo, t);
-                } else {
-                    hi = Math.min(hi, t);
-                }
+                hi = Math.min(hi, t);
+            }
+        }
+        c0 = ax * ly - ay * lx;
+        c1 = ex * ly - ey * lx;
+        if (Math.abs(c1) < 1e-15) {
+            if (c0 < 0) {
+                return Double.POSITIVE_INFINITY;
+            }
+        } else {
+            double t = -c0 / c1;
+            if (c1 > 0) {
+                lo = Math.max(lo, t);
+            } else {
+                hi = Math.min(hi, t);
             }
         }
         if (lo > hi) {

@@ -22,6 +22,7 @@ import robosim.bench.CoreBench;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
+import robosim.hw.RobotThreads;
 import robosim.params.RobotParameterFiles;
 
 /** {@code robosim bench}: prints the benchmark figures kept in docs/BENCHMARKS.md. */
@@ -53,6 +54,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "client JVMs to spread the robots over, 1 to " + MAX_CLIENTS + " (never more than the robots);"
                     + " default ${DEFAULT-VALUE}")
     int clients;
+
+    @Option(names = "--threads", paramLabel = "T",
+            description = "threads that read the robots' sensors each step, in the core-only runs and in the"
+                    + " Environment (its --threads); default: the machine's processors")
+    Integer threads;
 
     @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = "steps per measurement; default ${DEFAULT-VALUE}")
     long steps;
@@ -103,6 +109,11 @@ final class BenchCommand implements Callable<Integer> {
             err.println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
             return 2;
         }
+        int sensingThreads = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        if (sensingThreads < 1) {
+            err.println("robosim bench: " + sensingThreads + " was supplied for --threads: it must be at least 1");
+            return 2;
+        }
         if (steps < 10) {
             err.println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
             return 2;
@@ -110,8 +121,9 @@ final class BenchCommand implements Callable<Integer> {
         Path root = RobotParameterFiles.root();
         Path p3dx = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Files.createDirectories(out);
-        o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s%n", Runtime.getRuntime().availableProcessors(),
-                System.getProperty("java.version"), System.getProperty("os.arch"));
+        o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s, %d sensing threads, robot threads %s%n",
+                Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
+                System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform");
         if (goldfinder) {
             long limit = 60_000;
             GoldFinderBench.print(o, GoldFinderBench.run(List.of(1, 2, 4, 8), mazes, 10, limit, out.resolve("mazes"), p3dx), limit);
@@ -131,10 +143,10 @@ final class BenchCommand implements Callable<Integer> {
         try {
             for (BenchSensors s : sensorSets) {
                 for (int n : robots) {
-                    StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx));
+                    StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads));
                     List<StepRateBench.Result> runs = new ArrayList<>();
                     for (int r = 0; r < repeat; r++) {
-                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx);
+                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads);
                         StepRateBench.print(o, tcp);
                         runs.add(tcp);
                     }

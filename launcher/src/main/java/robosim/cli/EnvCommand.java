@@ -62,6 +62,10 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
+    @Option(names = "--threads", paramLabel = "N", description = "threads that read the robots' sensors each step; "
+            + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
+    Integer threads;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -77,7 +81,7 @@ final class EnvCommand implements Callable<Integer> {
         try {
             checkFlags();
             options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
-                    connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME);
+                    connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME, threads());
         } catch (IllegalArgumentException e) {
             err.println("robosim env: " + e.getMessage());
             return 2;
@@ -127,6 +131,11 @@ final class EnvCommand implements Callable<Integer> {
         ServerOptions.requireAtLeast("--step-timeout", stepTimeoutMs, 1);
         ServerOptions.requireAtLeast("--connect-timeout", connectTimeoutS, 1);
         ServerOptions.requireAtLeast("--wait-viewers", waitViewers, 0);
+        ServerOptions.requireAtLeast("--threads", threads(), 1);
+    }
+
+    private int threads() {
+        return threads == null ? ServerOptions.defaultThreads() : threads;
     }
 
     static void printReport(PrintWriter out, RunReport report) {

@@ -132,6 +132,14 @@ class CommandLineTest {
     }
 
     @Test
+    void envWithNoThreadsExitsWith2AndSaysWhy() {
+        Run r = execute("env", "--threads", "0", emptyRoom());
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim env: 0 was supplied for --threads: it must be at least 1", r.err().strip(), r.err());
+        r.assertNoStackTrace();
+    }
+
+    @Test
     void envOnAPortInUseExitsWith1AndSaysWhy() throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
             Run r = execute("env", "--port", Integer.toString(taken.getLocalPort()), "--viewer-port", "0", emptyRoom());

@@ -70,7 +70,7 @@ final class Sensors {
 
     /** Takes every switched-on sensor's reading at the robot's true pose. */
     void read(GeometryClient geometry, Pose2D pose, double bodyRadius, int bodyId, List<HeatSource> sources) {
-        double reach = Math.max(sonarOn ? params.sonarMaxRange() : 0, laserOn ? laserMaxRange : 0);
+        double reach = reach();
         if (reach > 0) {
             Surroundings near = geometry.around(pose.x(), pose.y(), reach + bodyRadius, bodyId);
             if (sonarOn) {
@@ -83,6 +83,11 @@ final class Sensors {
         if (heatOn) {
             heat = readHeat(geometry, pose, sources);
         }
+    }
+
+    /** @return how far the switched-on range sensors look, mm; 0 if none is on */
+    double reach() {
+        return Math.max(sonarOn ? params.sonarMaxRange() : 0, laserOn ? laserMaxRange : 0);
     }
 
     private void readSonar(Surroundings near, Pose2D p) {

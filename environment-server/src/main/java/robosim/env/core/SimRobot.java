@@ -2,6 +2,7 @@ package robosim.env.core;
 
 import java.util.List;
 import java.util.random.RandomGenerator;
+import org.locationtech.jts.geom.Envelope;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.geometry.BodyShape;
@@ -23,6 +24,8 @@ final class SimRobot {
     final RobotParameters params;
     final BodyShape body;
     final int bodyId;
+    /** The robot's own noise stream, shared by its sensors and its odometry. */
+    final RandomGenerator random;
     private final DriveController drive;
     private double x;
     private double y;
@@ -44,6 +47,7 @@ final class SimRobot {
         this.params = params;
         this.body = body;
         this.bodyId = bodyId;
+        this.random = random;
         this.drive = new DriveController(params);
         this.x = x;
         this.y = y;
@@ -122,6 +126,19 @@ final class SimRobot {
 
     void readSensors(GeometryClient geometry, List<HeatSource> heat) {
         sensors.read(geometry, pose(), body.radius(), bodyId, heat);
+    }
+
+    /**
+     * @param env an envelope in the world
+     * @return whether a body within it could change what this robot's range sensors read now
+     */
+    boolean sees(Envelope env) {
+        double reach = sensors.reach();
+        if (reach <= 0) {
+            return false;
+        }
+        double r = reach + body.radius();
+        return env.intersects(new Envelope(x - r, x + r, y - r, y + r));
     }
 
     Pose2D pose() {

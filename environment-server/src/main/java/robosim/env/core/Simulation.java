@@ -1,13 +1,17 @@
 package robosim.env.core;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
+import java.util.random.RandomGenerator;
+import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
 import robosim.comms.Positions;
@@ -32,13 +36,29 @@ import robosim.protocol.RobotParameters;
  * <p>Each step: every robot's commands are applied, then the robots move one after another in the
  * world file's order (each against the others' latest poses, so they can never overlap), then every
  * robot's sensors are read. Noise, when the world has any, comes from the seed alone.
+ *
+ * <p>Reading the sensors is independent per robot (each reads the world, which does not change
+ * meanwhile, and draws noise from its own stream), so it runs through the {@link Parallel} loop
+ * the simulation is given; the results are the same with any loop. Commands and motion run on the
+ * calling thread, in the world file's order.
+ *
+ * <p>Before step 1 the sensors are read when first asked for (a robot's state, a snapshot, or step
+ * 1), so that robots replacing their parameters one after another do not make every robot read
+ * its sensors again each time: the readings are those of the world as it then is, each robot's
+ * noise drawn from the start of its stream.
  */
 public final class Simulation {
     private final World world;
     private final long seed;
-    private final List<Polygon> obstacles = new ArrayList<>();
-    private GeometryClient geometry;
+    private final GeometryClient geometry;
     private final Map<String, SimRobot> robots = new LinkedHashMap<>();
+    /** The robots in the world file's order, and where each name stands in it. */
+    private final List<SimRobot> order = new ArrayList<>();
+    private final Map<String, Integer> indexes = new HashMap<>();
+    /** Before step 1: whose sensors are yet to be read (their noise streams untouched). */
+    private final boolean[] unread;
+    /** Volatile: the Environment may put the simulation back on one thread as it closes. */
+    private volatile Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
     private final List<Snapshot.Said> said = new ArrayList<>();
     private Find find;
@@ -59,34 +79,78 @@ public final class Simulation {
      *              in the world file's order
      */
     public Simulation(World world, long seed) {
+        this(world, seed, Parallel.SERIAL);
+    }
+
+    /**
+     * @param world    the world, with its robots at their start poses
+     * @param seed     the seed of the run's noise: each robot draws from its own stream, split from
+     *                 it in the world file's order
+     * @param parallel how to run the work that is independent per robot
+     */
+    public Simulation(World world, long seed, Parallel parallel) {
         this.world = world;
         this.seed = seed;
+        setParallel(parallel);
+        List<Polygon> obstacles = new ArrayList<>();
         for (Obstacle o : world.obstacles()) {
             obstacles.add(o.polygon());
         }
-        rebuild(Map.of());
-        // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
-        messages = new MessageRouter(robotNames(), world.comms(), new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
-        readSensors();
-    }
-
-    /** Rebuilds the geometry with each robot's body from its (possibly replaced) parameters. */
-    private void rebuild(Map<String, RobotParameters> replaced) {
-        Map<String, SimRobot> old = new LinkedHashMap<>(robots);
-        robots.clear();
         geometry = new GeometryClient(obstacles);
         SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
-            SplittableRandom random = streams.split();
-            SimRobot prev = old.get(spec.name());
-            RobotParameters p = replaced.getOrDefault(spec.name(), prev != null ? prev.params : spec.parameters());
-            BodyShape body = RobotSpec.bodyOf(p);
+            BodyShape body = RobotSpec.bodyOf(spec.parameters());
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
-            SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, id, spec.x(), spec.y(), spec.th(),
-                    world.noise(), random);
-            r.connected = prev != null && prev.connected;
+            indexes.put(spec.name(), order.size());
+            SimRobot r = newRobot(spec, spec.parameters(), body, id, streams.split());
+            order.add(r);
             robots.put(spec.name(), r);
         }
+        unread = new boolean[order.size()];
+        Arrays.fill(unread, true);
+        // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
+        messages = new MessageRouter(robotNames(), world.comms(), new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
+    }
+
+    private SimRobot newRobot(RobotSpec spec, RobotParameters p, BodyShape body, int bodyId, RandomGenerator random) {
+        return new SimRobot(spec.name(), spec.type(), p, body, bodyId, spec.x(), spec.y(), spec.th(), world.noise(),
+                random);
+    }
+
+    /**
+     * Chooses how the work that is independent per robot runs from now on; the results are the
+     * same with any loop.
+     *
+     * @param parallel the loop, {@link Parallel#SERIAL} for the calling thread alone
+     */
+    public void setParallel(Parallel parallel) {
+        if (parallel == null) {
+            throw new IllegalArgumentException("null was supplied for parallel: use Parallel.SERIAL for one thread");
+        }
+        this.parallel = parallel;
+    }
+
+    /** @return robot {@code i}'s noise stream as it was split from the seed, untouched */
+    private SplittableRandom stream(int i) {
+        SplittableRandom streams = new SplittableRandom(seed);
+        for (int k = 0; k < i; k++) {
+            streams.split();
+        }
+        return streams.split();
+    }
+
+    /**
+     * Puts a new robot in place {@code i}, as at the start: its noise stream untouched and its
+     * sensors still to read.
+     */
+    private void renew(int i, RobotParameters p, BodyShape body) {
+        SimRobot prev = order.get(i);
+        RobotSpec spec = world.robots().get(i);
+        SimRobot r = newRobot(spec, p, body, prev.bodyId, unread[i] ? prev.random : stream(i));
+        r.connected = prev.connected;
+        order.set(i, r);
+        robots.put(spec.name(), r);
+        unread[i] = true;
     }
 
     /**
@@ -107,14 +171,35 @@ public final class Simulation {
         if (r.params.equals(params)) {
             return;
         }
-        GeometryClient check = geometry;
         BodyShape body = RobotSpec.bodyOf(params);
-        if (check.overlaps(body, r.pose(), r.bodyId)) {
+        if (geometry.overlaps(body, r.pose(), r.bodyId)) {
             throw new IllegalArgumentException("robot " + name + " with its body of " + params.robotLength()
                     + " x " + params.robotWidth() + " mm overlaps something at its start pose");
         }
-        rebuild(Map.of(name, params));
-        readSensors();
+        Envelope before = geometry.bodyPolygon(r.bodyId).getEnvelopeInternal();
+        geometry.replaceBody(r.bodyId, body);
+        Envelope after = geometry.bodyPolygon(r.bodyId).getEnvelopeInternal();
+        int i = indexes.get(name);
+        renew(i, params, body);
+        // the robots that could see the body, as it was or as it is, read their sensors again
+        for (int j = 0; j < order.size(); j++) {
+            SimRobot other = order.get(j);
+            if (!unread[j] && (other.sees(before) || other.sees(after))) {
+                renew(j, other.params, other.body);
+            }
+        }
+    }
+
+    /** Before step 1: reads the sensors of the robots not yet read. */
+    private void readUnread() {
+        if (step == 0) {
+            parallel.forEach(order.size(), i -> {
+                if (unread[i]) {
+                    order.get(i).readSensors(geometry, world.heat());
+                }
+            });
+            Arrays.fill(unread, false);
+        }
     }
 
     /**
@@ -123,6 +208,7 @@ public final class Simulation {
      * @param commands each robot's commands for this step, by name; robots absent keep their commands
      */
     public void step(Map<String, List<Command>> commands) {
+        readUnread();
         long current = step + 1;
         said.clear();
         for (SimRobot r : robots.values()) {
@@ -233,9 +319,7 @@ public final class Simulation {
     }
 
     private void readSensors() {
-        for (SimRobot r : robots.values()) {
-            r.readSensors(geometry, world.heat());
-        }
+        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat()));
     }
 
     /**
@@ -272,7 +356,13 @@ public final class Simulation {
      * @return what it knows of itself now
      */
     public RobotState state(String name) {
-        return robot(name).state(step, timeMs(), messages.delivered(name), messages.errors(name));
+        SimRobot r = robot(name);
+        int i = indexes.get(name);
+        if (step == 0 && unread[i]) {
+            r.readSensors(geometry, world.heat());
+            unread[i] = false;
+        }
+        return r.state(step, timeMs(), messages.delivered(name), messages.errors(name));
     }
 
     /**
@@ -298,6 +388,7 @@ public final class Simulation {
 
     /** @return the moving parts of the world now, for viewers */
     public Snapshot snapshot() {
+        readUnread();
         List<Snapshot.RobotView> views = new ArrayList<>();
         for (SimRobot r : robots.values()) {
             Odometry o = r.odometry();

@@ -18,6 +18,7 @@ import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import robosim.env.core.Find;
+import robosim.env.core.Parallel;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
@@ -37,8 +38,10 @@ import robosim.protocol.recording.SnapshotListeners;
  * sends the new snapshot to the viewers.
  *
  * <p>One thread does it all: the step loop serves every connection through one selector between
- * steps, so no thread handoff stands between a robot's requests and the next step. A peer that
- * breaks the protocol is closed with one log line and the run goes on for the others.
+ * steps, so no thread handoff stands between a robot's requests and the next step. Only inside a
+ * step does the simulation share out the robots' sensor readings among {@link ServerOptions#threads}
+ * workers, and the step returns once all are read. A peer that breaks the protocol is closed with
+ * one log line and the run goes on for the others.
  */
 public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
@@ -49,6 +52,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final ServerOptions options;
     private final MessageCodec codec = new MessageCodec();
     private final SessionRules rules;
+    private final PooledParallel workers;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
     private final List<Connection> all = new ArrayList<>();
     private final SnapshotListeners listeners = new SnapshotListeners();
@@ -57,13 +61,17 @@ public final class EnvironmentServer implements AutoCloseable {
     private ServerSocketChannel viewerChannel;
 
     /**
-     * @param sim     the simulation to drive
+     * @param sim     the simulation to drive; it reads its robots' sensors on the server's
+     *                {@link ServerOptions#threads} threads until the server is closed, then on the
+     *                calling thread
      * @param options how to run
      */
     public EnvironmentServer(Simulation sim, ServerOptions options) {
         this.sim = sim;
         this.options = options;
         this.rules = new SessionRules(sim);
+        this.workers = new PooledParallel(options.threads());
+        sim.setParallel(workers);
     }
 
     /**
@@ -270,6 +278,8 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Stops listening and closes every connection. */
     @Override
     public void close() {
+        sim.setParallel(Parallel.SERIAL);
+        workers.close();
         listeners.close();
         for (Connection c : all) {
             c.shut();

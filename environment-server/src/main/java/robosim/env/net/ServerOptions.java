@@ -14,9 +14,11 @@ import robosim.protocol.FrameReader;
  * @param connectTimeoutMs how long to wait for the world's robots (and viewers) to connect
  * @param waitViewers      viewers to wait for before the first step
  * @param maxFrame         largest frame accepted, bytes
+ * @param threads          threads that read the robots' sensors each step, at least 1 (1: all on the
+ *                         step loop's thread); the run is the same with any number
  */
 public record ServerOptions(String bindAddress, int robotPort, int viewerPort, long maxSteps, boolean realtime,
-                            long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame) {
+                            long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame, int threads) {
 
     /** Checks every value; a bad one is named with the rule it breaks. */
     public ServerOptions {
@@ -27,6 +29,31 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
         requireAtLeast("connectTimeoutMs", connectTimeoutMs, 1);
         requireAtLeast("waitViewers", waitViewers, 0);
         requireAtLeast("maxFrame", maxFrame, 64);
+        requireAtLeast("threads", threads, 1);
+    }
+
+    /**
+     * Options with as many threads as the machine has processors ({@link #defaultThreads()}).
+     *
+     * @param bindAddress      address to listen on, normally 127.0.0.1
+     * @param robotPort        port for robots, 0 for any free one
+     * @param viewerPort       port for viewers, 0 for any free one
+     * @param maxSteps         stop after this many steps; 0 runs until every robot has left
+     * @param realtime         pace steps at the world's step length instead of as fast as possible
+     * @param stepTimeoutMs    how long to wait for a robot's requests before disconnecting it
+     * @param connectTimeoutMs how long to wait for the world's robots (and viewers) to connect
+     * @param waitViewers      viewers to wait for before the first step
+     * @param maxFrame         largest frame accepted, bytes
+     */
+    public ServerOptions(String bindAddress, int robotPort, int viewerPort, long maxSteps, boolean realtime,
+                         long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame) {
+        this(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs, connectTimeoutMs, waitViewers,
+                maxFrame, defaultThreads());
+    }
+
+    /** @return the threads a server uses unless told otherwise: the processors the JVM may use */
+    public static int defaultThreads() {
+        return Runtime.getRuntime().availableProcessors();
     }
 
     /**
@@ -41,13 +68,19 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
     /** @param steps the step limit @return a copy with it */
     public ServerOptions withMaxSteps(long steps) {
         return new ServerOptions(bindAddress, robotPort, viewerPort, steps, realtime, stepTimeoutMs,
-                connectTimeoutMs, waitViewers, maxFrame);
+                connectTimeoutMs, waitViewers, maxFrame, threads);
     }
 
     /** @param viewers viewers to wait for @return a copy with it */
     public ServerOptions withWaitViewers(int viewers) {
         return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
-                connectTimeoutMs, viewers, maxFrame);
+                connectTimeoutMs, viewers, maxFrame, threads);
+    }
+
+    /** @param count threads that read the sensors @return a copy with it */
+    public ServerOptions withThreads(int count) {
+        return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
+                connectTimeoutMs, waitViewers, maxFrame, count);
     }
 
     /**

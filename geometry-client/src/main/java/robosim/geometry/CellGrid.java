@@ -1,0 +1,202 @@
+package robosim.geometry;
+
+import java.util.Arrays;
+import org.locationtech.jts.geom.Envelope;
+
+/**
+ * Items (the moving bodies, or the static edges) by the cells of a uniform grid, so that a query
+ * looks only at the items near it instead of at all of them. An item is listed in every cell its
+ * envelope overlaps. Cell coordinates are clamped to the grid: an item or a query outside it falls
+ * into the border cells, so answers stay complete there, only slower.
+ *
+ * <p>A query answers the ids of every item whose envelope's cells overlap the query's, so every
+ * item whose envelope intersects the query's envelope is among them (the mapping from a coordinate
+ * to its cell is monotonic); the caller applies its exact test. Ids come in ascending order, so
+ * whatever the caller does with them happens in id order, as a scan of all items would.
+ *
+ * <p>Changes ({@link #add}, {@link #move}) must not run during queries; queries allocate their own
+ * answer and may run concurrently with each other.
+ */
+final class CellGrid {
+    /** At most this many cells; a larger extent gets larger cells. */
+    static final int MAX_CELLS = 1 << 20;
+
+    private final double minX;
+    private final double minY;
+    private final double cell;
+    private final int nx;
+    private final int ny;
+    /** Per cell, the ids of the items in it (in no particular order), and how many there are. */
+    private final int[][] cells;
+    private final int[] counts;
+    /** Per item: the first and last cell column and row of its envelope. */
+    private int[] ranges = new int[4 * 16];
+    private int size;
+
+    /**
+     * @param extent   the area the grid covers; must not be null
+     * @param cellSize the side of a cell, mm, greater than 0; larger if the extent would need more
+     *                 than {@value #MAX_CELLS} cells
+     */
+    CellGrid(Envelope extent, double cellSize) {
+        if (extent.isNull()) {
+            throw new IllegalArgumentException("a body grid needs an extent");
+        }
+        double w = Math.max(extent.getWidth(), cellSize);
+        double h = Math.max(extent.getHeight(), cellSize);
+        double c = Math.max(cellSize, Math.sqrt(w * h / MAX_CELLS));
+        while (Math.ceil(w / c) * Math.ceil(h / c) > MAX_CELLS) {
+            c *= 1.25;
+        }
+        this.minX = extent.getMinX();
+        this.minY = extent.getMinY();
+        this.cell = c;
+        this.nx = (int) Math.ceil(w / c);
+        this.ny = (int) Math.ceil(h / c);
+        this.cells = new int[nx * ny][];
+        this.counts = new int[nx * ny];
+    }
+
+    /** @return the side of a cell, mm */
+    double cellSize() {
+        return cell;
+    }
+
+    /** @return whether an envelope lies inside the grid's cells, so that no clamping happens */
+    boolean covers(Envelope env) {
+        return env.getMinX() >= minX && env.getMinY() >= minY
+                && env.getMaxX() < minX + nx * cell && env.getMaxY() < minY + ny * cell;
+    }
+
+    private int column(double x) {
+        double c = Math.floor((x - minX) / cell);
+        return c < 0 ? 0 : c >= nx ? nx - 1 : (int) c;
+    }
+
+    private int row(double y) {
+        double r = Math.floor((y - minY) / cell);
+        return r < 0 ? 0 : r >= ny ? ny - 1 : (int) r;
+    }
+
+    /**
+     * Lists a new item; ids must come in order 0, 1, 2, ...
+     *
+     * @param id  the item's id
+     * @param env its envelope
+     */
+    void add(int id, Envelope env) {
+        if (id != size) {
+            throw new IllegalArgumentException(id + " was supplied for id: the next item's id is " + size);
+        }
+        if (ranges.length < 4 * (size + 1)) {
+            ranges = Arrays.copyOf(ranges, ranges.length * 2);
+        }
+        size++;
+        int r = 4 * id;
+        ranges[r] = column(env.getMinX());
+        ranges[r + 1] = row(env.getMinY());
+        ranges[r + 2] = column(env.getMaxX());
+        ranges[r + 3] = row(env.getMaxY());
+        insert(id);
+    }
+
+    /**
+     * Moves an item to the cells of its new envelope.
+     *
+     * @param id  the item's id
+     * @param env its new envelope
+     */
+    void move(int id, Envelope env) {
+        int r = 4 * id;
+        int x0 = column(env.getMinX());
+        int y0 = row(env.getMinY());
+        int x1 = column(env.getMaxX());
+        int y1 = row(env.getMaxY());
+        if (x0 == ranges[r] && y0 == ranges[r + 1] && x1 == ranges[r + 2] && y1 == ranges[r + 3]) {
+            return;
+        }
+        remove(id);
+        ranges[r] = x0;
+        ranges[r + 1] = y0;
+        ranges[r + 2] = x1;
+        ranges[r + 3] = y1;
+        insert(id);
+    }
+
+    private void insert(int id) {
+        int r = 4 * id;
+        for (int y = ranges[r + 1]; y <= ranges[r + 3]; y++) {
+            for (int x = ranges[r]; x <= ranges[r + 2]; x++) {
+                int c = y * nx + x;
+                int[] ids = cells[c];
+                if (ids == null) {
+                    ids = new int[4];
+                    cells[c] = ids;
+                } else if (counts[c] == ids.length) {
+                    ids = Arrays.copyOf(ids, ids.length * 2);
+                    cells[c] = ids;
+                }
+                ids[counts[c]++] = id;
+            }
+        }
+    }
+
+    private void remove(int id) {
+        int r = 4 * id;
+        for (int y = ranges[r + 1]; y <= ranges[r + 3]; y++) {
+            for (int x = ranges[r]; x <= ranges[r + 2]; x++) {
+                int c = y * nx + x;
+                int[] ids = cells[c];
+                int n = counts[c];
+                for (int i = 0; i < n; i++) {
+                    if (ids[i] == id) {
+                        ids[i] = ids[n - 1];
+                        counts[c] = n - 1;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * The items that may intersect an envelope.
+     *
+     * @param env the envelope looked in
+     * @return the ids of every item whose cells overlap the envelope's, each once, ascending
+     */
+    int[] query(Envelope env) {
+        if (env.isNull() || size == 0) {
+            return new int[0];
+        }
+        int qx0 = column(env.getMinX());
+        int qy0 = row(env.getMinY());
+        int qx1 = column(env.getMaxX());
+        int qy1 = row(env.getMaxY());
+        int[] out = new int[64];
+        int n = 0;
+        for (int y = qy0; y <= qy1; y++) {
+            for (int x = qx0; x <= qx1; x++) {
+                int c = y * nx + x;
+                int k = counts[c];
+                if (k == 0) {
+                    continue;
+                }
+                int[] ids = cells[c];
+                for (int i = 0; i < k; i++) {
+                    int id = ids[i];
+                    int r = 4 * id;
+                    // an item in several of these cells is taken only in the first of them
+                    if (x == Math.max(ranges[r], qx0) && y == Math.max(ranges[r + 1], qy0)) {
+                        if (n == out.length) {
+                            out = Arrays.copyOf(out, n * 2);
+                        }
+                        out[n++] = id;
+                    }
+                }
+            }
+        }
+        Arrays.sort(out, 0, n);
+        return n == out.length ? out : Arrays.copyOf(out, n);
+    }
+}
