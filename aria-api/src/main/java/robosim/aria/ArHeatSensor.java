@@ -18,8 +18,8 @@ import robosim.protocol.RobotState;
  * }</pre>
  */
 public final class ArHeatSensor {
-    private final double fieldOfView;
-    private final double maxRange;
+    /** What switches the sensor on: its record checks the field of view and range. */
+    private final Command.ConfigureHeatSensor switchOn;
     private volatile ArRobot robot;
 
     /**
@@ -29,9 +29,7 @@ public final class ArHeatSensor {
      *                                  {@link Command.ConfigureHeatSensor})
      */
     public ArHeatSensor(double fieldOfView, double maxRange) {
-        new Command.ConfigureHeatSensor(true, fieldOfView, maxRange);
-        this.fieldOfView = fieldOfView;
-        this.maxRange = maxRange;
+        this.switchOn = new Command.ConfigureHeatSensor(true, fieldOfView, maxRange);
     }
 
     /**
@@ -41,14 +39,14 @@ public final class ArHeatSensor {
      */
     public void attach(ArRobot robot) {
         this.robot = robot;
-        robot.send(new Command.ConfigureHeatSensor(true, fieldOfView, maxRange));
+        robot.send(switchOn);
     }
 
     /** Switches the sensor off and takes it off its robot. */
     public void detach() {
         ArRobot r = robot;
         if (r != null) {
-            r.send(new Command.ConfigureHeatSensor(false, fieldOfView, maxRange));
+            r.send(new Command.ConfigureHeatSensor(false, switchOn.fieldOfView(), switchOn.maxRange()));
             robot = null;
         }
     }
@@ -82,11 +80,11 @@ public final class ArHeatSensor {
 
     /** @return the field of view, degrees */
     public double getFieldOfView() {
-        return fieldOfView;
+        return switchOn.fieldOfView();
     }
 
     /** @return the range, mm */
     public double getMaxRange() {
-        return maxRange;
+        return switchOn.maxRange();
     }
 }

@@ -7,8 +7,6 @@ import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
 import robosim.env.net.PooledParallel;
-import robosim.env.world.World;
-import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 
@@ -42,11 +40,8 @@ public final class CoreBench {
 
     private static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path worldFile,
                                             PooledParallel parallel) {
-        long t0 = System.nanoTime();
-        World world = WorldReader.read(worldFile);
-        long t1 = System.nanoTime();
-        Simulation sim = new Simulation(world, 1, parallel);
-        long t2 = System.nanoTime();
+        StepRateBench.Loaded loaded = StepRateBench.load(worldFile, parallel);
+        Simulation sim = loaded.sim();
         List<String> names = sim.robotNames();
         int[] none = new int[0];
         long start = System.nanoTime();
@@ -66,6 +61,6 @@ public final class CoreBench {
             sim.step(commands);
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new StepRateBench.Result("core", robots, sensors, 0, new StepRateBench.Load(t1 - t0, t2 - t1, 0), steps, seconds);
+        return new StepRateBench.Result("core", robots, sensors, 0, loaded.load(0), steps, seconds);
     }
 }

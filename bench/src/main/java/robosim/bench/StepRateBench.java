@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import robosim.env.core.Parallel;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
@@ -44,6 +45,31 @@ public final class StepRateBench {
         public double seconds() {
             return (readNanos + buildNanos + connectNanos) / 1e9;
         }
+    }
+
+    /**
+     * A world read and its simulation built, timed.
+     *
+     * @param sim        the simulation
+     * @param readNanos  reading the world file
+     * @param buildNanos building the simulation
+     * @param builtAt    {@link System#nanoTime()} once it was built
+     */
+    record Loaded(Simulation sim, long readNanos, long buildNanos, long builtAt) {
+        /** @return where the time went, with the given time to connect */
+        Load load(long connectNanos) {
+            return new Load(readNanos, buildNanos, connectNanos);
+        }
+    }
+
+    /** Reads a world and builds its simulation, timing each. */
+    static Loaded load(Path worldFile, Parallel parallel) {
+        long t0 = System.nanoTime();
+        World world = WorldReader.read(worldFile);
+        long t1 = System.nanoTime();
+        Simulation sim = new Simulation(world, 1, parallel);
+        long t2 = System.nanoTime();
+        return new Loaded(sim, t1 - t0, t2 - t1, t2);
     }
 
     /**
@@ -97,11 +123,9 @@ public final class StepRateBench {
     public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile,
                              int threads) throws IOException, InterruptedException {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
-        long t0 = System.nanoTime();
-        World world = WorldReader.read(worldFile);
-        long t1 = System.nanoTime();
-        Simulation sim = new Simulation(world);
-        long t2 = System.nanoTime();
+        // the server hands the simulation its sensing threads
+        Loaded loaded = load(worldFile, Parallel.SERIAL);
+        Simulation sim = loaded.sim();
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS,
                 CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads);
         List<BenchRobots.Share> shares = BenchRobots.split(robots, clients);
@@ -131,7 +155,7 @@ public final class StepRateBench {
             if (report.steps() != steps) {
                 throw new IllegalStateException("the run ended early: " + report.endReason() + " (see " + dir + "/client-*.log)");
             }
-            Load load = new Load(t1 - t0, t2 - t1, report.connectedNanoTime() - t2);
+            Load load = loaded.load(report.connectedNanoTime() - loaded.builtAt());
             return new Result("tcp", robots, sensors, shares.size(), load, report.steps(), report.wallNanos() / 1e9);
         } finally {
             stop(started);

@@ -1,6 +1,7 @@
 package robosim.geometry;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import org.locationtech.jts.algorithm.ConvexHull;
 import org.locationtech.jts.geom.Coordinate;
@@ -339,9 +340,8 @@ public final class GeometryClient {
                 return true;
             }
         }
-        for (int i : bodiesNear(env)) {
-            Body other = bodies.get(i);
-            if (i != ignoreId && other.envelope.intersects(env) && other.polygon.intersects(g)) {
+        for (Body other : bodiesNear(env, ignoreId)) {
+            if (other.polygon.intersects(g)) {
                 return true;
             }
         }
@@ -366,12 +366,9 @@ public final class GeometryClient {
         for (Segment s : edgesNear(env)) {
             best = Math.min(best, s.rayHit(x, y, dx, dy));
         }
-        for (int i : bodiesNear(env)) {
-            Body b = bodies.get(i);
-            if (i != ignoreId && b.envelope.intersects(env)) {
-                for (Segment s : b.segments) {
-                    best = Math.min(best, s.rayHit(x, y, dx, dy));
-                }
+        for (Body b : bodiesNear(env, ignoreId)) {
+            for (Segment s : b.segments) {
+                best = Math.min(best, s.rayHit(x, y, dx, dy));
             }
         }
         return best;
@@ -402,12 +399,9 @@ public final class GeometryClient {
         for (Segment s : edgesNear(env)) {
             best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
         }
-        for (int i : bodiesNear(env)) {
-            Body b = bodies.get(i);
-            if (i != ignoreId && b.envelope.intersects(env)) {
-                for (Segment s : b.segments) {
-                    best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
-                }
+        for (Body b : bodiesNear(env, ignoreId)) {
+            for (Segment s : b.segments) {
+                best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
             }
         }
         return best;
@@ -430,11 +424,8 @@ public final class GeometryClient {
             Geometry g = ((PreparedGeometry) o).getGeometry();
             addContact(body, g, tolerance, out);
         }
-        for (int i : bodiesNear(env)) {
-            Body other = bodies.get(i);
-            if (i != id && other.envelope.intersects(env)) {
-                addContact(body, other.polygon, tolerance, out);
-            }
+        for (Body other : bodiesNear(env, id)) {
+            addContact(body, other.polygon, tolerance, out);
         }
         return out;
     }
@@ -484,20 +475,29 @@ public final class GeometryClient {
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        int[] near = bodiesNear(env);
-        List<Segment> found = edgesNear(env, 4 * near.length);
-        for (int i : near) {
-            Body b = bodies.get(i);
-            if (i != ignoreId && b.envelope.intersects(env)) {
-                found.addAll(java.util.Arrays.asList(b.segments));
-            }
+        List<Body> near = bodiesNear(env, ignoreId);
+        List<Segment> found = edgesNear(env, 4 * near.size());
+        for (Body b : near) {
+            Collections.addAll(found, b.segments);
         }
         return new Surroundings(x, y, found);
     }
 
-    /** @return the ids of the bodies that may intersect an envelope, ascending */
-    private int[] bodiesNear(Envelope env) {
-        return grid == null ? new int[0] : grid.query(env);
+    /**
+     * @return the bodies whose envelope intersects {@code env}, but the one ignored, in the order of
+     *         their ids (the order every query takes them in, so that results never depend on the grid)
+     */
+    private List<Body> bodiesNear(Envelope env, int ignoreId) {
+        List<Body> near = new ArrayList<>();
+        if (grid != null) {
+            for (int i : grid.query(env)) {
+                Body b = bodies.get(i);
+                if (i != ignoreId && b.envelope.intersects(env)) {
+                    near.add(b);
+                }
+            }
+        }
+        return near;
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {

@@ -4,7 +4,6 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import java.io.IOException;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
 import robosim.protocol.MessageDelivery;
@@ -38,7 +37,8 @@ public abstract class AbstractRobot {
     private volatile String connectionError;
     private final Queue<RobotMessage> inbox = new ConcurrentLinkedQueue<>();
     private final Queue<String> requestErrors = new ConcurrentLinkedQueue<>();
-    private final AtomicLong messageIds = new AtomicLong();
+    private final Object messageNumbers = new Object();
+    private long lastMessageId;
 
     /**
      * @param name       the robot's name in the world
@@ -183,12 +183,11 @@ public abstract class AbstractRobot {
             }
         }
         // a message that breaks a rule throws before it takes a number, so the numbers stay dense
-        synchronized (messageIds) {
-            long id = messageIds.get() + 1;
-            Command.SendMessage m = new Command.SendMessage(id, mode, to, kind, body);
-            messageIds.set(id);
+        synchronized (messageNumbers) {
+            Command.SendMessage m = new Command.SendMessage(lastMessageId + 1, mode, to, kind, body);
+            lastMessageId = m.id();
             request(m);
-            return id;
+            return m.id();
         }
     }
 

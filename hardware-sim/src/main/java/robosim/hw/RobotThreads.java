@@ -18,31 +18,36 @@ public final class RobotThreads {
     /** The first JDK whose virtual threads unmount in {@code Object.wait}, which {@link StepGate} uses. */
     static final int FIRST_UNPINNED_WAIT_JDK = 24;
 
-    private static final Method OF_VIRTUAL = virtualBuilder();
-    private static Method name;
-    private static Method unstarted;
+    /** {@code Thread.ofVirtual()}, {@code Builder.name(String)} and {@code Builder.unstarted(Runnable)}. */
+    private record VirtualThreads(Method ofVirtual, Method name, Method unstarted) {
+        /** @return them, or null where robot threads are platform threads */
+        static VirtualThreads find() {
+            if (Runtime.version().feature() < FIRST_UNPINNED_WAIT_JDK
+                    || "platform".equals(System.getProperty("robosim.threads"))) {
+                return null;
+            }
+            try {
+                Class<?> builder = Class.forName("java.lang.Thread$Builder");
+                return new VirtualThreads(Thread.class.getMethod("ofVirtual"),
+                        builder.getMethod("name", String.class), builder.getMethod("unstarted", Runnable.class));
+            } catch (ReflectiveOperationException e) {
+                return null;
+            }
+        }
+
+        Thread unstarted(String threadName, Runnable task) throws ReflectiveOperationException {
+            return (Thread) unstarted.invoke(name.invoke(ofVirtual.invoke(null), threadName), task);
+        }
+    }
+
+    private static final VirtualThreads VIRTUAL = VirtualThreads.find();
 
     private RobotThreads() {
     }
 
-    private static Method virtualBuilder() {
-        if (Runtime.version().feature() < FIRST_UNPINNED_WAIT_JDK
-                || "platform".equals(System.getProperty("robosim.threads"))) {
-            return null;
-        }
-        try {
-            Class<?> builder = Class.forName("java.lang.Thread$Builder");
-            name = builder.getMethod("name", String.class);
-            unstarted = builder.getMethod("unstarted", Runnable.class);
-            return Thread.class.getMethod("ofVirtual");
-        } catch (ReflectiveOperationException e) {
-            return null;
-        }
-    }
-
     /** @return whether robot threads are virtual in this JVM */
     public static boolean virtual() {
-        return OF_VIRTUAL != null;
+        return VIRTUAL != null;
     }
 
     /**
@@ -54,10 +59,9 @@ public final class RobotThreads {
      * @return the thread
      */
     public static Thread unstarted(String threadName, Runnable task) {
-        if (OF_VIRTUAL != null) {
+        if (VIRTUAL != null) {
             try {
-                Object builder = name.invoke(OF_VIRTUAL.invoke(null), threadName);
-                return (Thread) unstarted.invoke(builder, task);
+                return VIRTUAL.unstarted(threadName, task);
             } catch (ReflectiveOperationException e) {
                 throw new IllegalStateException("cannot make virtual thread " + threadName, e);
             }

@@ -22,6 +22,7 @@ import robosim.bench.CoreBench;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
+import robosim.env.net.ServerOptions;
 import robosim.hw.RobotThreads;
 import robosim.params.RobotParameterFiles;
 
@@ -109,7 +110,7 @@ final class BenchCommand implements Callable<Integer> {
             err.println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
             return 2;
         }
-        int sensingThreads = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        int sensingThreads = threads != null ? threads : ServerOptions.defaultThreads();
         if (sensingThreads < 1) {
             err.println("robosim bench: " + sensingThreads + " was supplied for --threads: it must be at least 1");
             return 2;

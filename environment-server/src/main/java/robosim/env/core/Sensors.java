@@ -70,9 +70,9 @@ final class Sensors {
 
     /** Takes every switched-on sensor's reading at the robot's true pose. */
     void read(GeometryClient geometry, Pose2D pose, double bodyRadius, int bodyId, List<HeatSource> sources) {
-        double reach = reach();
-        if (reach > 0) {
-            Surroundings near = geometry.around(pose.x(), pose.y(), reach + bodyRadius, bodyId);
+        double radius = gatherRadius(bodyRadius);
+        if (radius > 0) {
+            Surroundings near = geometry.around(pose.x(), pose.y(), radius, bodyId);
             if (sonarOn) {
                 readSonar(near, pose);
             }
@@ -83,6 +83,15 @@ final class Sensors {
         if (heatOn) {
             heat = readHeat(geometry, pose, sources);
         }
+    }
+
+    /**
+     * @param bodyRadius the robot body's radius, mm
+     * @return how far from the robot's centre its range sensors gather edges, mm; 0 if none is on
+     */
+    double gatherRadius(double bodyRadius) {
+        double reach = reach();
+        return reach > 0 ? reach + bodyRadius : 0;
     }
 
     /** @return how far the switched-on range sensors look, mm; 0 if none is on */

@@ -133,11 +133,10 @@ final class SimRobot {
      * @return whether a body within it could change what this robot's range sensors read now
      */
     boolean sees(Envelope env) {
-        double reach = sensors.reach();
-        if (reach <= 0) {
+        double r = sensors.gatherRadius(body.radius());
+        if (r <= 0) {
             return false;
         }
-        double r = reach + body.radius();
         return env.intersects(new Envelope(x - r, x + r, y - r, y + r));
     }
 

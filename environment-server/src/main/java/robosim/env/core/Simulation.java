@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.HashSet;
 import java.util.Map;
@@ -51,14 +50,12 @@ public final class Simulation {
     private final World world;
     private final long seed;
     private final GeometryClient geometry;
-    private final Map<String, SimRobot> robots = new LinkedHashMap<>();
     /** The robots in the world file's order, and where each name stands in it. */
     private final List<SimRobot> order = new ArrayList<>();
     private final Map<String, Integer> indexes = new HashMap<>();
     /** Before step 1: whose sensors are yet to be read (their noise streams untouched). */
     private final boolean[] unread;
-    /** Volatile: the Environment may put the simulation back on one thread as it closes. */
-    private volatile Parallel parallel = Parallel.SERIAL;
+    private Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
     private final List<Snapshot.Said> said = new ArrayList<>();
     private Find find;
@@ -100,11 +97,12 @@ public final class Simulation {
         SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
             BodyShape body = RobotSpec.bodyOf(spec.parameters());
+            if (indexes.putIfAbsent(spec.name(), order.size()) != null) {
+                throw new IllegalArgumentException("world " + world.name() + " names robot '" + spec.name()
+                        + "' twice: each robot's name must be its own");
+            }
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
-            indexes.put(spec.name(), order.size());
-            SimRobot r = newRobot(spec, spec.parameters(), body, id, streams.split());
-            order.add(r);
-            robots.put(spec.name(), r);
+            order.add(newRobot(spec, spec.parameters(), body, id, streams.split()));
         }
         unread = new boolean[order.size()];
         Arrays.fill(unread, true);
@@ -149,7 +147,6 @@ public final class Simulation {
         SimRobot r = newRobot(spec, p, body, prev.bodyId, unread[i] ? prev.random : stream(i));
         r.connected = prev.connected;
         order.set(i, r);
-        robots.put(spec.name(), r);
         unread[i] = true;
     }
 
@@ -193,12 +190,15 @@ public final class Simulation {
     /** Before step 1: reads the sensors of the robots not yet read. */
     private void readUnread() {
         if (step == 0) {
-            parallel.forEach(order.size(), i -> {
-                if (unread[i]) {
-                    order.get(i).readSensors(geometry, world.heat());
-                }
-            });
-            Arrays.fill(unread, false);
+            parallel.forEach(order.size(), this::readIfUnread);
+        }
+    }
+
+    /** Before step 1: reads robot {@code i}'s sensors if they have not been read. */
+    private void readIfUnread(int i) {
+        if (unread[i]) {
+            order.get(i).readSensors(geometry, world.heat());
+            unread[i] = false;
         }
     }
 
@@ -211,7 +211,7 @@ public final class Simulation {
         readUnread();
         long current = step + 1;
         said.clear();
-        for (SimRobot r : robots.values()) {
+        for (SimRobot r : order) {
             List<Command> cs = commands.get(r.name);
             if (cs != null) {
                 for (Command c : cs) {
@@ -220,7 +220,7 @@ public final class Simulation {
             }
         }
         double dt = world.stepMs() / 1000.0;
-        for (SimRobot r : robots.values()) {
+        for (SimRobot r : order) {
             r.move(geometry, dt);
         }
         step = current;
@@ -296,7 +296,7 @@ public final class Simulation {
 
     private Set<String> connectedRobots() {
         Set<String> c = new HashSet<>();
-        for (SimRobot r : robots.values()) {
+        for (SimRobot r : order) {
             if (r.connected) {
                 c.add(r.name);
             }
@@ -348,7 +348,11 @@ public final class Simulation {
 
     /** @return the robots' names, in the world file's order */
     public List<String> robotNames() {
-        return Collections.unmodifiableList(new ArrayList<>(robots.keySet()));
+        List<String> names = new ArrayList<>(order.size());
+        for (SimRobot r : order) {
+            names.add(r.name);
+        }
+        return Collections.unmodifiableList(names);
     }
 
     /**
@@ -357,11 +361,7 @@ public final class Simulation {
      */
     public RobotState state(String name) {
         SimRobot r = robot(name);
-        int i = indexes.get(name);
-        if (step == 0 && unread[i]) {
-            r.readSensors(geometry, world.heat());
-            unread[i] = false;
-        }
+        readIfUnread(indexes.get(name));
         return r.state(step, timeMs(), messages.delivered(name), messages.errors(name));
     }
 
@@ -390,7 +390,7 @@ public final class Simulation {
     public Snapshot snapshot() {
         readUnread();
         List<Snapshot.RobotView> views = new ArrayList<>();
-        for (SimRobot r : robots.values()) {
+        for (SimRobot r : order) {
             Odometry o = r.odometry();
             views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
                     r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
@@ -406,7 +406,7 @@ public final class Simulation {
             obs.add(new WorldDescription.Obstacle(o.xy(), o.height()));
         }
         List<WorldDescription.RobotInfo> infos = new ArrayList<>();
-        for (SimRobot r : robots.values()) {
+        for (SimRobot r : order) {
             infos.add(new WorldDescription.RobotInfo(r.name, r.type, r.params));
         }
         List<WorldDescription.HeatSource> heat = new ArrayList<>();
@@ -428,10 +428,10 @@ public final class Simulation {
     }
 
     private SimRobot robot(String name) {
-        SimRobot r = robots.get(name);
-        if (r == null) {
+        Integer i = indexes.get(name);
+        if (i == null) {
             throw new IllegalArgumentException("no robot named '" + name + "' in world " + world.name());
         }
-        return r;
+        return order.get(i);
     }
 }

@@ -18,7 +18,6 @@ import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import robosim.env.core.Find;
-import robosim.env.core.Parallel;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
@@ -278,7 +277,7 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Stops listening and closes every connection. */
     @Override
     public void close() {
-        sim.setParallel(Parallel.SERIAL);
+        // a simulation used after this reads on its caller's thread: a closed pool runs its loops there
         workers.close();
         listeners.close();
         for (Connection c : all) {

@@ -47,11 +47,6 @@ public final class PooledParallel implements Parallel, AutoCloseable {
         });
     }
 
-    /** @return how many threads run the loop, the caller included */
-    public int threads() {
-        return threads;
-    }
-
     @Override
     public void forEach(int n, IntConsumer body) {
         int chunks = Math.min(n / MIN_CHUNK, threads * CHUNKS_PER_THREAD);
