@@ -8,7 +8,6 @@ import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
-import org.locationtech.jts.geom.LineString;
 import org.locationtech.jts.geom.Polygon;
 import org.locationtech.jts.geom.prep.PreparedGeometry;
 import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
@@ -50,15 +49,8 @@ public final class GeometryClient {
 
     private final GeometryFactory factory = new GeometryFactory();
     private final STRtree obstacleIndex = new STRtree();
-    /** The obstacles' edges, in the order of an STRtree's leaves, each with its envelope, and their grid. */
-    private final Segment[] edges;
-    private final Envelope[] edgeEnvelopes;
-    private final CellGrid edgeGrid;
-    private final List<Body> bodies = new ArrayList<>();
-    private final double cellSize;
-    /** The area the bodies' grid covers; null until there is an obstacle or a body. */
-    private Envelope gridExtent;
-    private CellGrid grid;
+    private final ObstacleEdges edges;
+    private final Bodies bodies;
 
     /**
      * @param obstacles the static walls and obstacles
@@ -69,107 +61,24 @@ public final class GeometryClient {
 
     /**
      * @param obstacles the static walls and obstacles
-     * @param cellSize  the side of a cell of the bodies' grid, mm, greater than 0
+     * @param cellSize  the side of a cell of the grids, mm, greater than 0
      */
     GeometryClient(List<Polygon> obstacles, double cellSize) {
         if (!(cellSize > 0) || !Double.isFinite(cellSize)) {
             throw new IllegalArgumentException(cellSize + " was supplied for cellSize: it must be greater than 0");
         }
-        this.cellSize = cellSize;
-        STRtree segmentIndex = new STRtree();
-        int count = 0;
         for (Polygon p : obstacles) {
             obstacleIndex.insert(p.getEnvelopeInternal(), PreparedGeometryFactory.prepare(p));
-            count += addRing(segmentIndex, p.getExteriorRing());
-            for (int i = 0; i < p.getNumInteriorRing(); i++) {
-                count += addRing(segmentIndex, p.getInteriorRingN(i));
-            }
         }
         obstacleIndex.build();
-        segmentIndex.build();
-        // an STRtree answers a query with the leaves that meet it, in the order of its leaves
-        List<?> ordered = segmentIndex.query(new Envelope(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY));
-        if (ordered.size() != count) {
-            throw new IllegalStateException("the STRtree of " + count + " edges gave back " + ordered.size());
-        }
-        edges = ordered.toArray(new Segment[0]);
-        edgeEnvelopes = new Envelope[edges.length];
-        for (Polygon p : obstacles) {
-            if (gridExtent == null) {
-                gridExtent = new Envelope(p.getEnvelopeInternal());
-            } else {
-                gridExtent.expandToInclude(p.getEnvelopeInternal());
-            }
-        }
-        if (gridExtent != null) {
-            grid = new CellGrid(gridExtent, cellSize);
-        }
-        edgeGrid = edges.length == 0 ? null : new CellGrid(gridExtent, cellSize);
-        for (int i = 0; i < edges.length; i++) {
-            edgeEnvelopes[i] = envelope(edges[i]);
-            edgeGrid.add(i, edgeEnvelopes[i]);
-        }
-    }
-
-    private static Envelope envelope(Segment s) {
-        return new Envelope(s.x1(), s.x2(), s.y1(), s.y2());
+        Envelope extent = ObstacleEdges.extent(obstacles);
+        edges = new ObstacleEdges(obstacles, extent, cellSize);
+        bodies = new Bodies(extent, cellSize, factory);
     }
 
     /** @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer */
     List<Segment> edgesNear(Envelope env) {
-        return edgesNear(env, 0);
-    }
-
-    /**
-     * @param room how many more items the list will be given
-     * @return the obstacles' edges whose envelope intersects {@code env}, as an STRtree of them would answer
-     */
-    private List<Segment> edgesNear(Envelope env, int room) {
-        if (edgeGrid == null) {
-            return new ArrayList<>(room);
-        }
-        int[] near = edgeGrid.query(env);
-        List<Segment> out = new ArrayList<>(near.length + room);
-        for (int i : near) {
-            if (edgeEnvelopes[i].intersects(env)) {
-                out.add(edges[i]);
-            }
-        }
-        return out;
-    }
-
-    /**
-     * Grows the bodies' grid, when a body lies outside it, to about twice the size it then needs,
-     * and lists every body in it again.
-     *
-     * @return false if the grid already covered the envelope and nothing was done
-     */
-    private boolean regrid(Envelope env) {
-        if (grid != null && grid.covers(env)) {
-            return false;
-        }
-        Envelope extent = new Envelope(env);
-        if (gridExtent != null) {
-            extent.expandToInclude(gridExtent);
-        }
-        extent.expandBy(Math.max(extent.getWidth(), extent.getHeight()) / 2 + cellSize);
-        gridExtent = extent;
-        grid = new CellGrid(extent, cellSize);
-        for (int i = 0; i < bodies.size(); i++) {
-            grid.add(i, bodies.get(i).envelope);
-        }
-        return true;
-    }
-
-    /** @return how many edges the ring has */
-    private static int addRing(STRtree segmentIndex, LineString ring) {
-        Coordinate[] c = ring.getCoordinates();
-        for (int i = 0; i + 1 < c.length; i++) {
-            Segment s = new Segment(c[i].x, c[i].y, c[i + 1].x, c[i + 1].y);
-            segmentIndex.insert(envelope(s), s);
-        }
-        return Math.max(0, c.length - 1);
+        return edges.near(env, 0);
     }
 
     /**
@@ -199,14 +108,7 @@ public final class GeometryClient {
      * @return its id, used by the other methods
      */
     public int addBody(BodyShape shape, Pose2D pose) {
-        Body b = new Body(shape);
-        b.place(pose, factory);
-        int id = bodies.size();
-        bodies.add(b);
-        if (!regrid(b.envelope)) {
-            grid.add(id, b.envelope);
-        }
-        return id;
+        return bodies.add(shape, pose);
     }
 
     /**
@@ -216,11 +118,7 @@ public final class GeometryClient {
      * @param pose its new pose
      */
     public void moveBody(int id, Pose2D pose) {
-        Body b = bodies.get(id);
-        b.place(pose, factory);
-        if (!regrid(b.envelope)) {
-            grid.move(id, b.envelope);
-        }
+        bodies.move(id, pose);
     }
 
     /**
@@ -231,12 +129,7 @@ public final class GeometryClient {
      * @param shape its new shape
      */
     public void replaceBody(int id, BodyShape shape) {
-        Body b = new Body(shape);
-        b.place(bodies.get(id).pose, factory);
-        bodies.set(id, b);
-        if (!regrid(b.envelope)) {
-            grid.move(id, b.envelope);
-        }
+        bodies.replace(id, shape);
     }
 
     /**
@@ -286,7 +179,7 @@ public final class GeometryClient {
      *         {@value #CONTACT_TOLERANCE} mm of travel
      */
     public SweepResult sweep(int id, double distance, double rotation) {
-        Body body = bodies.get(id);
+        Bodies.Body body = bodies.get(id);
         Pose2D start = body.pose;
         int pieces = 1;
         if (Math.abs(rotation) > 1e-12) {
@@ -340,7 +233,7 @@ public final class GeometryClient {
                 return true;
             }
         }
-        for (Body other : bodiesNear(env, ignoreId)) {
+        for (Bodies.Body other : bodies.near(env, ignoreId)) {
             if (other.polygon.intersects(g)) {
                 return true;
             }
@@ -366,7 +259,7 @@ public final class GeometryClient {
         for (Segment s : edgesNear(env)) {
             best = Math.min(best, s.rayHit(x, y, dx, dy));
         }
-        for (Body b : bodiesNear(env, ignoreId)) {
+        for (Bodies.Body b : bodies.near(env, ignoreId)) {
             for (Segment s : b.segments) {
                 best = Math.min(best, s.rayHit(x, y, dx, dy));
             }
@@ -399,7 +292,7 @@ public final class GeometryClient {
         for (Segment s : edgesNear(env)) {
             best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
         }
-        for (Body b : bodiesNear(env, ignoreId)) {
+        for (Bodies.Body b : bodies.near(env, ignoreId)) {
             for (Segment s : b.segments) {
                 best = Math.min(best, s.wedgeDistance(x, y, rx, ry, lx, ly));
             }
@@ -416,7 +309,7 @@ public final class GeometryClient {
      * @return world directions in radians, one per touching obstacle or body
      */
     public List<Double> contacts(int id, double tolerance) {
-        Body body = bodies.get(id);
+        Bodies.Body body = bodies.get(id);
         Envelope env = new Envelope(body.envelope);
         env.expandBy(tolerance);
         List<Double> out = new ArrayList<>();
@@ -424,13 +317,13 @@ public final class GeometryClient {
             Geometry g = ((PreparedGeometry) o).getGeometry();
             addContact(body, g, tolerance, out);
         }
-        for (Body other : bodiesNear(env, id)) {
+        for (Bodies.Body other : bodies.near(env, id)) {
             addContact(body, other.polygon, tolerance, out);
         }
         return out;
     }
 
-    private static void addContact(Body body, Geometry other, double tolerance, List<Double> out) {
+    private static void addContact(Bodies.Body body, Geometry other, double tolerance, List<Double> out) {
         if (body.polygon.isWithinDistance(other, tolerance)) {
             Coordinate[] nearest = DistanceOp.nearestPoints(body.polygon, other);
             Coordinate p = nearest[1];
@@ -475,29 +368,12 @@ public final class GeometryClient {
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        List<Body> near = bodiesNear(env, ignoreId);
-        List<Segment> found = edgesNear(env, 4 * near.size());
-        for (Body b : near) {
+        List<Bodies.Body> near = bodies.near(env, ignoreId);
+        List<Segment> found = edges.near(env, 4 * near.size());
+        for (Bodies.Body b : near) {
             Collections.addAll(found, b.segments);
         }
         return new Surroundings(x, y, found);
-    }
-
-    /**
-     * @return the bodies whose envelope intersects {@code env}, but the one ignored, in the order of
-     *         their ids (the order every query takes them in, so that results never depend on the grid)
-     */
-    private List<Body> bodiesNear(Envelope env, int ignoreId) {
-        List<Body> near = new ArrayList<>();
-        if (grid != null) {
-            for (int i : grid.query(env)) {
-                Body b = bodies.get(i);
-                if (i != ignoreId && b.envelope.intersects(env)) {
-                    near.add(b);
-                }
-            }
-        }
-        return near;
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {
@@ -512,29 +388,5 @@ public final class GeometryClient {
             }
         }
         return env;
-    }
-
-    /** A moving body and its cached outline at its current pose. */
-    private static final class Body {
-        final BodyShape shape;
-        Pose2D pose;
-        Polygon polygon;
-        Envelope envelope;
-        Segment[] segments;
-
-        Body(BodyShape shape) {
-            this.shape = shape;
-        }
-
-        void place(Pose2D p, GeometryFactory factory) {
-            pose = p;
-            Coordinate[] ring = shape.ringAt(p);
-            polygon = factory.createPolygon(ring);
-            envelope = polygon.getEnvelopeInternal();
-            segments = new Segment[ring.length - 1];
-            for (int i = 0; i + 1 < ring.length; i++) {
-                segments[i] = new Segment(ring[i].x, ring[i].y, ring[i + 1].x, ring[i + 1].y);
-            }
-        }
     }
 }

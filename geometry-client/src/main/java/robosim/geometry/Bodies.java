@@ -1,0 +1,128 @@
+package robosim.geometry;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Envelope;
+import org.locationtech.jts.geom.GeometryFactory;
+import org.locationtech.jts.geom.Polygon;
+
+/**
+ * The moving bodies of the {@link GeometryClient}'s world, numbered by id, each with its outline
+ * where it stands, kept by the cells of a uniform grid that grows when a body leaves it. Nearby
+ * bodies are given in id order, as a scan of them all would give them, so the answers never
+ * depend on the grid.
+ */
+final class Bodies {
+    private final GeometryFactory factory;
+    private final double cellSize;
+    private final List<Body> list = new ArrayList<>();
+    /** The area the grid covers; null until there is an obstacle or a body. */
+    private Envelope extent;
+    private CellGrid grid;
+
+    /**
+     * @param extent   the area the grid covers at first (the obstacles'), or null
+     * @param cellSize the side of a grid cell, mm
+     * @param factory  makes the bodies' outlines
+     */
+    Bodies(Envelope extent, double cellSize, GeometryFactory factory) {
+        this.cellSize = cellSize;
+        this.factory = factory;
+        if (extent != null) {
+            this.extent = extent;
+            grid = new CellGrid(extent, cellSize);
+        }
+    }
+
+    /** @return the new body's id */
+    int add(BodyShape shape, Pose2D pose) {
+        Body b = new Body(shape, pose, factory);
+        int id = list.size();
+        list.add(b);
+        if (!regrid(b.envelope)) {
+            grid.add(id, b.envelope);
+        }
+        return id;
+    }
+
+    void move(int id, Pose2D pose) {
+        place(id, new Body(list.get(id).shape, pose, factory));
+    }
+
+    void replace(int id, BodyShape shape) {
+        place(id, new Body(shape, list.get(id).pose, factory));
+    }
+
+    private void place(int id, Body b) {
+        list.set(id, b);
+        if (!regrid(b.envelope)) {
+            grid.move(id, b.envelope);
+        }
+    }
+
+    Body get(int id) {
+        return list.get(id);
+    }
+
+    /**
+     * @return the bodies whose envelope intersects {@code env}, but the one ignored, in the order of
+     *         their ids
+     */
+    List<Body> near(Envelope env, int ignoreId) {
+        List<Body> near = new ArrayList<>();
+        if (grid != null) {
+            for (int i : grid.query(env)) {
+                Body b = list.get(i);
+                if (i != ignoreId && b.envelope.intersects(env)) {
+                    near.add(b);
+                }
+            }
+        }
+        return near;
+    }
+
+    /**
+     * Grows the grid, when a body lies outside it, to about twice the size it then needs, and lists
+     * every body in it again.
+     *
+     * @return false if the grid already covered the envelope and nothing was done
+     */
+    private boolean regrid(Envelope env) {
+        if (grid != null && grid.covers(env)) {
+            return false;
+        }
+        Envelope wider = new Envelope(env);
+        if (extent != null) {
+            wider.expandToInclude(extent);
+        }
+        wider.expandBy(Math.max(wider.getWidth(), wider.getHeight()) / 2 + cellSize);
+        extent = wider;
+        grid = new CellGrid(wider, cellSize);
+        for (int i = 0; i < list.size(); i++) {
+            grid.add(i, list.get(i).envelope);
+        }
+        return true;
+    }
+
+    /** A body where it stands: its shape, pose, outline, envelope and edges. */
+    static final class Body {
+        final BodyShape shape;
+        final Pose2D pose;
+        final Polygon polygon;
+        final Envelope envelope;
+        final Segment[] segments;
+
+        Body(BodyShape shape, Pose2D pose, GeometryFactory factory) {
+            this.shape = shape;
+            this.pose = pose;
+            Coordinate[] ring = shape.ringAt(pose);
+            polygon = factory.createPolygon(ring);
+            envelope = polygon.getEnvelopeInternal();
+            segments = new Segment[ring.length - 1];
+            for (int i = 0; i + 1 < ring.length; i++) {
+                segments[i] = new Segment(ring[i].x, ring[i].y, ring[i + 1].x, ring[i + 1].y);
+            }
+        }
+    }
+}
