@@ -30,10 +30,9 @@ public abstract class AbstractRobot {
     private final int port;
     private final String robotType;
     private final RobotParameters parameters;
-    private final StepGate gate = new StepGate();
     private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
     private volatile int stepMs = 100;
-    private HardwareSimulator hardware;
+    private volatile HardwareSimulator hardware;
     private volatile String connectionError;
     private final Queue<RobotMessage> inbox = new ConcurrentLinkedQueue<>();
     private final Queue<String> requestErrors = new ConcurrentLinkedQueue<>();
@@ -75,15 +74,32 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connect(HardwareOptions options) throws IOException {
-        hardware = new HardwareSimulator(new RobotHello(name, robotType, parameters), gate,
-                this::responded, options);
-        Welcome w = hardware.connect(host, port);
+        connect(options, EnvironmentLinks.to(host, port, options));
+    }
+
+    /**
+     * Connects over the given link, as {@link #connect(HardwareOptions)} does.
+     *
+     * @param options timeouts
+     * @param link    how to reach the Environment
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
+        HardwareSimulator hw = new HardwareSimulator(new RobotHello(name, robotType, parameters), this::responded,
+                options);
+        // the hardware may deliver the first step before connect returns; it waits for the first yield
+        hardware = hw;
+        Welcome w;
+        try {
+            w = hw.connect(link);
+        } catch (IOException | RuntimeException e) {
+            hardware = null;
+            throw e;
+        }
         stepMs = w.stepMs();
         state = w.state();
         welcomed(w.state());
-        gate.join(Thread.currentThread());
         CURRENT.set(this);
-        hardware.start();
     }
 
     /**
@@ -244,9 +260,10 @@ public abstract class AbstractRobot {
         if (m != null || !isConnected()) {
             return m;
         }
-        long deadline = gate.timeMs() + Math.max(timeoutMs, 1);
+        HardwareSimulator hw = hardware;
+        long deadline = hw.timeMs() + Math.max(timeoutMs, 1);
         try {
-            gate.await(t -> !inbox.isEmpty() || t >= deadline);
+            hw.await(t -> !inbox.isEmpty() || t >= deadline);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
@@ -268,14 +285,16 @@ public abstract class AbstractRobot {
 
     /** Leaves the run. */
     public void disconnect() {
-        if (hardware != null && isConnected()) {
-            hardware.disconnect("the robot's program disconnected");
+        HardwareSimulator hw = hardware;
+        if (hw != null && !hw.isEnded()) {
+            hw.disconnect("the robot's program disconnected");
         }
     }
 
     /** @return whether the robot is connected to the Environment */
     public boolean isConnected() {
-        return hardware != null && !gate.isClosed();
+        HardwareSimulator hw = hardware;
+        return hw != null && !hw.isEnded();
     }
 
     /**
@@ -284,8 +303,9 @@ public abstract class AbstractRobot {
      * @param command the command
      */
     protected void request(Command command) {
-        if (hardware != null) {
-            hardware.request(new RobotRequest(command));
+        HardwareSimulator hw = hardware;
+        if (hw != null) {
+            hw.request(new RobotRequest(command));
         }
     }
 
@@ -295,12 +315,13 @@ public abstract class AbstractRobot {
      * @param ms simulated milliseconds
      */
     public void sleepSimulated(long ms) {
-        if (!isConnected()) {
+        HardwareSimulator hw = hardware;
+        if (hw == null || hw.isEnded()) {
             return;
         }
-        long wake = gate.timeMs() + Math.max(ms, 1);
+        long wake = hw.timeMs() + Math.max(ms, 1);
         try {
-            gate.await(t -> t >= wake);
+            hw.await(t -> t >= wake);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
@@ -338,12 +359,14 @@ public abstract class AbstractRobot {
 
     /** @return simulated time of the latest state, ms */
     public long getSimTimeMs() {
-        return gate.timeMs();
+        HardwareSimulator hw = hardware;
+        return hw == null ? 0 : hw.timeMs();
     }
 
     /** @return the step of the latest state */
     public long getStep() {
-        return gate.step();
+        HardwareSimulator hw = hardware;
+        return hw == null ? 0 : hw.step();
     }
 
     /** @return the Environment's host */

@@ -1,42 +1,33 @@
 package robosim.hw;
 
 import java.io.IOException;
-import java.net.ConnectException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
-import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
-import java.util.logging.Level;
+import java.util.function.LongPredicate;
 import java.util.logging.Logger;
-import robosim.protocol.Bye;
-import robosim.protocol.Command;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
-import robosim.protocol.Message;
-import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotRequests;
-import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
 
 /**
- * A robot's link to the Environment, one thread per robot. Each step its thread receives the time
- * step and the responses and hands them to the Robot-Object through the {@link StepGate}; once the
- * robot's code has yielded, the {@code robotRequestQueue} is drained and sent as the robot's
- * requests for the step (by the last robot thread to yield, so no thread wakes just to send). One
- * watchdog thread per JVM sends for robots whose code ended without yielding, and warns about code
- * that does not yield.
+ * A robot's hardware: between the robot's code and the Environment. It owns the robot's
+ * {@code robotRequestQueue} and the {@link StepGate} where the robot's code yields, and it reaches
+ * the Environment through an {@link EnvironmentLink}. The robot's code requests commands through
+ * {@link RequestQueue}; the link delivers each step through {@link StepReceiver}, and the
+ * simulator hands the step's {@link RobotSensorResponse} to the robot once its code has yielded.
+ * Once the code has yielded again, the queue is drained and sent as the robot's requests for the
+ * step, by the last robot thread to yield, so no thread wakes just to send. One watchdog thread
+ * per JVM sends for robots whose code ended without yielding, warns about code that does not
+ * yield, and sends what shared links have collected when some of their robots are late.
  */
-public final class HardwareSimulator {
+public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private static final Logger LOG = Logger.getLogger(HardwareSimulator.class.getName());
-    private static final long RETRY_MS = 200;
     private static final long WATCH_MS = 50;
-    private static final List<HardwareSimulator> WATCHED = new CopyOnWriteArrayList<>();
+    private static final Set<HardwareSimulator> WATCHED = ConcurrentHashMap.newKeySet();
 
     static {
         Thread watchdog = new Thread(() -> {
@@ -44,6 +35,7 @@ public final class HardwareSimulator {
                 for (HardwareSimulator hw : WATCHED) {
                     hw.watch();
                 }
+                SharedLink.sendLingering();
                 try {
                     Thread.sleep(WATCH_MS);
                 } catch (InterruptedException e) {
@@ -56,15 +48,11 @@ public final class HardwareSimulator {
     }
 
     private final RobotHello hello;
-    private final StepGate gate;
+    private final StepGate gate = new StepGate();
     private final Consumer<RobotSensorResponse> responses;
     private final Queue<RobotRequest> robotRequestQueue = new ConcurrentLinkedQueue<>();
-    /** One codec for every robot of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
-    private static final MessageCodec CODEC = new MessageCodec();
     private final HardwareOptions options;
-    private Socket socket;
-    private FrameWriter writer;
-    private FrameReader reader;
+    private volatile EnvironmentLink link;
     private volatile String endReason;
     private volatile long openStep;
     private volatile Thread keeper;
@@ -72,21 +60,19 @@ public final class HardwareSimulator {
 
     /**
      * @param hello     the robot's name, type and parameters
-     * @param gate      where the robot's code yields
-     * @param responses receives each step's response, inside the gate's lock
+     * @param responses receives each step's response while the robot's code is yielded (the robot's
+     *                  side of "receive a step")
      * @param options   timeouts
      */
-    public HardwareSimulator(RobotHello hello, StepGate gate, Consumer<RobotSensorResponse> responses,
-                             HardwareOptions options) {
+    public HardwareSimulator(RobotHello hello, Consumer<RobotSensorResponse> responses, HardwareOptions options) {
         this.hello = hello;
-        this.gate = gate;
         this.responses = responses;
         this.options = options;
-        gate.onAllYielded(this::sendRequests);
     }
 
     /**
-     * Connects, says hello and waits (bounded) for the Environment's welcome.
+     * Connects over the link {@link EnvironmentLinks} chooses for this JVM, says hello and waits
+     * (bounded) for the Environment's welcome. The calling thread becomes part of the robot's code.
      *
      * @param host the Environment's host
      * @param port its robot port
@@ -94,55 +80,86 @@ public final class HardwareSimulator {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     public Welcome connect(String host, int port) throws IOException {
-        long deadline = System.currentTimeMillis() + options.connectTimeoutMs();
-        while (true) {
-            socket = new Socket();
-            try {
-                socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
-                break;
-            } catch (ConnectException e) {
-                // the Environment may still be starting: try again until the connect timeout
-                socket.close();
-                if (System.currentTimeMillis() + RETRY_MS > deadline) {
-                    throw new ConnectException("no Environment at " + host + ":" + port + " within "
-                            + options.connectTimeoutMs() + " ms (" + e.getMessage() + ")");
-                }
-                try {
-                    Thread.sleep(RETRY_MS);
-                } catch (InterruptedException ie) {
-                    Thread.currentThread().interrupt();
-                    throw new IOException("interrupted while connecting", ie);
-                }
-            }
-        }
+        return connect(EnvironmentLinks.to(host, port, options));
+    }
+
+    /**
+     * Connects over the given link, as {@link #connect(String, int)} does.
+     *
+     * @param link how to reach the Environment; used for this robot alone
+     * @return the welcome
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    public Welcome connect(EnvironmentLink link) throws IOException {
+        Thread me = Thread.currentThread();
+        // joined first: a step that comes before the welcome returns waits for this thread's yield
+        gate.join(me);
+        this.link = link;
         try {
-            socket.setTcpNoDelay(true);
-            socket.setSoTimeout((int) options.connectTimeoutMs());
-            reader = new FrameReader(socket.getInputStream(), CODEC, FrameReader.DEFAULT_MAX_FRAME);
-            writer = new FrameWriter(socket.getOutputStream(), CODEC);
-            writer.write(hello);
-            Message first = reader.read();
-            if (first instanceof Welcome w) {
-                socket.setSoTimeout((int) options.stepReadTimeoutMs());
-                return w;
-            }
-            throw new IOException(first instanceof Bye bye ? "the Environment at " + host + ":" + port + " "
-                    + bye.reason() : "the Environment at " + host + ":" + port + " answered " + describe(first));
-        } catch (IOException e) {
-            socket.close();
+            Welcome w = link.open(hello, this);
+            WATCHED.add(this);
+            return w;
+        } catch (IOException | RuntimeException e) {
+            gate.leave(me);
+            endReason = "not connected: " + e.getMessage();
+            gate.close();
             throw e;
         }
     }
 
-    /** Starts the robot's hardware thread; call after {@link #connect}. */
-    public void start() {
-        WATCHED.add(this);
-        RobotThreads.unstarted("hw-" + hello.name(), this::run).start();
-    }
-
-    /** @param request a request of the robot's code, sent with the current step's requests */
+    @Override
     public void request(RobotRequest request) {
         robotRequestQueue.add(request);
+    }
+
+    /**
+     * Yields the calling thread (making it part of the robot's code) until {@code wakeWhen} holds
+     * for the simulated time, or the link ends. If it is the last of the code's threads to yield for
+     * the open step, it sends the step's requests first.
+     *
+     * @param wakeWhen a condition on simulated time in ms, checked as each step arrives
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public void await(LongPredicate wakeWhen) throws InterruptedException {
+        if (gate.yieldUntil(wakeWhen)) {
+            sendRequests();
+        }
+        gate.awaitWake();
+    }
+
+    /**
+     * Makes a thread part of the robot's code: steps wait for its yields.
+     *
+     * @param thread a thread of the robot's code
+     */
+    public void join(Thread thread) {
+        gate.join(thread);
+    }
+
+    /**
+     * Stops waiting for a thread's yields; if the others have all yielded, sends the step's requests.
+     *
+     * @param thread a thread of the robot's code
+     */
+    public void leave(Thread thread) {
+        if (gate.leave(thread)) {
+            sendRequests();
+        }
+    }
+
+    /** @return simulated time of the latest state, ms */
+    public long timeMs() {
+        return gate.timeMs();
+    }
+
+    /** @return the latest step whose state has arrived */
+    public long step() {
+        return gate.step();
+    }
+
+    /** @return whether the link has ended (or never opened) */
+    public boolean isEnded() {
+        return gate.isClosed();
     }
 
     /**
@@ -179,38 +196,23 @@ public final class HardwareSimulator {
      * @param reason for the Environment's log
      */
     public void disconnect(String reason) {
-        try {
-            writer.write(new Bye(reason));
-        } catch (IOException e) {
-            LOG.log(Level.FINE, "bye not sent", e);
+        EnvironmentLink l = link;
+        if (l != null) {
+            l.bye(reason);
         }
         end("disconnected: " + reason);
     }
 
-    private void run() {
-        String reason = "the Environment closed the connection";
-        try {
-            Message m;
-            while ((m = reader.read()) != null) {
-                if (m instanceof TimeStep ts) {
-                    openStep = ts.step();
-                    RobotSensorResponse r = new RobotSensorResponse(ts.state());
-                    if (gate.advance(r.step(), r.timeMs(), () -> responses.accept(r))) {
-                        sendRequests();
-                    }
-                } else if (m instanceof Bye bye) {
-                    reason = "the Environment said " + bye.reason();
-                    break;
-                } else {
-                    reason = "the Environment sent " + describe(m);
-                    break;
-                }
-            }
-        } catch (SocketTimeoutException e) {
-            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
-        } catch (IOException e) {
-            reason = endReason != null ? endReason : e.getMessage();
+    @Override
+    public void step(RobotSensorResponse response) {
+        openStep = response.openStep();
+        if (gate.advance(response.step(), response.timeMs(), () -> responses.accept(response))) {
+            sendRequests();
         }
+    }
+
+    @Override
+    public void ended(String reason) {
         end(reason);
     }
 
@@ -220,30 +222,37 @@ public final class HardwareSimulator {
      * says bye instead.
      */
     private void sendRequests() {
+        EnvironmentLink l = link;
+        if (gate.participantCount() == 0 && keeper == null) {
+            l.bye("the robot's code has ended");
+            end("the robot's code has ended");
+            return;
+        }
+        List<RobotRequest> requests = new ArrayList<>();
+        RobotRequest req;
+        while ((req = robotRequestQueue.poll()) != null) {
+            requests.add(req);
+        }
         try {
-            if (gate.participantCount() == 0 && keeper == null) {
-                writer.write(new Bye("the robot's code has ended"));
-                end("the robot's code has ended");
-                return;
-            }
-            List<Command> commands = new ArrayList<>();
-            RobotRequest req;
-            while ((req = robotRequestQueue.poll()) != null) {
-                commands.add(req.command());
-            }
-            writer.write(new RobotRequests(openStep, commands));
+            l.send(openStep, requests);
         } catch (IOException e) {
             end("sending requests failed: " + e.getMessage());
         }
     }
 
-    /** Looks after robots whose code ended without yielding, and warns about code that never yields. */
+    /**
+     * Looks after robots whose code ended without yielding, and warns about code that never yields.
+     * Robots whose step was answered, or came less than a watch period ago, cost one volatile read.
+     */
     private void watch() {
+        long unsent = gate.unsentNanos();
+        if (unsent < WATCH_MS * 1_000_000L) {
+            return;
+        }
         if (gate.claimIfYielded()) {
             sendRequests();
             return;
         }
-        long unsent = gate.unsentNanos();
         long warnAfter = options.yieldWarningMs() * 1_000_000L;
         if (unsent > warnAfter && warnedStep != openStep) {
             warnedStep = openStep;
@@ -254,19 +263,16 @@ public final class HardwareSimulator {
 
     private void end(String reason) {
         WATCHED.remove(this);
-        if (endReason == null) {
-            endReason = reason;
-            LOG.fine(() -> "robot " + hello.name() + ": " + reason);
+        synchronized (this) {
+            if (endReason == null) {
+                endReason = reason;
+                LOG.fine(() -> "robot " + hello.name() + ": " + reason);
+            }
         }
         gate.close();
-        try {
-            socket.close();
-        } catch (IOException e) {
-            LOG.log(Level.FINE, "closing", e);
+        EnvironmentLink l = link;
+        if (l != null) {
+            l.close();
         }
-    }
-
-    private static String describe(Message m) {
-        return m == null ? "nothing (the connection closed)" : "an unexpected " + m.getClass().getSimpleName();
     }
 }

@@ -13,29 +13,21 @@ import java.util.function.LongPredicate;
  * ({@link #advance}), which wakes the participants whose condition now holds. Once every
  * participant has yielded again, the step's requests are sent, exactly once, by whichever thread
  * saw that moment: the last participant to yield, or the hardware thread itself when nobody woke.
- * So what a robot requests for a step never depends on thread timing, and no extra thread wakes
- * just to send.
+ * The gate says which by its answers ({@link #yieldUntil}, {@link #leave}, {@link #advance} and
+ * {@link #claimIfYielded} return true to exactly one caller per step); it sends nothing itself. So
+ * what a robot requests for a step never depends on thread timing, and no extra thread wakes just
+ * to send.
  */
 public final class StepGate {
     private final Set<Thread> participants = new LinkedHashSet<>();
     private final Map<Thread, LongPredicate> waiting = new LinkedHashMap<>();
-    private Runnable sender = () -> { };
     private long timeMs;
     private long step;
-    private long unsentSince = -1;
+    private volatile long unsentSince = -1;
     private Runnable pending;
     private long pendingStep;
     private long pendingTime;
     private boolean closed;
-
-    /**
-     * Sets what sends a step's requests, run outside the gate's lock by the thread that claims it.
-     *
-     * @param sender drains the request queue and sends it
-     */
-    public synchronized void onAllYielded(Runnable sender) {
-        this.sender = sender;
-    }
 
     /**
      * Makes a thread one whose yields the steps wait for.
@@ -50,18 +42,13 @@ public final class StepGate {
      * Stops waiting for a thread's yields.
      *
      * @param thread a thread of the robot's code
+     * @return true if the others have all yielded, so the caller must send the step's requests now
      */
-    public void leave(Thread thread) {
-        boolean send;
-        synchronized (this) {
-            participants.remove(thread);
-            waiting.remove(thread);
-            notifyAll();
-            send = claim();
-        }
-        if (send) {
-            sender.run();
-        }
+    public synchronized boolean leave(Thread thread) {
+        participants.remove(thread);
+        waiting.remove(thread);
+        notifyAll();
+        return claim();
     }
 
     /** @return simulated time of the latest state, ms */
@@ -87,31 +74,34 @@ public final class StepGate {
 
     /**
      * Yields the calling thread until {@code wakeWhen} holds for the simulated time (or the
-     * connection ends). The calling thread becomes a participant if it was not one. If it is the
-     * last participant to yield for the open step, it sends the step's requests first.
+     * connection ends); it then waits in {@link #awaitWake}. The calling thread becomes a
+     * participant if it was not one.
      *
      * @param wakeWhen a condition on simulated time in ms, checked as each step arrives
+     * @return true if it is the last participant to yield for the open step, so the caller must
+     *         send the step's requests (before it waits)
+     */
+    public synchronized boolean yieldUntil(LongPredicate wakeWhen) {
+        Thread me = Thread.currentThread();
+        participants.add(me);
+        waiting.put(me, wakeWhen);
+        return claim();
+    }
+
+    /**
+     * Waits until a step satisfies the condition the calling thread yielded with
+     * ({@link #yieldUntil}), or the connection ends; returns at once if that has already happened.
+     *
      * @throws InterruptedException if interrupted while waiting
      */
-    public void await(LongPredicate wakeWhen) throws InterruptedException {
+    public synchronized void awaitWake() throws InterruptedException {
         Thread me = Thread.currentThread();
-        boolean send;
-        synchronized (this) {
-            participants.add(me);
-            waiting.put(me, wakeWhen);
-            send = claim();
-        }
-        if (send) {
-            sender.run();
-        }
-        synchronized (this) {
-            try {
-                while (!closed && waiting.containsKey(me)) {
-                    wait();
-                }
-            } finally {
-                waiting.remove(me);
+        try {
+            while (!closed && waiting.containsKey(me)) {
+                wait();
             }
+        } finally {
+            waiting.remove(me);
         }
     }
 
@@ -158,11 +148,15 @@ public final class StepGate {
     }
 
     /**
+     * Read without the gate's lock, so that a watchdog looking after many robots can pass over the
+     * ones with nothing to look at cheaply.
+     *
      * @return nanoseconds (of {@link System#nanoTime}) since the open step's state arrived and its
      *         requests are still unsent, or -1 if nothing is waiting to be sent
      */
-    public synchronized long unsentNanos() {
-        return unsentSince < 0 ? -1 : System.nanoTime() - unsentSince;
+    public long unsentNanos() {
+        long since = unsentSince;
+        return since < 0 ? -1 : System.nanoTime() - since;
     }
 
     private boolean claim() {

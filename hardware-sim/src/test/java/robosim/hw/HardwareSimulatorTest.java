@@ -51,7 +51,8 @@ class HardwareSimulatorTest {
     private static final RobotParameters PARAMETERS = TestRobot.PARAMETERS;
     private static final HardwareOptions OPTIONS = new HardwareOptions(WAIT_MS, WAIT_MS, WAIT_MS);
 
-    private final StepGate gate = new StepGate();
+    /** The simulator the test made last. */
+    private HardwareSimulator made;
     private final BlockingQueue<RobotSensorResponse> responses = new LinkedBlockingQueue<>();
     private final RobotCode code = new RobotCode();
     private FakeEnvironment env;
@@ -66,31 +67,32 @@ class HardwareSimulatorTest {
         try {
             env.close();
         } finally {
-            gate.close();
+            if (made != null) {
+                made.ended("the test is over");
+            }
             code.close();
         }
     }
 
     private HardwareSimulator hardware(String name, HardwareOptions options) {
-        return new HardwareSimulator(new RobotHello(name, "pioneer", PARAMETERS), gate, responses::add, options);
+        made = new HardwareSimulator(new RobotHello(name, "pioneer", PARAMETERS), responses::add, options);
+        return made;
     }
 
     /**
-     * Runs robot code on a thread of its own: it connects, joins the gate, starts the hardware
-     * thread, then runs {@code body}.
+     * Runs robot code on a thread of its own: it connects (and so becomes the robot's code), then
+     * runs {@code body}.
      */
     private Thread run(HardwareSimulator hw, RobotCode.Body body) {
         return code.start("code", () -> {
             hw.connect("127.0.0.1", env.port());
-            gate.join(Thread.currentThread());
-            hw.start();
             body.run();
         });
     }
 
     /** Yields until the link ends. */
     private void yieldUntilTheEnd() throws InterruptedException {
-        gate.await(time -> false);
+        made.await(time -> false);
     }
 
     /** Connects on a thread of its own, for tests of a connect that fails. */
@@ -214,7 +216,7 @@ class HardwareSimulatorTest {
             hw.request(new RobotRequest(new Command.SetVel(300)));
             hw.request(new RobotRequest(new Command.SetRotVel(-15)));
             hw.request(new RobotRequest(new Command.Say("first")));
-            gate.await(time -> time >= 100);
+            hw.await(time -> time >= 100);
             hw.request(new RobotRequest(new Command.Stop()));
             yieldUntilTheEnd();
         });
@@ -269,8 +271,8 @@ class HardwareSimulatorTest {
         RobotSensorResponse second = responses.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertEquals(1, second.step());
         assertEquals(100, second.timeMs());
-        assertEquals(1, gate.step());
-        assertEquals(100, gate.timeMs());
+        assertEquals(1, made.step());
+        assertEquals(100, made.timeMs());
     }
 
     // ---- how the link ends ----
@@ -286,7 +288,7 @@ class HardwareSimulatorTest {
         env.send(new Bye("the run is over"));
         RobotCode.join(robot);
         assertEquals("the Environment said the run is over", hw.endReason());
-        assertTrue(gate.isClosed());
+        assertTrue(made.isEnded());
         assertNull(env.read(), "the robot has closed its end");
     }
 
@@ -330,7 +332,7 @@ class HardwareSimulatorTest {
     void disconnectSaysByeWithTheReasonAndEndsTheLink() throws Exception {
         HardwareSimulator hw = hardware("r1", OPTIONS);
         Thread robot = run(hw, () -> {
-            gate.await(time -> time >= 100);
+            hw.await(time -> time >= 100);
             hw.disconnect("the program is done");
         });
         env.acceptHello();
@@ -340,7 +342,7 @@ class HardwareSimulatorTest {
         assertEquals(new Bye("the program is done"), env.read());
         RobotCode.join(robot);
         assertEquals("disconnected: the program is done", hw.endReason());
-        assertTrue(gate.isClosed());
+        assertTrue(made.isEnded());
     }
 
     @Test

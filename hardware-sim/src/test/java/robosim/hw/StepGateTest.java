@@ -43,6 +43,16 @@ class StepGateTest {
 
     private final StepGate gate = new StepGate();
     private final List<Thread> threads = new ArrayList<>();
+    /** What the test's "hardware" does when the gate says a step's requests must be sent now. */
+    private volatile Runnable sender = () -> { };
+
+    /** Yields as a HardwareSimulator does: sends if the gate says so, then waits to be woken. */
+    private void await(java.util.function.LongPredicate wakeWhen) throws InterruptedException {
+        if (gate.yieldUntil(wakeWhen)) {
+            sender.run();
+        }
+        gate.awaitWake();
+    }
 
     @AfterEach
     void stopThreads() throws InterruptedException {
@@ -84,7 +94,7 @@ class StepGateTest {
         CountDownLatch woke = new CountDownLatch(1);
         AtomicLong wokeAt = new AtomicLong(-1);
         Thread t = start("waiter", () -> {
-            gate.await(time -> time >= 200);
+            await(time -> time >= 200);
             wokeAt.set(gate.timeMs());
             woke.countDown();
         });
@@ -102,20 +112,20 @@ class StepGateTest {
     void theStepIsSentByTheLastThreadToYieldAndOnlyThen() throws Exception {
         AtomicReference<String> sentBy = new AtomicReference<>();
         CountDownLatch sent = new CountDownLatch(1);
-        gate.onAllYielded(() -> {
+        sender = (() -> {
             sentBy.set(Thread.currentThread().getName());
             sent.countDown();
         });
         CountDownLatch mayYield = new CountDownLatch(1);
         Thread sleeper = start("sleeps-on", () -> {
             gate.join(Thread.currentThread());
-            gate.await(time -> false);
+            await(time -> false);
         });
         Thread woken = start("woken-at-100", () -> {
             gate.join(Thread.currentThread());
-            gate.await(time -> time >= 100);
+            await(time -> time >= 100);
             assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
-            gate.await(time -> false);
+            await(time -> false);
         });
         awaitWaiting(sleeper);
         awaitWaiting(woken);
@@ -136,7 +146,7 @@ class StepGateTest {
             gate.join(Thread.currentThread());
             joined.countDown();
             assertTrue(mayYield.await(WAIT_MS, TimeUnit.MILLISECONDS));
-            gate.await(time -> false);
+            await(time -> false);
         });
         assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
         AtomicReference<String> state = new AtomicReference<>("old");
@@ -159,7 +169,7 @@ class StepGateTest {
         Thread t = start("sleeper", () -> {
             gate.join(Thread.currentThread());
             waiting.countDown();
-            gate.await(time -> time >= 300);
+            await(time -> time >= 300);
         });
         assertTrue(waiting.await(WAIT_MS, TimeUnit.MILLISECONDS));
         awaitWaiting(t);
@@ -174,7 +184,7 @@ class StepGateTest {
         Thread yields = start("yields", () -> {
             gate.join(Thread.currentThread());
             waiting.countDown();
-            gate.await(time -> false);
+            await(time -> false);
         });
         Thread dies = start("dies", () -> gate.join(Thread.currentThread()));
         assertTrue(waiting.await(WAIT_MS, TimeUnit.MILLISECONDS));
@@ -200,7 +210,7 @@ class StepGateTest {
     void closeReleasesAWaitingThread() throws Exception {
         CountDownLatch released = new CountDownLatch(1);
         Thread t = start("waiter", () -> {
-            gate.await(time -> false);
+            await(time -> false);
             released.countDown();
         });
         awaitWaiting(t);
@@ -218,7 +228,7 @@ class StepGateTest {
         AtomicLong seenStep = new AtomicLong(-1);
         CountDownLatch woke = new CountDownLatch(1);
         Thread t = start("waiter", () -> {
-            gate.await(time -> time >= 100);
+            await(time -> time >= 100);
             seen.set(state.get());
             seenStep.set(gate.step());
             woke.countDown();
@@ -251,22 +261,20 @@ class StepGateTest {
         MessageCodec codec = new MessageCodec();
         try (ServerSocket listener = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             listener.setSoTimeout((int) WAIT_MS);
-            HardwareSimulator hw = new HardwareSimulator(new RobotHello("r1", "pioneer", null), gate,
+            HardwareSimulator hw = new HardwareSimulator(new RobotHello("r1", "pioneer", null),
                     r -> { }, new HardwareOptions(WAIT_MS, 10_000, 5_000));
             AtomicReference<Throwable> robotFailure = new AtomicReference<>();
             Thread robot = start("robot-r1", () -> {
                 try {
                     hw.connect("127.0.0.1", listener.getLocalPort());
-                    gate.join(Thread.currentThread());
-                    hw.start();
-                    for (int k = 0; !gate.isClosed(); k++) {
+                    for (int k = 0; !hw.isEnded(); k++) {
                         for (Command c : batch(k)) {
                             Thread.sleep(jitter.nextInt(12));
                             hw.request(new RobotRequest(c));
                         }
                         Thread.sleep(jitter.nextInt(12));
                         long wake = (k + 1) * 100L;
-                        gate.await(time -> time >= wake);
+                        hw.await(time -> time >= wake);
                     }
                 } catch (Throwable e) {
                     robotFailure.set(e);

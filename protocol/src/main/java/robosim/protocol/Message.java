@@ -22,8 +22,11 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Snapshot.class, name = "frame"),
         @JsonSubTypes.Type(value = Bye.class, name = "bye"),
         @JsonSubTypes.Type(value = CommsUpdate.class, name = "commsUpdate"),
+        @JsonSubTypes.Type(value = LinkHello.class, name = "linkHello"),
+        @JsonSubTypes.Type(value = TimeSteps.class, name = "timeSteps"),
+        @JsonSubTypes.Type(value = LinkRequests.class, name = "linkRequests"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
-        CommsUpdate {
+        CommsUpdate, LinkHello, TimeSteps, LinkRequests {
 }

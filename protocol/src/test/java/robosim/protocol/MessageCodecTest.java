@@ -105,6 +105,22 @@ class MessageCodecTest {
         assertEquals(bye, roundTrip(format, bye));
     }
 
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void byeNamingOneRobotOfASharedLinkRoundTrips(Format format) throws FrameException {
+        Bye bye = new Bye("refused: robot robot1 is already connected", "robot1");
+
+        assertEquals(bye, roundTrip(format, bye));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void linkMessagesRoundTripEveryRobotsPart(Format format) throws FrameException {
+        assertEquals(Messages.linkHello(), roundTrip(format, Messages.linkHello()));
+        assertDeepEquals(Messages.timeSteps(), roundTrip(format, Messages.timeSteps()));
+        assertEquals(Messages.linkRequests(), roundTrip(format, Messages.linkRequests()));
+    }
+
     @Test
     void fixturesHoldOneMessageOfEveryType() {
         Set<Class<?>> covered = Messages.all().stream().map(Object::getClass).collect(Collectors.toSet());
@@ -180,6 +196,9 @@ class MessageCodecTest {
         "WorldDescription, world",
         "Snapshot, frame",
         "Bye, bye",
+        "LinkHello, linkHello",
+        "TimeSteps, timeSteps",
+        "LinkRequests, linkRequests",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
         Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))

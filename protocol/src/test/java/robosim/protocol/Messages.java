@@ -108,8 +108,25 @@ final class Messages {
         return new CommsUpdate(2500.5, true, null, 0.125, 1024);
     }
 
+    static LinkHello linkHello() {
+        return new LinkHello("client-7");
+    }
+
+    /** Two robots' states, the second without sonar. */
+    static TimeSteps timeSteps() {
+        RobotState quiet = new RobotState(41, 4100, 10, 20, -90, 0, 0, 0, 0, false, new int[0], 0);
+        return new TimeSteps(42, 4200, List.of(new TimeSteps.ForRobot("robot1", state()),
+                new TimeSteps.ForRobot("robot2", quiet)));
+    }
+
+    /** Every command for one robot, none for the other. */
+    static LinkRequests linkRequests() {
+        return new LinkRequests(42, List.of(new LinkRequests.ForRobot("robot1", robotRequests().commands()),
+                new LinkRequests.ForRobot("robot2", List.of())));
+    }
+
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
-                snapshot(), bye(), commsUpdate());
+                snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests());
     }
 }

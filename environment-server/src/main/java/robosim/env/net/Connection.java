@@ -6,9 +6,13 @@ import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import robosim.protocol.Bye;
 import robosim.protocol.FrameDecoder;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
@@ -18,7 +22,8 @@ import robosim.protocol.MessageCodec;
  * One peer of the Environment, robot or viewer, on a non-blocking channel served by the step
  * loop's selector: frames in through a {@link FrameDecoder}, frames out through a queue that is
  * written as the peer can take it. A peer that lets too much pile up is closed, so a slow or stuck
- * peer never blocks the run.
+ * peer never blocks the run. A robot connection carries one robot, or, once it has said
+ * {@link robosim.protocol.LinkHello}, is a shared link carrying the robots that said hello on it.
  */
 final class Connection {
     private static final Logger LOG = Logger.getLogger(Connection.class.getName());
@@ -35,6 +40,8 @@ final class Connection {
     private final String address;
     private long queuedBytes;
     private String name;
+    private boolean link;
+    private final Set<String> robots = new LinkedHashSet<>();
     private boolean closed;
     private boolean closeWhenFlushed;
 
@@ -51,10 +58,60 @@ final class Connection {
         this.key = channel.register(selector, SelectionKey.OP_READ, this);
     }
 
-    /** @return the robot's or viewer's name once it has said hello, else its address */
+    /** @return the robot's or viewer's name once it has said hello, the link's client, else its address */
     String peer() {
+        if (link) {
+            return "link of " + name + " at " + address;
+        }
         String k = kind.name().toLowerCase();
         return name != null ? k + " " + name : k + " at " + address;
+    }
+
+    /**
+     * Makes this connection a shared link of many robots.
+     *
+     * @param client who opened it, for the log
+     */
+    void becomeLink(String client) {
+        link = true;
+        name = String.valueOf(client);
+    }
+
+    /** @return whether this is a shared link of many robots */
+    boolean isLink() {
+        return link;
+    }
+
+    /** @param robot a robot the Environment welcomed on this link */
+    void addRobot(String robot) {
+        robots.add(robot);
+    }
+
+    /** @return the robots on this link now, in the order they joined */
+    List<String> robots() {
+        return new ArrayList<>(robots);
+    }
+
+    /** @return whether a robot is on this link now */
+    boolean carries(String robot) {
+        return robots.contains(robot);
+    }
+
+    /**
+     * Ends one robot's part in a shared link, which stays open for the others: the robot is told
+     * why; a reason is logged in one line naming the robot, as closing its own connection would.
+     *
+     * @param robot  the robot
+     * @param reason why, or null for an orderly leave
+     */
+    void dropRobot(String robot, String reason) {
+        if (!robots.remove(robot)) {
+            return;
+        }
+        if (reason != null) {
+            LOG.warning(() -> "closing robot " + robot + ": " + reason);
+        }
+        send(new Bye(reason != null ? reason : "goodbye", robot));
     }
 
     void setName(String name) {

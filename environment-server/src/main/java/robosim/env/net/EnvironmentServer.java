@@ -11,6 +11,7 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -22,10 +23,13 @@ import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
+import robosim.protocol.FrameWriter;
 import robosim.protocol.InvalidValueException;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotState;
 import robosim.protocol.TimeStep;
+import robosim.protocol.TimeSteps;
 import robosim.protocol.Snapshot;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.SnapshotListeners;
@@ -194,9 +198,7 @@ public final class EnvironmentServer implements AutoCloseable {
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
         rules.openStep(current);
-        for (Map.Entry<String, Connection> r : new ArrayList<>(rules.connectedRobots().entrySet())) {
-            r.getValue().send(new TimeStep(current, sim.timeMs(), sim.state(r.getKey())));
-        }
+        sendTimeSteps(current);
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
         while (!rules.waitingFor().isEmpty()) {
             if (System.nanoTime() >= deadline) {
@@ -210,6 +212,37 @@ public final class EnvironmentServer implements AutoCloseable {
             pump(deadline);
         }
         return rules.closeStep();
+    }
+
+    /**
+     * Opens the step for every robot: a {@link TimeStep} to each robot on a connection of its own,
+     * one {@link TimeSteps} to each shared link for all its robots. The states are read in the
+     * robots' order; the frames are encoded on the worker threads.
+     */
+    private void sendTimeSteps(long current) {
+        long timeMs = sim.timeMs();
+        List<Connection> to = new ArrayList<>();
+        List<Message> steps = new ArrayList<>();
+        Map<Connection, List<TimeSteps.ForRobot>> links = new LinkedHashMap<>();
+        for (Map.Entry<String, Connection> r : rules.connectedRobots().entrySet()) {
+            Connection c = r.getValue();
+            RobotState state = sim.state(r.getKey());
+            if (c.isLink()) {
+                links.computeIfAbsent(c, k -> new ArrayList<>()).add(new TimeSteps.ForRobot(r.getKey(), state));
+            } else {
+                to.add(c);
+                steps.add(new TimeStep(current, timeMs, state));
+            }
+        }
+        for (Map.Entry<Connection, List<TimeSteps.ForRobot>> link : links.entrySet()) {
+            to.add(link.getKey());
+            steps.add(new TimeSteps(current, timeMs, link.getValue()));
+        }
+        ByteBuffer[] frames = new ByteBuffer[steps.size()];
+        workers.forEach(frames.length, i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
+        for (int i = 0; i < frames.length; i++) {
+            to.get(i).sendFrame(frames[i]);
+        }
     }
 
     /** Serves every ready connection once, waiting until something is ready or the deadline. */

@@ -16,6 +16,8 @@ import robosim.protocol.Command;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.CommsUpdate;
+import robosim.protocol.LinkHello;
+import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
@@ -26,9 +28,10 @@ import robosim.protocol.Welcome;
 /**
  * The protocol's rules for each peer, applied by the step loop: who may say what and when. A robot
  * says hello once, with a name the world knows and no other program is using, before the first
- * step; then sends exactly one set of requests for each step the Environment opens. A viewer says
- * hello and then only listens. Anything else closes that peer, with a log line naming it and the
- * rule.
+ * step; then sends exactly one set of requests for each step the Environment opens. A shared link
+ * (a connection that said {@link LinkHello}) follows the same rules for each of its robots, and a
+ * robot that breaks one is dropped alone while the link goes on. A viewer says hello and then only
+ * listens. Anything else closes that peer, with a log line naming it and the rule.
  */
 final class SessionRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
@@ -114,14 +117,19 @@ final class SessionRules {
         if (c.isClosed()) {
             return;
         }
-        if (c.name() == null) {
+        if (c.isLink()) {
+            fromLink(c, m);
+        } else if (c.name() == null) {
             if (m instanceof RobotHello hello) {
                 hello(c, hello);
+            } else if (m instanceof LinkHello hello) {
+                c.becomeLink(hello.client());
+                LOG.fine(() -> "a shared link opened: " + c.peer());
             } else {
-                c.close("expected robotHello as its first message, got " + typeOf(m));
+                c.close("expected robotHello or linkHello as its first message, got " + typeOf(m));
             }
         } else if (m instanceof RobotRequests req) {
-            requests(c, req);
+            requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
             LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
             c.shut();
@@ -129,6 +137,41 @@ final class SessionRules {
         } else {
             c.close("sent " + typeOf(m) + " during step " + openStep + "; a robot sends only robotRequests");
         }
+    }
+
+    private void fromLink(Connection c, Message m) {
+        if (m instanceof LinkRequests req) {
+            for (LinkRequests.ForRobot r : req.robots()) {
+                // a robot already dropped may still be in a frame the link sent before it learnt so
+                if (c.carries(r.robot()) && robots.get(r.robot()) == c) {
+                    requests(c, r.robot(), req.step(), r.commands());
+                }
+            }
+        } else if (m instanceof RobotHello hello) {
+            hello(c, hello);
+        } else if (m instanceof Bye bye && bye.robot() != null) {
+            if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
+                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + bye.reason());
+                drop(bye.robot(), null);
+            }
+        } else if (m instanceof Bye bye) {
+            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            for (String robot : c.robots()) {
+                drop(robot, null);
+            }
+            c.shut();
+        } else {
+            closeLink(c, "sent " + typeOf(m) + " during step " + openStep
+                    + "; a link sends only robotHello, linkRequests and bye");
+        }
+    }
+
+    /** Closes a shared link, dropping each of its robots with a log line that names it. */
+    private void closeLink(Connection c, String reason) {
+        for (String robot : c.robots()) {
+            drop(robot, "its link " + reason);
+        }
+        c.close(reason);
     }
 
     private void hello(Connection c, RobotHello hello) {
@@ -142,10 +185,18 @@ final class SessionRules {
         }
         if (refusal != null) {
             LOG.warning("refusing robot " + hello.name() + ": " + refusal);
-            c.sendAndClose(new Bye("refused: " + refusal));
+            if (c.isLink()) {
+                c.send(new Bye("refused: " + refusal, hello.name()));
+            } else {
+                c.sendAndClose(new Bye("refused: " + refusal));
+            }
             return;
         }
-        c.setName(hello.name());
+        if (c.isLink()) {
+            c.addRobot(hello.name());
+        } else {
+            c.setName(hello.name());
+        }
         robots.put(hello.name(), c);
         sim.setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
@@ -173,17 +224,22 @@ final class SessionRules {
         return null;
     }
 
-    private void requests(Connection c, RobotRequests req) {
-        if (req.step() != openStep || !waiting.contains(c.name())) {
+    private void requests(Connection c, String name, long step, List<Command> sent) {
+        if (step != openStep || !waiting.contains(name)) {
             String open = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
-                    : waiting.contains(c.name()) ? "while step " + openStep + " is open"
+                    : waiting.contains(name) ? "while step " + openStep + " is open"
                     : "after it had already sent its requests for step " + openStep;
-            c.close("robot " + c.name() + " sent requests for step " + req.step() + " " + open);
-            drop(c.name(), null);
+            String rule = "robot " + name + " sent requests for step " + step + " " + open;
+            if (c.isLink()) {
+                drop(name, rule);
+            } else {
+                c.close(rule);
+                drop(name, null);
+            }
             return;
         }
-        commands.put(c.name(), req.commands());
-        waiting.remove(c.name());
+        commands.put(name, sent);
+        waiting.remove(name);
     }
 
     /**
@@ -195,7 +251,10 @@ final class SessionRules {
      */
     void invalid(Connection c, String rule) {
         String name = c.name();
-        if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
+        if (c.isLink()) {
+            // the frame could not be read, so whose request it was is unknown: the link goes
+            closeLink(c, "sent an invalid message: " + rule);
+        } else if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
             String when = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
                     : "for step " + openStep;
             drop(name, "robot " + name + " sent an invalid request " + when + ": " + rule);
@@ -252,7 +311,17 @@ final class SessionRules {
             return;
         }
         String name = c.name();
-        if (name != null && robots.get(name) == c) {
+        if (c.isLink()) {
+            for (String robot : c.robots()) {
+                drop(robot, DISCONNECTED.equals(reason) ? null : "its link: " + reason);
+                if (DISCONNECTED.equals(reason)) {
+                    LOG.info(() -> "robot " + robot + " disconnected at step " + sim.stepCount() + " with its link");
+                }
+            }
+            if (!DISCONNECTED.equals(reason)) {
+                c.close(reason);
+            }
+        } else if (name != null && robots.get(name) == c) {
             drop(name, DISCONNECTED.equals(reason) ? null : reason);
             if (DISCONNECTED.equals(reason)) {
                 LOG.info(() -> "robot " + name + " disconnected at step " + sim.stepCount());
@@ -272,12 +341,15 @@ final class SessionRules {
         waiting.remove(name);
         sim.halt(name);
         sim.setConnected(name, false);
-        if (c != null) {
-            if (reason != null) {
-                c.close(reason);
-            } else {
-                c.sendAndClose(new Bye("goodbye"));
-            }
+        if (c == null) {
+            return;
+        }
+        if (c.isLink()) {
+            c.dropRobot(name, reason);
+        } else if (reason != null) {
+            c.close(reason);
+        } else {
+            c.sendAndClose(new Bye("goodbye"));
         }
     }
 

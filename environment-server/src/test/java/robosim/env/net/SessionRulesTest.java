@@ -175,7 +175,7 @@ class SessionRulesTest {
         deliver(peer);
 
         assertTrue(peer.closedByEnvironment());
-        assertTrue(onlyWarning().endsWith(": expected robotHello as its first message, got RobotRequests"),
+        assertTrue(onlyWarning().endsWith(": expected robotHello or linkHello as its first message, got RobotRequests"),
                 onlyWarning());
     }
 

@@ -1,0 +1,45 @@
+package robosim.hw;
+
+import java.io.IOException;
+import java.util.List;
+import robosim.protocol.RobotHello;
+import robosim.protocol.Welcome;
+
+/**
+ * How one robot's {@link HardwareSimulator} reaches the Environment: a connection of its own, or
+ * its part of a connection that the robots of one JVM share (see {@link EnvironmentLinks}). The
+ * simulator opens it once, then sends one set of requests per step until it says bye or the link
+ * ends.
+ */
+public interface EnvironmentLink {
+    /**
+     * Connects, says hello and waits (bounded) for the Environment's welcome. From then on each
+     * step goes to {@code receiver}, on a thread of the link; the first may come before this
+     * returns.
+     *
+     * @param hello    the robot's name, type and parameters
+     * @param receiver where the steps go
+     * @return the welcome, with the robot's state before the first step
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    Welcome open(RobotHello hello, StepReceiver receiver) throws IOException;
+
+    /**
+     * Sends the robot's requests for a step.
+     *
+     * @param step     the step open
+     * @param requests what the robot's code requested since its previous yield, in order
+     * @throws IOException if the link cannot send
+     */
+    void send(long step, List<RobotRequest> requests) throws IOException;
+
+    /**
+     * Says bye, then closes: the robot leaves the run.
+     *
+     * @param reason for the Environment's log
+     */
+    void bye(String reason);
+
+    /** Closes without a word; no step is delivered after it returns. Closing twice does nothing. */
+    void close();
+}

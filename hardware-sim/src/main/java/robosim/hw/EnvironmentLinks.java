@@ -1,0 +1,67 @@
+package robosim.hw;
+
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * Chooses each robot's {@link EnvironmentLink}. By default ({@code auto}) a robot alone in its JVM
+ * has a connection of its own, with one frame per robot each way each step, as every robot had
+ * before shared links; from the second robot of a JVM connected to the same Environment on, the
+ * robots share one connection, each step's states arriving in one frame and their requests leaving
+ * in one. Runs are the same either way: the Environment steps each robot as it would over a
+ * connection of its own.
+ *
+ * <p>The system property {@code robosim.link} overrides the choice: {@code own} gives every robot a
+ * connection of its own, {@code shared} puts every robot, the first too, on the shared one.
+ */
+public final class EnvironmentLinks {
+    /** The system property that chooses the links. */
+    public static final String PROPERTY = "robosim.link";
+    /** Robots of this JVM connected or connecting, by the Environment's host and port. */
+    private static final Map<String, Integer> ROBOTS = new ConcurrentHashMap<>();
+
+    private EnvironmentLinks() {
+    }
+
+    /** How robots reach the Environment. */
+    public enum Mode {
+        /** The first robot of a JVM alone, the others sharing one connection. */
+        AUTO,
+        /** A connection for each robot. */
+        OWN,
+        /** One connection for every robot of the JVM. */
+        SHARED;
+
+        /**
+         * @return the mode {@value #PROPERTY} names, {@link #AUTO} if unset
+         * @throws IllegalArgumentException if it names none
+         */
+        public static Mode configured() {
+            String value = System.getProperty(PROPERTY, "auto");
+            try {
+                return valueOf(value.trim().toUpperCase(Locale.ROOT));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("'" + value + "' was supplied for the system property " + PROPERTY
+                        + ": it is auto, own or shared", e);
+            }
+        }
+    }
+
+    /**
+     * A link for one robot, not yet open, as {@link Mode#configured()} chooses.
+     *
+     * @param host    the Environment's host
+     * @param port    its robot port
+     * @param options timeouts
+     * @return the link
+     */
+    public static EnvironmentLink to(String host, int port, HardwareOptions options) {
+        Mode mode = Mode.configured();
+        String key = host + ":" + port;
+        int robots = ROBOTS.merge(key, 1, Integer::sum);
+        Runnable released = () -> ROBOTS.computeIfPresent(key, (k, n) -> n > 1 ? n - 1 : null);
+        boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1;
+        return shared ? SharedLink.member(host, port, options, released) : new SocketLink(host, port, options, released);
+    }
+}

@@ -1,0 +1,347 @@
+package robosim.hw;
+
+import java.io.IOException;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import robosim.protocol.Bye;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.LinkHello;
+import robosim.protocol.LinkRequests;
+import robosim.protocol.Message;
+import robosim.protocol.RobotHello;
+import robosim.protocol.TimeSteps;
+import robosim.protocol.Welcome;
+
+/**
+ * One connection to an Environment that many robots of this JVM share: each step one
+ * {@link TimeSteps} frame in, read by one thread that hands each robot its state, and one
+ * {@link LinkRequests} frame out, written by the thread that completes it (the last robot to
+ * yield). Each robot keeps its own {@link HardwareSimulator}, request queue and state. When some
+ * robots are late, the requests of the others go after {@link #LINGER_MS} in a frame of their own,
+ * so that only the late ones miss the Environment's step deadline.
+ */
+final class SharedLink {
+    private static final Logger LOG = Logger.getLogger(SharedLink.class.getName());
+    /** How long a step's requests wait for late robots of the link before the ready ones are sent. */
+    static final long LINGER_MS = 100;
+    /** The open links, by the Environment's host and port. */
+    private static final Map<String, SharedLink> OPEN = new ConcurrentHashMap<>();
+    /** Held while a link connects, so that robots connecting together open one link. */
+    private static final Object CONNECTING = new Object();
+
+    private final String host;
+    private final int port;
+    private final HardwareOptions options;
+    private final Socket socket;
+    private final FrameReader reader;
+    private final FrameWriter writer;
+    private final Map<String, Member> members = new ConcurrentHashMap<>();
+    private final Map<String, Joining> joining = new ConcurrentHashMap<>();
+    /** The open step's requests, guarded by this. */
+    private long batchStep;
+    private final Set<Member> expected = new LinkedHashSet<>();
+    private List<LinkRequests.ForRobot> batch = new ArrayList<>();
+    private long batchOpenedNanos;
+    private volatile String endReason;
+
+    private record Joining(Member member, CompletableFuture<Welcome> welcome) {
+    }
+
+    private SharedLink(String host, int port, HardwareOptions options) throws IOException {
+        this.host = host;
+        this.port = port;
+        this.options = options;
+        this.socket = SocketLink.connectSocket(host, port, options);
+        try {
+            socket.setSoTimeout((int) options.stepReadTimeoutMs());
+            reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
+            writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid()));
+        } catch (IOException | RuntimeException e) {
+            socket.close();
+            throw e;
+        }
+    }
+
+    /**
+     * A robot's part of the JVM's shared link to an Environment, which is connected if none is open.
+     *
+     * @param host     the Environment's host
+     * @param port     its robot port
+     * @param options  timeouts (the first robot's serve the whole link)
+     * @param released run once when the robot's part closes
+     * @return the robot's part, not yet open
+     */
+    static EnvironmentLink member(String host, int port, HardwareOptions options, Runnable released) {
+        return new Member(host, port, options, released);
+    }
+
+    private static SharedLink to(String host, int port, HardwareOptions options) throws IOException {
+        String key = host + ":" + port;
+        synchronized (CONNECTING) {
+            SharedLink link = OPEN.get(key);
+            if (link == null || link.endReason != null) {
+                link = new SharedLink(host, port, options);
+                OPEN.put(key, link);
+                SharedLink started = link;
+                RobotThreads.unstarted("hw-link-" + key, started::read).start();
+            }
+            return link;
+        }
+    }
+
+    /** Sends, on every open link, the requests of robots that are ready when others are late. */
+    static void sendLingering() {
+        long now = System.nanoTime();
+        for (SharedLink link : OPEN.values()) {
+            LinkRequests ready;
+            synchronized (link) {
+                ready = link.batch.isEmpty() || now - link.batchOpenedNanos < TimeUnit.MILLISECONDS.toNanos(LINGER_MS)
+                        ? null : link.takeBatch();
+            }
+            link.write(ready);
+        }
+    }
+
+    private Welcome join(Member m, RobotHello hello) throws IOException {
+        String name = hello.name();
+        Joining j = new Joining(m, new CompletableFuture<>());
+        if (members.containsKey(name) || joining.putIfAbsent(name, j) != null) {
+            throw new IOException("robot " + name + " is already connected from this program");
+        }
+        try {
+            if (endReason != null) {
+                throw new IOException(endReason);
+            }
+            writer.write(hello);
+            return j.welcome().get(options.connectTimeoutMs(), TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
+            throw new SocketTimeoutException("the Environment at " + host + ":" + port + " did not welcome robot "
+                    + name + " within " + options.connectTimeoutMs() + " ms");
+        } catch (ExecutionException e) {
+            throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while connecting", e);
+        } finally {
+            joining.remove(name);
+        }
+    }
+
+    private void read() {
+        String reason = "the Environment closed the connection";
+        try {
+            Message m;
+            while ((m = reader.read()) != null) {
+                if (m instanceof TimeSteps ts) {
+                    steps(ts);
+                } else if (m instanceof Welcome w) {
+                    welcomed(w);
+                } else if (m instanceof Bye bye && bye.robot() != null) {
+                    byeTo(bye.robot(), bye.reason());
+                } else if (m instanceof Bye bye) {
+                    reason = "the Environment said " + bye.reason();
+                    break;
+                } else {
+                    reason = "the Environment sent " + SocketLink.describe(m);
+                    break;
+                }
+            }
+        } catch (SocketTimeoutException e) {
+            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
+        } catch (IOException e) {
+            reason = e.getMessage();
+        }
+        endAll(reason);
+    }
+
+    private void welcomed(Welcome w) {
+        Joining j = joining.get(w.name());
+        if (j == null) {
+            LOG.warning(() -> "the Environment at " + host + ":" + port + " welcomed robot " + w.name()
+                    + ", which did not say hello on this link");
+            return;
+        }
+        // a member from now: the first step may come before the joining thread wakes
+        members.put(w.name(), j.member());
+        j.welcome().complete(w);
+    }
+
+    private void byeTo(String robot, String reason) {
+        Joining j = joining.get(robot);
+        if (j != null && !j.welcome().isDone()) {
+            j.welcome().completeExceptionally(new IOException("the Environment at " + host + ":" + port + " " + reason));
+            return;
+        }
+        Member m = members.get(robot);
+        if (m != null) {
+            m.ended("the Environment said " + reason);
+        }
+    }
+
+    private void steps(TimeSteps ts) {
+        List<Member> to = new ArrayList<>(ts.robots().size());
+        synchronized (this) {
+            batchStep = ts.step();
+            batch = new ArrayList<>();
+            batchOpenedNanos = System.nanoTime();
+            expected.clear();
+            for (TimeSteps.ForRobot r : ts.robots()) {
+                Member m = members.get(r.robot());
+                to.add(m);
+                if (m != null) {
+                    expected.add(m);
+                }
+            }
+        }
+        for (int i = 0; i < to.size(); i++) {
+            Member m = to.get(i);
+            if (m != null) {
+                m.receiver.step(new RobotSensorResponse(ts.step(), ts.robots().get(i).state()));
+            } else {
+                String robot = ts.robots().get(i).robot();
+                LOG.warning(() -> "the Environment at " + host + ":" + port + " sent a step to robot " + robot
+                        + ", which is not on this link");
+            }
+        }
+    }
+
+    private void submit(Member m, long step, List<RobotRequest> requests) {
+        LinkRequests complete;
+        synchronized (this) {
+            if (step != batchStep || !expected.remove(m)) {
+                return; // the robot was dropped from this step, or this is a second answer: the Environment has moved on
+            }
+            batch.add(new LinkRequests.ForRobot(m.name, SocketLink.commands(requests)));
+            complete = expected.isEmpty() ? takeBatch() : null;
+        }
+        write(complete);
+    }
+
+    /** @return the requests collected for the open step, which start afresh; call holding the lock */
+    private LinkRequests takeBatch() {
+        LinkRequests frame = new LinkRequests(batchStep, batch);
+        batch = new ArrayList<>();
+        return frame;
+    }
+
+    private void write(Message m) {
+        if (m == null) {
+            return;
+        }
+        try {
+            writer.write(m);
+        } catch (IOException e) {
+            endAll("sending requests failed: " + e.getMessage());
+        }
+    }
+
+    private void leave(Member m) {
+        members.remove(m.name, m);
+        LinkRequests complete;
+        synchronized (this) {
+            complete = expected.remove(m) && expected.isEmpty() && !batch.isEmpty() ? takeBatch() : null;
+        }
+        write(complete);
+    }
+
+    private void endAll(String reason) {
+        synchronized (this) {
+            if (endReason != null) {
+                return;
+            }
+            endReason = reason;
+        }
+        OPEN.remove(host + ":" + port, this);
+        try {
+            socket.close();
+        } catch (IOException e) {
+            LOG.log(Level.FINE, "closing", e);
+        }
+        for (Joining j : joining.values()) {
+            j.welcome().completeExceptionally(new IOException(reason));
+        }
+        for (Member m : members.values()) {
+            m.ended(reason);
+        }
+    }
+
+    /** One robot's part of the link. */
+    private static final class Member implements EnvironmentLink {
+        private final String host;
+        private final int port;
+        private final HardwareOptions options;
+        private final Runnable released;
+        private volatile SharedLink link;
+        private volatile String name;
+        private volatile StepReceiver receiver;
+        private volatile boolean closed;
+
+        Member(String host, int port, HardwareOptions options, Runnable released) {
+            this.host = host;
+            this.port = port;
+            this.options = options;
+            this.released = released;
+        }
+
+        @Override
+        public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
+            this.name = hello.name();
+            this.receiver = receiver;
+            try {
+                link = SharedLink.to(host, port, options);
+                return link.join(this, hello);
+            } catch (IOException | RuntimeException e) {
+                close();
+                throw e;
+            }
+        }
+
+        @Override
+        public void send(long step, List<RobotRequest> requests) {
+            link.submit(this, step, requests);
+        }
+
+        @Override
+        public void bye(String reason) {
+            SharedLink l = link;
+            if (l != null && !closed) {
+                l.write(new Bye(reason, name));
+            }
+            close();
+        }
+
+        @Override
+        public void close() {
+            synchronized (this) {
+                if (closed) {
+                    return;
+                }
+                closed = true;
+            }
+            released.run();
+            SharedLink l = link;
+            if (l != null) {
+                l.leave(this);
+            }
+        }
+
+        void ended(String reason) {
+            receiver.ended(reason);
+            close();
+        }
+    }
+}

@@ -1,0 +1,178 @@
+package robosim.hw;
+
+import java.io.IOException;
+import java.net.ConnectException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import robosim.protocol.Bye;
+import robosim.protocol.Command;
+import robosim.protocol.FrameReader;
+import robosim.protocol.FrameWriter;
+import robosim.protocol.Message;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotRequests;
+import robosim.protocol.TimeStep;
+import robosim.protocol.Welcome;
+
+/**
+ * A robot's connection of its own: its hello, then a {@link TimeStep} in and a
+ * {@link RobotRequests} out each step, read by a thread of the robot's own.
+ */
+final class SocketLink implements EnvironmentLink {
+    private static final Logger LOG = Logger.getLogger(SocketLink.class.getName());
+    private static final long RETRY_MS = 200;
+    /** One codec for every link of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
+    static final MessageCodec CODEC = new MessageCodec();
+
+    private final String host;
+    private final int port;
+    private final HardwareOptions options;
+    private final Runnable released;
+    private Socket socket;
+    private FrameWriter writer;
+    private FrameReader reader;
+    private volatile boolean closed;
+
+    /**
+     * @param host     the Environment's host
+     * @param port     its robot port
+     * @param options  timeouts
+     * @param released run once when the link closes
+     */
+    SocketLink(String host, int port, HardwareOptions options, Runnable released) {
+        this.host = host;
+        this.port = port;
+        this.options = options;
+        this.released = released;
+    }
+
+    /**
+     * Connects, trying again while nothing listens (the Environment may still be starting) until
+     * the connect timeout.
+     */
+    static Socket connectSocket(String host, int port, HardwareOptions options) throws IOException {
+        long deadline = System.currentTimeMillis() + options.connectTimeoutMs();
+        while (true) {
+            Socket socket = new Socket();
+            try {
+                socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
+                socket.setTcpNoDelay(true);
+                return socket;
+            } catch (ConnectException e) {
+                socket.close();
+                if (System.currentTimeMillis() + RETRY_MS > deadline) {
+                    throw new ConnectException("no Environment at " + host + ":" + port + " within "
+                            + options.connectTimeoutMs() + " ms (" + e.getMessage() + ")");
+                }
+                try {
+                    Thread.sleep(RETRY_MS);
+                } catch (InterruptedException ie) {
+                    Thread.currentThread().interrupt();
+                    throw new IOException("interrupted while connecting", ie);
+                }
+            }
+        }
+    }
+
+    /** @return what the Environment's refusal or odd answer was, as a connect failure's text */
+    static String refusal(String host, int port, Message answer) {
+        return answer instanceof Bye bye ? "the Environment at " + host + ":" + port + " " + bye.reason()
+                : "the Environment at " + host + ":" + port + " answered " + describe(answer);
+    }
+
+    static String describe(Message m) {
+        return m == null ? "nothing (the connection closed)" : "an unexpected " + m.getClass().getSimpleName();
+    }
+
+    static List<Command> commands(List<RobotRequest> requests) {
+        List<Command> commands = new ArrayList<>(requests.size());
+        for (RobotRequest r : requests) {
+            commands.add(r.command());
+        }
+        return commands;
+    }
+
+    @Override
+    public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
+        try {
+            socket = connectSocket(host, port, options);
+            socket.setSoTimeout((int) options.connectTimeoutMs());
+            reader = new FrameReader(socket.getInputStream(), CODEC, FrameReader.DEFAULT_MAX_FRAME);
+            writer = new FrameWriter(socket.getOutputStream(), CODEC);
+            writer.write(hello);
+            Message first = reader.read();
+            if (!(first instanceof Welcome w)) {
+                throw new IOException(refusal(host, port, first));
+            }
+            socket.setSoTimeout((int) options.stepReadTimeoutMs());
+            RobotThreads.unstarted("hw-" + hello.name(), () -> read(receiver)).start();
+            return w;
+        } catch (IOException | RuntimeException e) {
+            close();
+            throw e;
+        }
+    }
+
+    private void read(StepReceiver receiver) {
+        String reason = "the Environment closed the connection";
+        try {
+            Message m;
+            while ((m = reader.read()) != null) {
+                if (m instanceof TimeStep ts) {
+                    receiver.step(new RobotSensorResponse(ts.step(), ts.state()));
+                } else if (m instanceof Bye bye) {
+                    reason = "the Environment said " + bye.reason();
+                    break;
+                } else {
+                    reason = "the Environment sent " + describe(m);
+                    break;
+                }
+            }
+        } catch (SocketTimeoutException e) {
+            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
+        } catch (IOException e) {
+            reason = e.getMessage();
+        }
+        receiver.ended(reason);
+        close();
+    }
+
+    @Override
+    public void send(long step, List<RobotRequest> requests) throws IOException {
+        writer.write(new RobotRequests(step, commands(requests)));
+    }
+
+    @Override
+    public void bye(String reason) {
+        try {
+            writer.write(new Bye(reason));
+        } catch (IOException | RuntimeException e) {
+            LOG.log(Level.FINE, "bye not sent", e);
+        }
+        close();
+    }
+
+    @Override
+    public void close() {
+        synchronized (this) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+        }
+        released.run();
+        if (socket != null) {
+            try {
+                socket.close();
+            } catch (IOException e) {
+                LOG.log(Level.FINE, "closing", e);
+            }
+        }
+    }
+}
