@@ -232,8 +232,15 @@ public final class StepRateBench {
             throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.awt.headless=true", "-Xss256k", "-Xmx" + clientHeapMb(share.count()) + "m",
-                "-cp", System.getProperty("java.class.path"),
-                BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
+                "-cp", System.getProperty("java.class.path")));
+        // the clients choose their robots' threads and links as this JVM was told to
+        for (String property : List.of("robosim.threads", "robosim.link")) {
+            String value = System.getProperty(property);
+            if (value != null) {
+                cmd.add(cmd.size() - 2, "-D" + property + "=" + value);
+            }
+        }
+        cmd.addAll(List.of(BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
                 Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName()));
         return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
     }

@@ -23,6 +23,7 @@ import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
 import robosim.env.net.ServerOptions;
+import robosim.hw.EnvironmentLinks;
 import robosim.hw.RobotThreads;
 import robosim.params.RobotParameterFiles;
 
@@ -122,9 +123,10 @@ final class BenchCommand implements Callable<Integer> {
         Path root = RobotParameterFiles.root();
         Path p3dx = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Files.createDirectories(out);
-        o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s, %d sensing threads, robot threads %s%n",
+        o.printf(Locale.ROOT, "bench: %d cores, Java %s, %s, %d sensing threads, robot threads %s, links %s%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
-                System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform");
+                System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform",
+                EnvironmentLinks.Mode.configured().name().toLowerCase(Locale.ROOT));
         if (goldfinder) {
             long limit = 60_000;
             GoldFinderBench.print(o, GoldFinderBench.run(List.of(1, 2, 4, 8), mazes, 10, limit, out.resolve("mazes"), p3dx), limit);

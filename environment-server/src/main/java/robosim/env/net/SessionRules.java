@@ -200,7 +200,7 @@ final class SessionRules {
         robots.put(hello.name(), c);
         sim.setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
-        LOG.info(() -> "robot " + hello.name() + " connected");
+        LOG.info(() -> "robot " + hello.name() + " connected" + (c.isLink() ? " on a shared link (" + c.peer() + ")" : ""));
     }
 
     private String refusal(RobotHello hello) {

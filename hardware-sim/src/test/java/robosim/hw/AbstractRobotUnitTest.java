@@ -1,0 +1,137 @@
+package robosim.hw;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static robosim.hw.FakeLink.WAIT_MS;
+
+import java.io.IOException;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Command;
+import robosim.protocol.MessageDelivery;
+import robosim.protocol.RobotState;
+
+/**
+ * What every Robot-Object shares, over a {@link FakeLink}: no connection and no Environment, the
+ * test delivering each step itself.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class AbstractRobotUnitTest {
+    private static final HardwareOptions OPTIONS = new HardwareOptions(WAIT_MS, WAIT_MS, WAIT_MS);
+
+    private final RobotCode code = new RobotCode();
+    private final FakeLink link = new FakeLink();
+    private final TestRobot robot = new TestRobot("r1", 1);
+
+    @AfterEach
+    void end() throws InterruptedException {
+        if (link.receiver != null) {
+            link.receiver.ended("the test is over");
+        }
+        code.close();
+    }
+
+    /** Connects the robot over the fake link on a code thread, then runs {@code body} there. */
+    private Thread run(RobotCode.Body body) throws InterruptedException {
+        CountDownLatch connected = new CountDownLatch(1);
+        Thread t = code.start("code", () -> {
+            robot.connect(OPTIONS, link);
+            connected.countDown();
+            body.run();
+        });
+        assertTrue(connected.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        return t;
+    }
+
+    @Test
+    void aConnectedRobotHoldsItsWelcomeAndSaysHelloWithItsParameters() throws Exception {
+        run(() -> { });
+        assertTrue(robot.isConnected());
+        assertEquals(FakeLink.state(0).x(), robot.welcomedWith.x());
+        assertEquals(100, robot.getStepMs());
+        assertEquals(TestRobot.PARAMETERS, link.hello.parameters());
+        assertEquals("pioneer", link.hello.robotType());
+    }
+
+    @Test
+    void sleepSimulatedWakesAtTheFirstStepAtOrAfterItsWakeTime() throws Exception {
+        AtomicLong wokeAt = new AtomicLong(-1);
+        Thread t = run(() -> {
+            robot.sleepSimulated(250);
+            wokeAt.set(robot.getSimTimeMs());
+        });
+        for (long step = 1; step <= 3; step++) {
+            link.step(step);
+            link.next();
+            assertEquals(-1, wokeAt.get(), "still asleep at " + (step - 1) * 100 + " ms");
+        }
+        link.step(4);
+        RobotCode.join(t);
+        assertEquals(300, wokeAt.get());
+    }
+
+    @Test
+    void commandsLeaveAsTheStepsRobotRequests() throws Exception {
+        run(() -> {
+            robot.say("hello");
+            robot.joinGroup("team");
+            robot.sleepSimulated(100);
+        });
+        link.step(1);
+        assertEquals(List.of(new RobotRequest(new Command.Say("hello")), new RobotRequest(new Command.JoinGroup("team"))),
+                link.next().requests());
+    }
+
+    @Test
+    void messagesAndComplaintsInAResponseAreHeldForTheCodeInOrder() throws Exception {
+        CountDownLatch polled = new CountDownLatch(1);
+        String[] seen = new String[3];
+        run(() -> {
+            robot.sleepSimulated(100);
+            seen[0] = robot.poll().text();
+            seen[1] = robot.poll().text();
+            seen[2] = robot.pollRequestError();
+            polled.countDown();
+            robot.sleepSimulated(10_000);
+        });
+        link.step(1);
+        link.next();
+        RobotState s = FakeLink.state(1);
+        link.receiver.step(new RobotSensorResponse(2, new RobotState(s.step(), s.timeMs(), 0, 0, 0, 0, 0, 0, 0, false,
+                new int[0], 0, new int[0], null,
+                List.of(new MessageDelivery("r2", Command.Addressing.ROBOT, "r1", "text", "first", 1, 1),
+                        new MessageDelivery("r3", Command.Addressing.ALL, null, "text", "second", 1, 4)),
+                List.of("message 2 is addressed to 'nobody'"), 0)));
+        assertTrue(polled.await(WAIT_MS, TimeUnit.MILLISECONDS));
+        assertEquals("first", seen[0]);
+        assertEquals("second", seen[1]);
+        assertEquals("message 2 is addressed to 'nobody'", seen[2]);
+        assertNull(robot.pollRequestError());
+    }
+
+    @Test
+    void aRobotThatCouldNotConnectIsNotConnectedAndItsCallsReturn() throws Exception {
+        FakeLink refusing = new FakeLink(new IOException("the Environment at here refused: no robot r1"));
+
+        Thread t = code.start("code", () -> {
+            try {
+                robot.connect(OPTIONS, refusing);
+            } catch (IOException expected) {
+                // as tryConnect records it
+            }
+            robot.sleepSimulated(1_000);
+            robot.disconnect();
+        });
+
+        RobotCode.join(t);
+        assertFalse(robot.isConnected());
+        assertEquals(0, robot.getSimTimeMs());
+    }
+}
