@@ -176,6 +176,10 @@ public final class StepGate {
     }
 
     private boolean allYielded() {
+        // every waiting thread is a live participant: when all participants wait, none has died
+        if (waiting.size() == participants.size()) {
+            return true;
+        }
         participants.removeIf(t -> !t.isAlive());
         waiting.keySet().removeIf(t -> !t.isAlive());
         return waiting.keySet().containsAll(participants);
