@@ -19,6 +19,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.bench.BenchSensors;
 import robosim.bench.CodecBench;
 import robosim.bench.CoreBench;
+import robosim.bench.Floors;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.StepRateBench;
@@ -80,6 +81,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--mazes", defaultValue = "20", paramLabel = "N", description = "mazes for --goldfinder; default ${DEFAULT-VALUE}")
     int mazes;
 
+    @Option(names = "--floors", description = "instead: what a step cannot go below here, measured without RoboSim:"
+            + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
+    boolean floors;
+
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R",
             description = "runs over TCP per robot count and sensors; the median and range are printed too; default ${DEFAULT-VALUE}")
     int repeat;
@@ -127,6 +132,12 @@ final class BenchCommand implements Callable<Integer> {
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform",
                 EnvironmentLinks.Mode.configured().name().toLowerCase(Locale.ROOT));
+        if (floors) {
+            for (int r = 0; r < repeat; r++) {
+                Floors.print(o, Floors.measure(50_000));
+            }
+            return 0;
+        }
         if (goldfinder) {
             long limit = 60_000;
             GoldFinderBench.print(o, GoldFinderBench.run(List.of(1, 2, 4, 8), mazes, 10, limit, out.resolve("mazes"), p3dx), limit);
