@@ -212,9 +212,10 @@ final class SharedLink {
             if (m != null) {
                 m.receiver.step(new RobotSensorResponse(ts.step(), ts.robots().get(i).state()));
             } else {
+                // a robot that left while this step was on its way
                 String robot = ts.robots().get(i).robot();
-                LOG.warning(() -> "the Environment at " + host + ":" + port + " sent a step to robot " + robot
-                        + ", which is not on this link");
+                LOG.fine(() -> "the Environment at " + host + ":" + port + " sent a step to robot " + robot
+                        + ", which is no longer on this link");
             }
         }
     }
