@@ -196,11 +196,21 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * @param reason for the Environment's log
      */
     public void disconnect(String reason) {
+        leave(reason, "disconnected: " + reason);
+    }
+
+    /** Says bye over the link and ends, with the reason fixed before the link's thread sees it close. */
+    private void leave(String bye, String reason) {
+        synchronized (this) {
+            if (endReason == null) {
+                endReason = reason;
+            }
+        }
         EnvironmentLink l = link;
         if (l != null) {
-            l.bye(reason);
+            l.bye(bye);
         }
-        end("disconnected: " + reason);
+        end(reason);
     }
 
     @Override
@@ -224,8 +234,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private void sendRequests() {
         EnvironmentLink l = link;
         if (gate.participantCount() == 0 && keeper == null) {
-            l.bye("the robot's code has ended");
-            end("the robot's code has ended");
+            leave("the robot's code has ended", "the robot's code has ended");
             return;
         }
         List<RobotRequest> requests = new ArrayList<>();

@@ -281,21 +281,19 @@ final class SharedLink {
     }
 
     /** One robot's part of the link. */
-    private static final class Member implements EnvironmentLink {
+    private static final class Member extends ReleasedOnClose {
         private final String host;
         private final int port;
         private final HardwareOptions options;
-        private final Runnable released;
         private volatile SharedLink link;
         private volatile String name;
         private volatile StepReceiver receiver;
-        private volatile boolean closed;
 
         Member(String host, int port, HardwareOptions options, Runnable released) {
+            super(released);
             this.host = host;
             this.port = port;
             this.options = options;
-            this.released = released;
         }
 
         @Override
@@ -319,21 +317,14 @@ final class SharedLink {
         @Override
         public void bye(String reason) {
             SharedLink l = link;
-            if (l != null && !closed) {
+            if (l != null && !isClosed()) {
                 l.write(new Bye(reason, name));
             }
             close();
         }
 
         @Override
-        public void close() {
-            synchronized (this) {
-                if (closed) {
-                    return;
-                }
-                closed = true;
-            }
-            released.run();
+        void closed() {
             SharedLink l = link;
             if (l != null) {
                 l.leave(this);

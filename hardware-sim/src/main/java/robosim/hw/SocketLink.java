@@ -24,7 +24,7 @@ import robosim.protocol.Welcome;
  * A robot's connection of its own: its hello, then a {@link TimeStep} in and a
  * {@link RobotRequests} out each step, read by a thread of the robot's own.
  */
-final class SocketLink implements EnvironmentLink {
+final class SocketLink extends ReleasedOnClose {
     private static final Logger LOG = Logger.getLogger(SocketLink.class.getName());
     private static final long RETRY_MS = 200;
     /** One codec for every link of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
@@ -33,11 +33,9 @@ final class SocketLink implements EnvironmentLink {
     private final String host;
     private final int port;
     private final HardwareOptions options;
-    private final Runnable released;
     private Socket socket;
     private FrameWriter writer;
     private FrameReader reader;
-    private volatile boolean closed;
 
     /**
      * @param host     the Environment's host
@@ -46,10 +44,10 @@ final class SocketLink implements EnvironmentLink {
      * @param released run once when the link closes
      */
     SocketLink(String host, int port, HardwareOptions options, Runnable released) {
+        super(released);
         this.host = host;
         this.port = port;
         this.options = options;
-        this.released = released;
     }
 
     /**
@@ -159,14 +157,7 @@ final class SocketLink implements EnvironmentLink {
     }
 
     @Override
-    public void close() {
-        synchronized (this) {
-            if (closed) {
-                return;
-            }
-            closed = true;
-        }
-        released.run();
+    void closed() {
         if (socket != null) {
             try {
                 socket.close();

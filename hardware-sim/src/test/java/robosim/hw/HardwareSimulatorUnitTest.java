@@ -91,15 +91,20 @@ class HardwareSimulatorUnitTest {
 
     @Test
     void aStepThatWakesNobodyIsAnsweredByTheLinksThreadAtOnce() throws Exception {
-        robot(() -> hw.await(t -> t >= 10_000));
-        link.step(1);
-        assertEquals("code", link.next().thread());
+        Thread code = robot(() -> hw.await(t -> t >= 10_000));
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
+        while (code.getState() != Thread.State.WAITING) {
+            assertTrue(System.nanoTime() < deadline, "the code never yielded");
+            Thread.sleep(1);
+        }
 
-        link.step(2);
+        for (long step = 1; step <= 2; step++) {
+            link.step(step);
 
-        FakeLink.Sent sent = link.sent.poll();
-        assertEquals(new FakeLink.Sent(2, List.of(), Thread.currentThread().getName()), sent,
-                "answered before step() returned, on the thread that delivered it");
+            FakeLink.Sent sent = link.sent.poll();
+            assertEquals(new FakeLink.Sent(step, List.of(), Thread.currentThread().getName()), sent,
+                    "answered before step() returned, on the thread that delivered it");
+        }
     }
 
     @Test
