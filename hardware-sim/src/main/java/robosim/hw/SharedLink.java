@@ -195,10 +195,13 @@ final class SharedLink {
     private void steps(TimeSteps ts) {
         List<Member> to = new ArrayList<>(ts.robots().size());
         synchronized (this) {
-            batchStep = ts.step();
-            batch = new ArrayList<>();
-            batchOpenedNanos = System.nanoTime();
-            expected.clear();
+            // a step's states may come in several frames: the first opens the step
+            if (ts.step() != batchStep) {
+                batchStep = ts.step();
+                batch = new ArrayList<>();
+                batchOpenedNanos = System.nanoTime();
+                expected.clear();
+            }
             for (TimeSteps.ForRobot r : ts.robots()) {
                 Member m = members.get(r.robot());
                 to.add(m);

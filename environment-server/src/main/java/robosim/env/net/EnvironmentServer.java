@@ -50,6 +50,8 @@ public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
     private static final long MAX_QUEUED_ROBOT = 1 << 20;
     private static final long MAX_QUEUED_VIEWER = 256L << 20;
+    /** Robots whose states share one {@link TimeSteps} frame. */
+    static final int ROBOTS_PER_FRAME = 100;
 
     private final Simulation sim;
     private final ServerOptions options;
@@ -216,8 +218,10 @@ public final class EnvironmentServer implements AutoCloseable {
 
     /**
      * Opens the step for every robot: a {@link TimeStep} to each robot on a connection of its own,
-     * one {@link TimeSteps} to each shared link for all its robots. The states are read in the
-     * robots' order; the frames are encoded on the worker threads.
+     * {@link TimeSteps} to each shared link for its robots, {@value #ROBOTS_PER_FRAME} robots a
+     * frame (so that frames stay far under the size limit, are encoded side by side, and the link's
+     * first robots start while the rest are on their way). The states are read in the robots'
+     * order; the frames are encoded on the worker threads.
      */
     private void sendTimeSteps(long current) {
         long timeMs = sim.timeMs();
@@ -235,11 +239,17 @@ public final class EnvironmentServer implements AutoCloseable {
             }
         }
         for (Map.Entry<Connection, List<TimeSteps.ForRobot>> link : links.entrySet()) {
-            to.add(link.getKey());
-            steps.add(new TimeSteps(current, timeMs, link.getValue()));
+            List<TimeSteps.ForRobot> robots = link.getValue();
+            for (int from = 0; from < robots.size(); from += ROBOTS_PER_FRAME) {
+                to.add(link.getKey());
+                steps.add(new TimeSteps(current, timeMs, robots.subList(from,
+                        Math.min(robots.size(), from + ROBOTS_PER_FRAME))));
+            }
         }
         ByteBuffer[] frames = new ByteBuffer[steps.size()];
-        workers.forEach(frames.length, i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
+        // a frame of a link's robots is worth a worker's wake-up on its own
+        workers.forEach(frames.length, links.isEmpty() ? PooledParallel.MIN_CHUNK : 1,
+                i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
         for (int i = 0; i < frames.length; i++) {
             to.get(i).sendFrame(frames[i]);
         }

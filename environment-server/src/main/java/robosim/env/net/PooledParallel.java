@@ -49,7 +49,19 @@ public final class PooledParallel implements Parallel, AutoCloseable {
 
     @Override
     public void forEach(int n, IntConsumer body) {
-        int chunks = Math.min(n / MIN_CHUNK, threads * CHUNKS_PER_THREAD);
+        forEach(n, MIN_CHUNK, body);
+    }
+
+    /**
+     * {@link #forEach(int, IntConsumer)} for bodies that each cost much more than reading one
+     * robot's sensors (encoding a frame of many robots' states): chunks may be smaller.
+     *
+     * @param n        how many indexes
+     * @param minChunk the fewest indexes in a chunk, at least 1
+     * @param body     what to run for each
+     */
+    public void forEach(int n, int minChunk, IntConsumer body) {
+        int chunks = Math.min(n / Math.max(1, minChunk), threads * CHUNKS_PER_THREAD);
         if (workers == null || chunks < 2) {
             Parallel.SERIAL.forEach(n, body);
             return;

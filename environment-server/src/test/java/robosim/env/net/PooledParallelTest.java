@@ -22,6 +22,11 @@ class PooledParallelTest {
                         for (int i = 0; i < n; i++) {
                             assertEquals(1, runs.get(i), "index " + i + " of " + n + " on " + threads + " threads");
                         }
+                        AtomicIntegerArray single = new AtomicIntegerArray(n);
+                        p.forEach(n, 1, single::incrementAndGet);
+                        for (int i = 0; i < n; i++) {
+                            assertEquals(1, single.get(i), "index " + i + " of " + n + " in chunks of one or more");
+                        }
                     }
                 }
             }
