@@ -1,8 +1,10 @@
 package robosim.bench;
 
 import java.lang.management.ManagementFactory;
+import java.lang.ref.Reference;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.IntUnaryOperator;
 import java.util.logging.Logger;
@@ -15,7 +17,9 @@ import robosim.hw.RobotThreads;
  * The benchmark's client JVM: robots {@code b<first>..b<first+count-1>}, one thread each, each
  * reading its 16 sonars (and, with {@link BenchSensors#LASER}, its SICK laser's scan) and setting
  * its speed every step until the Environment ends the run. If any robot fails, the JVM exits with
- * status 1 at once, so the benchmark learns of it without waiting for a timeout.
+ * status 1 at once, so the benchmark learns of it without waiting for a timeout. When every robot has
+ * been disconnected, and before they are let go, it prints its memory ({@link JvmMemory#figures}) on
+ * one line of its standard output, which {@link StepRateBench} reads from its log.
  */
 public final class BenchRobots {
     private static final Logger LOG = Logger.getLogger(BenchRobots.class.getName());
@@ -73,13 +77,14 @@ public final class BenchRobots {
     /**
      * Runs one client JVM's robots.
      *
-     * @param args HOST PORT FIRST COUNT PARAMFILE [SENSORS]: SENSORS is {@code sonar} (the default) or
-     *             {@code laser}
+     * @param args HOST PORT FIRST COUNT PARAMFILE [SENSORS [HEAP_EVERY]]: SENSORS is {@code sonar} (the
+     *             default) or {@code laser}; HEAP_EVERY, the steps between samples of the heap after the
+     *             last garbage collection, taken by the first robot (0, the default, for none)
      * @throws InterruptedException if interrupted
      */
     public static void main(String[] args) throws InterruptedException {
         if (args.length < 5) {
-            throw new IllegalArgumentException("usage: BenchRobots HOST PORT FIRST COUNT PARAMFILE [sonar|laser]");
+            throw new IllegalArgumentException("usage: BenchRobots HOST PORT FIRST COUNT PARAMFILE [sonar|laser [HEAP_EVERY]]");
         }
         long mainMs = ManagementFactory.getRuntimeMXBean().getUptime();
         String host = args[0];
@@ -89,6 +94,10 @@ public final class BenchRobots {
         BenchSensors sensors = args.length > 5 ? BenchSensors.named(args[5]).orElseThrow(
                 () -> new IllegalArgumentException(args[5] + " was supplied for SENSORS: sensors are sonar or laser"))
                 : BenchSensors.SONAR;
+        long heapEvery = args.length > 6 ? Long.parseLong(args[6]) : 0;
+        JvmMemory.Sampler samples = heapEvery > 0 ? new JvmMemory.Sampler(heapEvery) : null;
+        CountDownLatch disconnected = new CountDownLatch(share.count());
+        CountDownLatch measured = new CountDownLatch(1);
         AtomicInteger connected = new AtomicInteger();
         Thread.UncaughtExceptionHandler failed = (thread, e) -> {
             LOG.severe("robot " + thread.getName() + " failed: " + e);
@@ -97,21 +106,50 @@ public final class BenchRobots {
         List<Thread> threads = new ArrayList<>();
         for (int k = share.first(); k < share.first() + share.count(); k++) {
             String name = "b" + k;
-            Thread t = RobotThreads.unstarted(name, () -> drive(name, host, port, params, sensors, () -> {
-                if (connected.incrementAndGet() == share.count()) {
-                    LOG.info("all " + share.count() + " robots connected " + ManagementFactory.getRuntimeMXBean().getUptime()
-                            + " ms after this JVM started (main began at " + mainMs + " ms), " + cpuMs()
-                            + " ms of CPU used by this JVM");
+            JvmMemory.Sampler sampler = k == share.first() ? samples : null;
+            Thread t = RobotThreads.unstarted(name, () -> {
+                ArRobot robot = drive(name, host, port, params, sensors, sampler, () -> {
+                    if (connected.incrementAndGet() == share.count()) {
+                        LOG.info("all " + share.count() + " robots connected " + ManagementFactory.getRuntimeMXBean().getUptime()
+                                + " ms after this JVM started (main began at " + mainMs + " ms), " + cpuMs()
+                                + " ms of CPU used by this JVM");
+                    }
+                });
+                if (sampler != null) {
+                    sampler.add(robot.getCounter());
                 }
-            }));
+                // held until the memory is measured, so the figures count every robot
+                disconnected.countDown();
+                awaitUninterruptibly(measured);
+                Reference.reachabilityFence(robot);
+            });
             t.setUncaughtExceptionHandler(failed);
             threads.add(t);
         }
         for (Thread t : threads) {
             t.start();
         }
+        disconnected.await();
+        System.out.println(JvmMemory.clientLine(JvmMemory.figures(samples)));
+        System.out.flush();
+        measured.countDown();
         for (Thread t : threads) {
             t.join();
+        }
+    }
+
+    private static void awaitUninterruptibly(CountDownLatch latch) {
+        boolean interrupted = false;
+        while (true) {
+            try {
+                latch.await();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 
@@ -121,7 +159,14 @@ public final class BenchRobots {
                 ? os.getProcessCpuTime() / 1_000_000 : -1;
     }
 
-    private static void drive(String name, String host, int port, String params, BenchSensors sensors, Runnable welcomed) {
+    /**
+     * Runs one robot until the Environment ends the run.
+     *
+     * @param sampler samples the heap at this robot's steps, or {@code null}
+     * @return the robot, disconnected
+     */
+    private static ArRobot drive(String name, String host, int port, String params, BenchSensors sensors,
+                                 JvmMemory.Sampler sampler, Runnable welcomed) {
         ArRobot robot = new ArRobot(name, host, port, params);
         ArSick laser = null;
         if (sensors.laser()) {
@@ -143,7 +188,11 @@ public final class BenchRobots {
             robot.setVel(blocked ? 0 : 300);
             robot.setRotVel(blocked ? 30 : 0);
             ArUtil.sleep(100);
+            if (sampler != null) {
+                sampler.at(robot.getCounter());
+            }
         }
+        return robot;
     }
 
     /**

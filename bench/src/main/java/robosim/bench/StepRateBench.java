@@ -2,11 +2,13 @@ package robosim.bench;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import robosim.env.core.Parallel;
@@ -31,6 +33,8 @@ public final class StepRateBench {
     static final long STEP_TIMEOUT_MS = 60_000;
     /** How long the client JVMs get to end by themselves after the run, ms. */
     private static final long CLIENT_EXIT_MS = 30_000;
+    /** How often the Environment's heap sampler looks at the step count, ms. */
+    private static final long SAMPLER_POLL_MS = 2;
 
     /**
      * Where the load-and-connect time went.
@@ -82,9 +86,31 @@ public final class StepRateBench {
      * @param load    the load-and-connect time
      * @param steps   steps run
      * @param seconds wall-clock time of the steps
+     * @param memory  each JVM's memory at the end of the run over TCP: the Environment's (this JVM)
+     *                first, then each client's; empty for the core alone
      */
     public record Result(String run, int robots, BenchSensors sensors, int clients, Load load, long steps,
-                         double seconds) {
+                         double seconds, List<JvmMemory.Report> memory) {
+        /** Copies the memory figures. */
+        public Result {
+            memory = List.copyOf(memory);
+        }
+
+        /**
+         * A result without memory figures, as the core alone gives.
+         *
+         * @param run     {@code tcp} or {@code core}
+         * @param robots  robots in the grid
+         * @param sensors what each robot reads
+         * @param clients client JVMs (0 for the core alone)
+         * @param load    the load-and-connect time
+         * @param steps   steps run
+         * @param seconds wall-clock time of the steps
+         */
+        public Result(String run, int robots, BenchSensors sensors, int clients, Load load, long steps, double seconds) {
+            this(run, robots, sensors, clients, load, steps, seconds, List.of());
+        }
+
         /** @return steps per second */
         public double stepsPerSecond() {
             return steps / seconds;
@@ -106,7 +132,10 @@ public final class StepRateBench {
 
     /**
      * Runs one measurement over TCP. The client JVMs are stopped before this returns, also when it
-     * fails: each gets a bounded time to end by itself, then is ended.
+     * fails: each gets a bounded time to end by itself, then is ended. Once the steps are over, each
+     * JVM's memory is taken ({@link JvmMemory#figures}): this JVM's (the Environment's) while it still
+     * holds the simulation, each client's while it still holds its disconnected robots, which it
+     * prints in its log for this to read.
      *
      * @param robots    robots in the grid
      * @param sensors   what each robot reads
@@ -115,13 +144,15 @@ public final class StepRateBench {
      * @param dir       where to write the world and the clients' logs
      * @param robotFile the p3dx parameter file
      * @param threads   threads of the Environment that read the robots' sensors ({@code --threads})
+     * @param heapEvery steps between samples of each JVM's heap after its last garbage collection
+     *                  ({@link JvmMemory.Sampler}, forcing none); 0 for none
      * @return the figures
      * @throws IOException           if the world or a client JVM cannot be started
      * @throws InterruptedException  if interrupted
      * @throws IllegalStateException if a client JVM fails or the run ends early
      */
     public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile,
-                             int threads) throws IOException, InterruptedException {
+                             int threads, long heapEvery) throws IOException, InterruptedException {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
         // the server hands the simulation its sensing threads
         Loaded loaded = load(worldFile, Parallel.SERIAL);
@@ -133,14 +164,19 @@ public final class StepRateBench {
         ClientWatch watch = new ClientWatch(Thread.currentThread());
         Thread stopOnExit = new Thread(() -> started.forEach(Process::destroyForcibly), "bench-stop-clients");
         Runtime.getRuntime().addShutdownHook(stopOnExit);
+        JvmMemory.Sampler samples = heapEvery > 0 ? new JvmMemory.Sampler(heapEvery) : null;
+        List<JvmMemory.Report> memory = new ArrayList<>();
+        Result result;
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
             for (int c = 0; c < shares.size(); c++) {
-                Process p = clientJvm(server.robotPort(), shares.get(c), sensors, robotFile, log(dir, robots, sensors, c));
+                Process p = clientJvm(server.robotPort(), shares.get(c), sensors, robotFile, log(dir, robots, sensors, c),
+                        heapEvery);
                 started.add(p);
                 watch.watch(p, log(dir, robots, sensors, c));
             }
             RunReport report;
+            Thread sampler = samples == null ? null : sampler(sim, samples);
             try {
                 report = server.run();
             } catch (InterruptedException e) {
@@ -151,12 +187,20 @@ public final class StepRateBench {
                 throw e;
             } finally {
                 watch.stop();
+                if (sampler != null) {
+                    sampler.interrupt();
+                    sampler.join();
+                }
             }
             if (report.steps() != steps) {
                 throw new IllegalStateException("the run ended early: " + report.endReason() + " (see " + dir + "/client-*.log)");
             }
+            if (samples != null) {
+                samples.add(report.steps());
+            }
+            memory.add(new JvmMemory.Report("env", JvmMemory.figures(samples)));
             Load load = loaded.load(report.connectedNanoTime() - loaded.builtAt());
-            return new Result("tcp", robots, sensors, shares.size(), load, report.steps(), report.wallNanos() / 1e9);
+            result = new Result("tcp", robots, sensors, shares.size(), load, report.steps(), report.wallNanos() / 1e9);
         } finally {
             stop(started);
             try {
@@ -164,6 +208,42 @@ public final class StepRateBench {
             } catch (IllegalStateException shuttingDown) {
                 // the hook runs anyway
             }
+        }
+        for (int c = 0; c < shares.size(); c++) {
+            memory.add(new JvmMemory.Report("client" + c, clientMemory(log(dir, robots, sensors, c))));
+        }
+        return new Result(result.run(), result.robots(), result.sensors(), result.clients(), result.load(), result.steps(),
+                result.seconds(), memory);
+    }
+
+    /**
+     * Starts a thread that samples this JVM's heap each time the simulation's step count reaches
+     * the next multiple of the sampler's interval, looking every {@value #SAMPLER_POLL_MS} ms; it
+     * ends when interrupted. (It reads the step count unsynchronised: a sample may come a step or
+     * a poll late, and says at which step it was taken.)
+     */
+    private static Thread sampler(Simulation sim, JvmMemory.Sampler samples) {
+        Thread t = new Thread(() -> {
+            try {
+                while (!Thread.currentThread().isInterrupted()) {
+                    samples.at(sim.stepCount());
+                    Thread.sleep(SAMPLER_POLL_MS);
+                }
+            } catch (InterruptedException e) {
+                // the run is over
+            }
+        }, "bench-heap-sampler");
+        t.setDaemon(true);
+        t.start();
+        return t;
+    }
+
+    /** @return a client JVM's figures from its log, or that they are unavailable */
+    private static Map<String, String> clientMemory(Path log) {
+        try {
+            return JvmMemory.clientFigures(Files.readAllLines(log)).orElse(Map.of("figures", JvmMemory.UNAVAILABLE));
+        } catch (IOException e) {
+            return Map.of("figures", JvmMemory.UNAVAILABLE);
         }
     }
 
@@ -228,8 +308,8 @@ public final class StepRateBench {
         }
     }
 
-    private static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log)
-            throws IOException {
+    private static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log,
+                                     long heapEvery) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.awt.headless=true", "-Xss256k", "-Xmx" + clientHeapMb(share.count()) + "m",
                 "-cp", System.getProperty("java.class.path")));
@@ -241,7 +321,8 @@ public final class StepRateBench {
             }
         }
         cmd.addAll(List.of(BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
-                Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName()));
+                Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName(),
+                Long.toString(heapEvery)));
         return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
     }
 
@@ -262,6 +343,12 @@ public final class StepRateBench {
         out.println("step rate: one line per run; load_s = reading the world + building the Simulation (read_s, build_s)"
                 + " + starting the client JVMs until every robot has connected (connect_s, 0 for the core alone);"
                 + " x_realtime with 100 ms steps; robot_steps_per_s = robots x steps / s");
+        out.println("memory: after each run over TCP one mem line per JVM (env = this JVM, which holds the Environment"
+                + " and, unless --skip-core, ran the core-alone runs before; clientN = a robots' JVM), MiB: rss_mb, hwm_mb"
+                + " = resident set now and at its largest (/proc/self/status VmRSS, VmHWM); heap_gc_mb = heap used after"
+                + " the last GC (none forced); heap_committed_mb; gcs = GCs so far; heap_live_mb = heap used after a"
+                + " System.gc() then, the simulation or the disconnected robots still held; heap_samples ="
+                + " step:heap_gc_mb every --heap-every steps");
         out.flush();
     }
 
@@ -277,6 +364,10 @@ public final class StepRateBench {
                 r.run(), r.robots(), r.sensors().label(), r.clients(), r.load().seconds(), r.load().readNanos() / 1e9,
                 r.load().buildNanos() / 1e9, r.load().connectNanos() / 1e9, r.steps(), r.seconds(), r.stepsPerSecond(),
                 r.realtimeFactor(), r.robotStepsPerSecond());
+        for (JvmMemory.Report m : r.memory()) {
+            out.printf(Locale.ROOT, "mem  robots=%-4d sensors=%-11s jvm=%-7s %s%n", r.robots(), r.sensors().label(), m.jvm(),
+                    JvmMemory.fields(m.figures()));
+        }
         out.flush();
     }
 

@@ -75,6 +75,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--skip-laser", description = "do not measure the laser's cost alone")
     boolean skipLaser;
 
+    @Option(names = "--skip-core", description = "do not run the core alone before the runs over TCP (so this JVM"
+            + " holds only the Environment and its memory figures are the Environment's alone)")
+    boolean skipCore;
+
     @Option(names = "--goldfinder", description = "instead: steps to find the gold with 1, 2, 4 and 8 robots over --mazes generated 10x10 mazes")
     boolean goldfinder;
 
@@ -84,6 +88,11 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--floors", description = "instead: what a step cannot go below here, measured without RoboSim:"
             + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
     boolean floors;
+
+    @Option(names = "--heap-every", defaultValue = "0", paramLabel = "N",
+            description = "in each run over TCP, sample every N steps each JVM's heap after its last garbage collection"
+                    + " (none forced) and print the samples with its memory figures; 0 for none; default ${DEFAULT-VALUE}")
+    long heapEvery;
 
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R",
             description = "runs over TCP per robot count and sensors; the median and range are printed too; default ${DEFAULT-VALUE}")
@@ -114,6 +123,10 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (repeat < 1) {
             err.println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
+            return 2;
+        }
+        if (heapEvery < 0) {
+            err.println("robosim bench: " + heapEvery + " was supplied for --heap-every: it must be 0 (none) or more");
             return 2;
         }
         int sensingThreads = threads != null ? threads : ServerOptions.defaultThreads();
@@ -157,10 +170,12 @@ final class BenchCommand implements Callable<Integer> {
         try {
             for (BenchSensors s : sensorSets) {
                 for (int n : robots) {
-                    StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads));
+                    if (!skipCore) {
+                        StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads));
+                    }
                     List<StepRateBench.Result> runs = new ArrayList<>();
                     for (int r = 0; r < repeat; r++) {
-                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads);
+                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads, heapEvery);
                         StepRateBench.print(o, tcp);
                         runs.add(tcp);
                     }
