@@ -11,8 +11,11 @@ import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -27,7 +30,9 @@ import robosim.protocol.Welcome;
 
 /**
  * One connection to an Environment that many robots of this JVM share: each step one
- * {@link TimeSteps} frame in, read by one thread that hands each robot its state, and one
+ * {@link TimeSteps} frame in, read by one thread that hands each robot its state (the robots of a
+ * large frame in chunks, on one thread per processor, since each robot's cycle runs as its state is
+ * handed over), and one
  * {@link LinkRequests} frame out, written by the thread that completes it (the last robot to
  * yield). Each robot keeps its own {@link HardwareSimulator}, request queue and state. When some
  * robots are late, the requests of the others go after {@link #LINGER_MS} in a frame of their own,
@@ -37,6 +42,13 @@ final class SharedLink {
     private static final Logger LOG = Logger.getLogger(SharedLink.class.getName());
     /** How long a step's requests wait for late robots of the link before the ready ones are sent. */
     static final long LINGER_MS = 100;
+    /** Robots whose states one task hands out; a frame of fewer than two chunks is handed out by the reader. */
+    static final int HANDING_CHUNK = 25;
+    /**
+     * The threads that hand the robots of a large frame their states, one per processor (none on
+     * one processor), shared by the JVM's links.
+     */
+    private static final ExecutorService HANDERS = handers(Runtime.getRuntime().availableProcessors());
     /** The open links, by the Environment's host and port. */
     private static final Map<String, SharedLink> OPEN = new ConcurrentHashMap<>();
     /** Held while a link connects, so that robots connecting together open one link. */
@@ -58,6 +70,18 @@ final class SharedLink {
     private volatile String endReason;
 
     private record Joining(Member member, CompletableFuture<Welcome> welcome) {
+    }
+
+    private static ExecutorService handers(int processors) {
+        if (processors < 2) {
+            return null;
+        }
+        AtomicInteger made = new AtomicInteger();
+        return Executors.newFixedThreadPool(processors, r -> {
+            Thread t = new Thread(r, "hw-link-hand-" + made.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
     }
 
     private SharedLink(String host, int port, HardwareOptions options) throws IOException {
@@ -210,8 +234,22 @@ final class SharedLink {
                 }
             }
         }
-        for (int i = 0; i < to.size(); i++) {
-            Member m = to.get(i);
+        if (to.size() < 2 * HANDING_CHUNK || HANDERS == null) {
+            hand(ts, to, 0, to.size());
+            return;
+        }
+        // each robot's cycle (its range devices' buffers, its tasks) is its own: hand them out in
+        // chunks, as each robot's own link thread would run them, and go back to reading
+        for (int from = 0; from < to.size(); from += HANDING_CHUNK) {
+            int start = from;
+            HANDERS.execute(() -> hand(ts, to, start, Math.min(to.size(), start + HANDING_CHUNK)));
+        }
+    }
+
+    /** Hands robots {@code from} to {@code to} (exclusive) of a frame their states. */
+    private void hand(TimeSteps ts, List<Member> members, int from, int to) {
+        for (int i = from; i < to; i++) {
+            Member m = members.get(i);
             if (m != null) {
                 m.receiver.step(new RobotSensorResponse(ts.step(), ts.robots().get(i).state()));
             } else {
