@@ -62,6 +62,112 @@ public record RobotParameters(
     /** The laser's range when a parameter file names none: a SICK LMS200's 8000 mm. */
     public static final double DEFAULT_LASER_MAX_RANGE = 8000;
 
+    /** The longest body size or mounting offset the Environment accepts, mm. */
+    public static final double MAX_SIZE = 5000;
+    /** The fastest translational speed the Environment accepts, mm/s. */
+    public static final double MAX_SPEED = 10_000;
+    /** The fastest rotational speed the Environment accepts, degrees/s. */
+    public static final double MAX_ROTATION = 3600;
+    /** The largest acceleration or deceleration the Environment accepts, mm/s² or degrees/s². */
+    public static final double MAX_ACCELERATION = 100_000;
+    /** The longest sensor range the Environment accepts, mm. */
+    public static final double MAX_RANGE = 100_000;
+    /** The most sonar transducers the Environment accepts. */
+    public static final int MAX_SONARS = 64;
+    /** The longest robot class or subclass name the Environment accepts. */
+    public static final int MAX_NAME = 100;
+
+    /**
+     * Checks the values against physical bounds, as the Environment does with every robot's hello
+     * before it simulates the robot: every number finite; the body's radius and width above 0, its
+     * lengths 0 or more, all at most {@value #MAX_SIZE} mm; speeds above 0, at most
+     * {@value #MAX_SPEED} mm/s and {@value #MAX_ROTATION} °/s; accelerations and decelerations 0
+     * or more and at most {@value #MAX_ACCELERATION}; {@code diffConvFactor} above 0 and at most 1;
+     * sensor ranges 0 or more (the laser's above 0) and at most {@value #MAX_RANGE} mm; at most
+     * {@value #MAX_SONARS} sonars, each numbered by its place, and every mounting offset within
+     * {@value #MAX_SIZE} mm and heading within ±360°; a known shape; names of at most
+     * {@value #MAX_NAME} characters.
+     *
+     * @return the first value that breaks a bound, as "VALUE was supplied for FIELD: RULE", or
+     *         null if all hold
+     */
+    public String violation() {
+        String v = firstOf(
+                name("robotClass", robotClass), name("subclass", subclass),
+                within("robotRadius", robotRadius, false, MAX_SIZE, "mm"),
+                within("robotWidth", robotWidth, false, MAX_SIZE, "mm"),
+                within("robotLengthFront", robotLengthFront, true, MAX_SIZE, "mm"),
+                within("robotLengthRear", robotLengthRear, true, MAX_SIZE, "mm"),
+                within("maxVelocity", maxVelocity, false, MAX_SPEED, "mm/s"),
+                within("maxRVelocity", maxRVelocity, false, MAX_ROTATION, "degrees/s"),
+                within("transAccel", transAccel, true, MAX_ACCELERATION, "mm/s²"),
+                within("transDecel", transDecel, true, MAX_ACCELERATION, "mm/s²"),
+                within("rotAccel", rotAccel, true, MAX_ACCELERATION, "degrees/s²"),
+                within("rotDecel", rotDecel, true, MAX_ACCELERATION, "degrees/s²"),
+                within("diffConvFactor", diffConvFactor, false, 1, ""),
+                within("sonarMaxRange", sonarMaxRange, true, MAX_RANGE, "mm"),
+                offset("laserX", laserX), offset("laserY", laserY), heading("laserTh", laserTh),
+                within("laserMaxRange", laserMaxRange, false, MAX_RANGE, "mm"));
+        if (v != null) {
+            return v;
+        }
+        if (!RECTANGLE.equals(shape) && !ROUND.equals(shape)) {
+            return "'" + shape + "' was supplied for shape: it is " + RECTANGLE + " or " + ROUND;
+        }
+        if (sonarUnits.size() > MAX_SONARS) {
+            return sonarUnits.size() + " sonars were supplied: a robot has at most " + MAX_SONARS;
+        }
+        for (int i = 0; i < sonarUnits.size(); i++) {
+            SonarUnit u = sonarUnits.get(i);
+            String field = "sonar " + i;
+            v = u.index() != i ? u.index() + " was supplied for " + field + "'s index: sonars are numbered 0, 1, ... in order"
+                    : firstOf(offset(field + " x", u.x()), offset(field + " y", u.y()), heading(field + " th", u.th()));
+            if (v != null) {
+                return v;
+            }
+        }
+        return null;
+    }
+
+    private static String firstOf(String... violations) {
+        for (String v : violations) {
+            if (v != null) {
+                return v;
+            }
+        }
+        return null;
+    }
+
+    private static String within(String field, double value, boolean zeroAllowed, double max, String unit) {
+        String u = unit.isEmpty() ? "" : " " + unit;
+        if (!Double.isFinite(value) || value < 0 || value == 0 && !zeroAllowed || value > max) {
+            return value + " was supplied for " + field + ": it must be a finite number " + (zeroAllowed ? "from 0" : "above 0")
+                    + " to " + max + u;
+        }
+        return null;
+    }
+
+    private static String offset(String field, double value) {
+        if (!Double.isFinite(value) || Math.abs(value) > MAX_SIZE) {
+            return value + " was supplied for " + field + ": it must be a finite number within ±" + MAX_SIZE + " mm";
+        }
+        return null;
+    }
+
+    private static String heading(String field, double value) {
+        if (!Double.isFinite(value) || Math.abs(value) > 360) {
+            return value + " was supplied for " + field + ": it must be a finite number within ±360 degrees";
+        }
+        return null;
+    }
+
+    private static String name(String field, String value) {
+        if (value != null && value.length() > MAX_NAME) {
+            return "a name of " + value.length() + " characters was supplied for " + field + ": at most " + MAX_NAME;
+        }
+        return null;
+    }
+
     /** Copies the sonar list so the record stays immutable; a missing shape is a rectangle. */
     public RobotParameters {
         sonarUnits = List.copyOf(sonarUnits);

@@ -4,6 +4,7 @@ import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -54,6 +55,12 @@ class ShippedRobotFormsTest {
     void bothFormsGiveEqualRecords(String robot) {
         assertEquals(RobotParametersReader.read(shipped(robot + ".p")),
                 RobotParametersReader.read(shipped(robot + ".xml")));
+    }
+
+    @ParameterizedTest(name = "{0} is within the Environment's physical bounds")
+    @ValueSource(strings = {"p3dx.p", "p3dx.xml", "p3at.p", "p3at.xml", "scout.p", "scout.xml"})
+    void everyShippedRobotIsWithinTheEnvironmentsBounds(String file) {
+        assertNull(RobotParametersReader.read(shipped(file)).violation());
     }
 
     @ParameterizedTest(name = "{0}.p matches docs/ARIA-SEMANTICS.md")

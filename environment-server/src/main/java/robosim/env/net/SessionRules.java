@@ -221,7 +221,8 @@ final class SessionRules {
         if (hello.parameters() == null) {
             return "robot " + hello.name() + " sent no parameters";
         }
-        return null;
+        String bad = hello.parameters().violation();
+        return bad == null ? null : "robot " + hello.name() + "'s parameters break a bound: " + bad;
     }
 
     private void requests(Connection c, String name, long step, List<Command> sent) {

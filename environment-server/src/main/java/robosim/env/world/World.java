@@ -26,6 +26,9 @@ import robosim.comms.CommsSettings;
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
                     CommsSettings comms, HeatSource gold) {
+    /** The widest and highest world a world file may describe, mm (100 km). */
+    public static final double MAX_SIZE = 100_000_000;
+
 
     /**
      * The same world with only its first robots: a team smaller than the world has places for.

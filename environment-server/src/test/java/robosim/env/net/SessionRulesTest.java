@@ -31,7 +31,9 @@ import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RobotParameters;
 import robosim.protocol.RobotRequests;
+import robosim.protocol.SonarUnit;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
 import robosim.protocol.WorldDescription;
@@ -158,6 +160,46 @@ class SessionRulesTest {
 
         assertRefused(second, "robot r1 is already connected");
         assertEquals(Set.of("r1"), rules.connectedRobots().keySet());
+    }
+
+    /** The world's p3dx with other speed limits and sonars. */
+    private RobotParameters p3dx(double maxVelocity, double maxRVelocity, List<SonarUnit> sonars) {
+        RobotParameters p = sim.world().robots().get(0).parameters();
+        return new RobotParameters(p.robotClass(), p.subclass(), p.robotRadius(), p.robotWidth(), p.robotLengthFront(),
+                p.robotLengthRear(), maxVelocity, maxRVelocity, p.transAccel(), p.transDecel(), p.rotAccel(),
+                p.rotDecel(), p.diffConvFactor(), p.sonarMaxRange(), sonars, p.laserX(), p.laserY(), p.laserTh(),
+                p.laserMaxRange(), p.shape());
+    }
+
+    @Test
+    void aHelloWhoseParametersBreakAPhysicalBoundIsRefusedNamingTheFieldAndValue() throws IOException {
+        List<SonarUnit> sonars = sim.world().robots().get(0).parameters().sonarUnits();
+        List<SonarUnit> tooMany = new java.util.ArrayList<>();
+        for (int i = 0; i < 80_000; i++) {
+            tooMany.add(new SonarUnit(i, 0, 0, 0));
+        }
+        Map<RobotParameters, String> cases = new LinkedHashMap<>();
+        cases.put(p3dx(Double.NaN, 300, sonars), "NaN was supplied for maxVelocity: it must be a finite number above 0"
+                + " to 10000.0 mm/s");
+        cases.put(p3dx(1e300, 300, sonars), "1.0E300 was supplied for maxVelocity");
+        cases.put(p3dx(2200, 1e12, sonars), "1.0E12 was supplied for maxRVelocity: it must be a finite number above 0"
+                + " to 3600.0 degrees/s");
+        cases.put(p3dx(2200, 300, tooMany), "80000 sonars were supplied: a robot has at most 64");
+        for (Map.Entry<RobotParameters, String> c : cases.entrySet()) {
+            Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+            peer.send(new RobotHello("r1", "pioneer", c.getKey()));
+            deliver(peer);
+
+            Bye bye = assertInstanceOf(Bye.class, peer.read());
+            assertTrue(bye.reason().startsWith("refused: robot r1's parameters break a bound: " + c.getValue()),
+                    bye.reason());
+            assertTrue(peer.closedByEnvironment());
+        }
+        assertEquals(Set.of(), rules.connectedRobots().keySet());
+        assertEquals(cases.size(), log.warnings().size(), "one line each: " + log.warnings());
+        assertTrue(log.warnings().get(0).startsWith("refusing robot r1: robot r1's parameters break a bound: NaN"),
+                log.warnings().get(0));
     }
 
     @Test

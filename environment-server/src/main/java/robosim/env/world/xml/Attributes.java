@@ -57,6 +57,15 @@ final class Attributes {
         return checkPositive(element, attribute, number(element, attribute, value));
     }
 
+    /** @return the value, if it is at most {@code max} */
+    double atMost(Element element, String attribute, double value, double max) {
+        if (value > max) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + format(value)
+                    + " but must be at most " + format(max));
+        }
+        return value;
+    }
+
     /** @return the value as a number greater than 0, or {@code fallback} when it is absent */
     double positive(Element element, String attribute, String value, double fallback) {
         return value == null ? fallback : positive(element, attribute, value);

@@ -33,8 +33,9 @@ public final class WorldReader {
         WorldElement root = ElementReader.read(file);
         Attributes attributes = new Attributes(file);
         String name = attributes.text(root, "name", root.name);
-        double width = attributes.positive(root, "width", root.width);
-        double height = attributes.positive(root, "height", root.height);
+        double width = attributes.atMost(root, "width", attributes.positive(root, "width", root.width), World.MAX_SIZE);
+        double height = attributes.atMost(root, "height", attributes.positive(root, "height", root.height),
+                World.MAX_SIZE);
         int stepMs = attributes.wholeNumber(root, "stepMs", root.stepMs, DEFAULT_STEP_MS, 1, 10_000);
         boolean boundary = attributes.bool(root, "boundary", root.boundary, false);
 

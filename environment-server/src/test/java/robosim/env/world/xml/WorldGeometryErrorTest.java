@@ -26,6 +26,14 @@ class WorldGeometryErrorTest {
     }
 
     @Test
+    void aWorldWiderThanAHundredKilometresIsRefused() {
+        fixtures.fails("huge.xml", """
+                <world name="huge" width="1e308" height="6000">
+                </world>
+                """, 1, "attribute width on <world> is", "but must be at most 100000000");
+    }
+
+    @Test
     void polygonWithTwoDistinctPoints() {
         failsWith("<polygon points=\"0,0 100,100 100,100 0,0\"/>", "polygon has 2 distinct points but needs at least 3");
     }
