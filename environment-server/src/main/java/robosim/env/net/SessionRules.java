@@ -269,7 +269,8 @@ final class SessionRules {
             return;
         }
         if (c.name() == null && m instanceof ViewerHello hello) {
-            c.setName(hello.name());
+            // a hello without a name still counts: the next one is a second hello
+            c.setName(hello.name() != null ? hello.name() : "(unnamed)");
             viewers.add(c);
             c.send(sim.description());
             c.send(sim.snapshot());

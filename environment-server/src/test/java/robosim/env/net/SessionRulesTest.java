@@ -380,6 +380,21 @@ class SessionRulesTest {
     }
 
     @Test
+    void aViewerThatSaysHelloTwiceIsClosedAndCountedOnceEvenWithoutAName() throws IOException {
+        Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+        viewer.send(new ViewerHello(null));
+        deliver(viewer);
+
+        viewer.send(new ViewerHello(null));
+        deliver(viewer);
+
+        assertTrue(viewer.closedByEnvironment());
+        assertEquals(1, rules.viewerCount());
+        assertEquals("closing viewer (unnamed): sent ViewerHello; a viewer sends viewerHello once, then only commsUpdate",
+                onlyWarning());
+    }
+
+    @Test
     void aViewerWhoseFirstMessageIsNoHelloIsClosed() throws IOException {
         Peer viewer = loopback.connect(Connection.Kind.VIEWER);
 
