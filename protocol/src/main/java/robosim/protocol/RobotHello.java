@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import java.util.regex.Pattern;
 
 /**
  * The first message of a robot's connection: who it is and what body it has.
@@ -9,4 +10,40 @@ package robosim.protocol;
  * @param parameters the robot's own parameters, which the Environment simulates
  */
 public record RobotHello(String name, String robotType, RobotParameters parameters) implements Message {
+    /** What a robot's name may be, in a world file and on the wire: 1 to 64 letters, digits, '_', '-' or '.'. */
+    public static final Pattern NAME = Pattern.compile("[A-Za-z0-9_.-]{1,64}");
+    /** The rule of {@link #NAME}, in words. */
+    public static final String NAME_RULE = "a robot's name is 1 to 64 letters (A-Z, a-z), digits, '_', '-' or '.'";
+
+    /**
+     * @param name a robot's name
+     * @return whether it follows {@link #NAME_RULE}
+     */
+    public static boolean validName(String name) {
+        return name != null && NAME.matcher(name).matches();
+    }
+
+    /**
+     * A name as it may go into a log line or a message: quoted, with every character outside
+     * printable ASCII written as a backslash, u and four hex digits, and cut after 80 characters, so that a name from
+     * the wire can never forge a line.
+     *
+     * @param name any text, or null
+     * @return it, quoted and safe to print
+     */
+    public static String quoted(String name) {
+        if (name == null) {
+            return "no name";
+        }
+        StringBuilder b = new StringBuilder("'");
+        for (int i = 0; i < Math.min(name.length(), 80); i++) {
+            char c = name.charAt(i);
+            if (c >= 0x20 && c < 0x7f && c != '\\') {
+                b.append(c);
+            } else {
+                b.append(String.format("\\u%04x", (int) c));
+            }
+        }
+        return b.append(name.length() > 80 ? "'... (" + name.length() + " characters)" : "'").toString();
+    }
 }

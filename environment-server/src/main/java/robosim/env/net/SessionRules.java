@@ -184,7 +184,7 @@ final class SessionRules {
             }
         }
         if (refusal != null) {
-            LOG.warning("refusing robot " + hello.name() + ": " + refusal);
+            LOG.warning("refusing robot " + RobotHello.quoted(hello.name()).replaceAll("^'|'$", "") + ": " + refusal);
             if (c.isLink()) {
                 c.send(new Bye("refused: " + refusal, hello.name()));
             } else {
@@ -204,7 +204,10 @@ final class SessionRules {
     }
 
     private String refusal(RobotHello hello) {
-        if (hello.name() == null || !sim.robotNames().contains(hello.name())) {
+        if (!RobotHello.validName(hello.name())) {
+            return RobotHello.NAME_RULE + "; " + RobotHello.quoted(hello.name()) + " is not";
+        }
+        if (!sim.robotNames().contains(hello.name())) {
             return "world " + sim.world().name() + " has no robot named '" + hello.name() + "'";
         }
         String declared = sim.world().robots().stream().filter(r -> r.name().equals(hello.name()))

@@ -141,6 +141,19 @@ class SessionRulesTest {
     }
 
     @Test
+    void aNameOutsideTheNameRuleIsRefusedAndCannotForgeALogLine() throws IOException {
+        Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+        peer.send(hello("r1\nSEVERE: forged", "pioneer"));
+        deliver(peer);
+
+        assertRefused(peer, "a robot's name is 1 to 64 letters (A-Z, a-z), digits, '_', '-' or '.'; 'r1\\u000aSEVERE:"
+                + " forged' is not");
+        assertTrue(onlyWarning().startsWith("refusing robot r1\\u000aSEVERE: forged: "), onlyWarning());
+        assertTrue(log.warnings().stream().noneMatch(w -> w.contains("\n")), log.warnings().toString());
+    }
+
+    @Test
     void aRobotOfAnotherTypeIsRefusedNamingBoth() throws IOException {
         Peer peer = loopback.connect(Connection.Kind.ROBOT);
 

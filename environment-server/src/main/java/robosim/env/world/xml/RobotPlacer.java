@@ -18,6 +18,7 @@ import robosim.protocol.RobotParameters;
 import robosim.params.RobotParametersReader;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
+import robosim.protocol.RobotHello;
 
 /**
  * Turns {@code <robot>} elements into {@link RobotSpec}s: reads each robot's parameter file
@@ -54,6 +55,9 @@ final class RobotPlacer {
     /** @return the robot, checked and placed */
     RobotSpec place(RobotElement e) {
         String name = attributes.text(e, "name", e.name);
+        if (!RobotHello.validName(name)) {
+            throw attributes.error(e, RobotHello.NAME_RULE + "; " + RobotHello.quoted(name) + " is not");
+        }
         for (RobotSpec other : placed) {
             if (other.name().equals(name)) {
                 throw attributes.error(e, "duplicate robot name '" + name + "': already used by the robot at line "

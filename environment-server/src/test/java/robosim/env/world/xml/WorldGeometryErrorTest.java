@@ -34,6 +34,15 @@ class WorldGeometryErrorTest {
     }
 
     @Test
+    void aRobotNameOutsideTheNameRuleIsRefused() {
+        fixtures.fails("names.xml", """
+                <world name="names" width="6000" height="6000">
+                  <robot name="r 1" type="pioneer" x="1000" y="1000" params="p3dx.p"/>
+                </world>
+                """, 2, "a robot's name is 1 to 64 letters", "'r 1' is not");
+    }
+
+    @Test
     void polygonWithTwoDistinctPoints() {
         failsWith("<polygon points=\"0,0 100,100 100,100 0,0\"/>", "polygon has 2 distinct points but needs at least 3");
     }
