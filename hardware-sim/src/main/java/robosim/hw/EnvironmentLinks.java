@@ -62,6 +62,6 @@ public final class EnvironmentLinks {
         int robots = ROBOTS.merge(key, 1, Integer::sum);
         Runnable released = () -> ROBOTS.computeIfPresent(key, (k, n) -> n > 1 ? n - 1 : null);
         boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1;
-        return shared ? SharedLink.member(host, port, options, released) : new SocketLink(host, port, options, released);
+        return shared ? new LinkMember(host, port, options, released) : new SocketLink(host, port, options, released);
     }
 }

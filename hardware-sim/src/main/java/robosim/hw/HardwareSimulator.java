@@ -127,26 +127,6 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         gate.awaitWake();
     }
 
-    /**
-     * Makes a thread part of the robot's code: steps wait for its yields.
-     *
-     * @param thread a thread of the robot's code
-     */
-    public void join(Thread thread) {
-        gate.join(thread);
-    }
-
-    /**
-     * Stops waiting for a thread's yields; if the others have all yielded, sends the step's requests.
-     *
-     * @param thread a thread of the robot's code
-     */
-    public void leave(Thread thread) {
-        if (gate.leave(thread)) {
-            sendRequests();
-        }
-    }
-
     /** @return simulated time of the latest state, ms */
     public long timeMs() {
         return gate.timeMs();

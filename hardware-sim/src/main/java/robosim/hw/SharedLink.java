@@ -60,16 +60,16 @@ final class SharedLink {
     private final Socket socket;
     private final FrameReader reader;
     private final FrameWriter writer;
-    private final Map<String, Member> members = new ConcurrentHashMap<>();
+    private final Map<String, LinkMember> members = new ConcurrentHashMap<>();
     private final Map<String, Joining> joining = new ConcurrentHashMap<>();
     /** The open step's requests, guarded by this. */
     private long batchStep;
-    private final Set<Member> expected = new LinkedHashSet<>();
+    private final Set<LinkMember> expected = new LinkedHashSet<>();
     private List<LinkRequests.ForRobot> batch = new ArrayList<>();
     private long batchOpenedNanos;
     private volatile String endReason;
 
-    private record Joining(Member member, CompletableFuture<Welcome> welcome) {
+    private record Joining(LinkMember member, CompletableFuture<Welcome> welcome) {
     }
 
     private static ExecutorService handers(int processors) {
@@ -101,19 +101,15 @@ final class SharedLink {
     }
 
     /**
-     * A robot's part of the JVM's shared link to an Environment, which is connected if none is open.
+     * The JVM's open link to an Environment, connected if none is open.
      *
-     * @param host     the Environment's host
-     * @param port     its robot port
-     * @param options  timeouts (the first robot's serve the whole link)
-     * @param released run once when the robot's part closes
-     * @return the robot's part, not yet open
+     * @param host    the Environment's host
+     * @param port    its robot port
+     * @param options timeouts (the first robot's serve the whole link)
+     * @return the link
+     * @throws IOException if it cannot connect
      */
-    static EnvironmentLink member(String host, int port, HardwareOptions options, Runnable released) {
-        return new Member(host, port, options, released);
-    }
-
-    private static SharedLink to(String host, int port, HardwareOptions options) throws IOException {
+    static SharedLink to(String host, int port, HardwareOptions options) throws IOException {
         String key = host + ":" + port;
         synchronized (CONNECTING) {
             SharedLink link = OPEN.get(key);
@@ -140,7 +136,8 @@ final class SharedLink {
         }
     }
 
-    private Welcome join(Member m, RobotHello hello) throws IOException {
+    /** Says a robot's hello on the link and waits (bounded) for its welcome or refusal. */
+    Welcome join(LinkMember m, RobotHello hello) throws IOException {
         String name = hello.name();
         Joining j = new Joining(m, new CompletableFuture<>());
         if (members.containsKey(name) || joining.putIfAbsent(name, j) != null) {
@@ -210,14 +207,14 @@ final class SharedLink {
             j.welcome().completeExceptionally(new IOException("the Environment at " + host + ":" + port + " " + reason));
             return;
         }
-        Member m = members.get(robot);
+        LinkMember m = members.get(robot);
         if (m != null) {
             m.ended("the Environment said " + reason);
         }
     }
 
     private void steps(TimeSteps ts) {
-        List<Member> to = new ArrayList<>(ts.robots().size());
+        List<LinkMember> to = new ArrayList<>(ts.robots().size());
         synchronized (this) {
             // a step's states may come in several frames: the first opens the step
             if (ts.step() != batchStep) {
@@ -227,7 +224,7 @@ final class SharedLink {
                 expected.clear();
             }
             for (TimeSteps.ForRobot r : ts.robots()) {
-                Member m = members.get(r.robot());
+                LinkMember m = members.get(r.robot());
                 to.add(m);
                 if (m != null) {
                     expected.add(m);
@@ -247,11 +244,11 @@ final class SharedLink {
     }
 
     /** Hands robots {@code from} to {@code to} (exclusive) of a frame their states. */
-    private void hand(TimeSteps ts, List<Member> members, int from, int to) {
+    private void hand(TimeSteps ts, List<LinkMember> members, int from, int to) {
         for (int i = from; i < to; i++) {
-            Member m = members.get(i);
+            LinkMember m = members.get(i);
             if (m != null) {
-                m.receiver.step(new RobotSensorResponse(ts.step(), ts.robots().get(i).state()));
+                m.receiver().step(new RobotSensorResponse(ts.step(), ts.robots().get(i).state()));
             } else {
                 // a robot that left while this step was on its way
                 String robot = ts.robots().get(i).robot();
@@ -261,13 +258,14 @@ final class SharedLink {
         }
     }
 
-    private void submit(Member m, long step, List<RobotRequest> requests) {
+    /** Adds a robot's requests to the open step's frame, and sends the frame if it is now complete. */
+    void submit(LinkMember m, long step, List<RobotRequest> requests) {
         LinkRequests complete;
         synchronized (this) {
             if (step != batchStep || !expected.remove(m)) {
                 return; // the robot was dropped from this step, or this is a second answer: the Environment has moved on
             }
-            batch.add(new LinkRequests.ForRobot(m.name, SocketLink.commands(requests)));
+            batch.add(new LinkRequests.ForRobot(m.name(), SocketLink.commands(requests)));
             complete = expected.isEmpty() ? takeBatch() : null;
         }
         write(complete);
@@ -280,7 +278,8 @@ final class SharedLink {
         return frame;
     }
 
-    private void write(Message m) {
+    /** Writes a message, if any; a failed write ends the link for all its robots. */
+    void write(Message m) {
         if (m == null) {
             return;
         }
@@ -291,8 +290,9 @@ final class SharedLink {
         }
     }
 
-    private void leave(Member m) {
-        members.remove(m.name, m);
+    /** A robot's part closed: the step's frame no longer waits for it. */
+    void leave(LinkMember m) {
+        members.remove(m.name(), m);
         LinkRequests complete;
         synchronized (this) {
             complete = expected.remove(m) && expected.isEmpty() && !batch.isEmpty() ? takeBatch() : null;
@@ -316,65 +316,8 @@ final class SharedLink {
         for (Joining j : joining.values()) {
             j.welcome().completeExceptionally(new IOException(reason));
         }
-        for (Member m : members.values()) {
+        for (LinkMember m : members.values()) {
             m.ended(reason);
-        }
-    }
-
-    /** One robot's part of the link. */
-    private static final class Member extends ReleasedOnClose {
-        private final String host;
-        private final int port;
-        private final HardwareOptions options;
-        private volatile SharedLink link;
-        private volatile String name;
-        private volatile StepReceiver receiver;
-
-        Member(String host, int port, HardwareOptions options, Runnable released) {
-            super(released);
-            this.host = host;
-            this.port = port;
-            this.options = options;
-        }
-
-        @Override
-        public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
-            this.name = hello.name();
-            this.receiver = receiver;
-            try {
-                link = SharedLink.to(host, port, options);
-                return link.join(this, hello);
-            } catch (IOException | RuntimeException e) {
-                close();
-                throw e;
-            }
-        }
-
-        @Override
-        public void send(long step, List<RobotRequest> requests) {
-            link.submit(this, step, requests);
-        }
-
-        @Override
-        public void bye(String reason) {
-            SharedLink l = link;
-            if (l != null && !isClosed()) {
-                l.write(new Bye(reason, name));
-            }
-            close();
-        }
-
-        @Override
-        void closed() {
-            SharedLink l = link;
-            if (l != null) {
-                l.leave(this);
-            }
-        }
-
-        void ended(String reason) {
-            receiver.ended(reason);
-            close();
         }
     }
 }

@@ -24,18 +24,18 @@ public record RobotHello(String name, String robotType, RobotParameters paramete
     }
 
     /**
-     * A name as it may go into a log line or a message: quoted, with every character outside
-     * printable ASCII written as a backslash, u and four hex digits, and cut after 80 characters, so that a name from
-     * the wire can never forge a line.
+     * A name as it may go into a log line or a message: every character outside printable ASCII
+     * written as a backslash, u and four hex digits, and cut after 80 characters, so that a name
+     * from the wire can never forge a line.
      *
      * @param name any text, or null
-     * @return it, quoted and safe to print
+     * @return it, safe to print ({@code no name} for null)
      */
-    public static String quoted(String name) {
+    public static String printable(String name) {
         if (name == null) {
             return "no name";
         }
-        StringBuilder b = new StringBuilder("'");
+        StringBuilder b = new StringBuilder();
         for (int i = 0; i < Math.min(name.length(), 80); i++) {
             char c = name.charAt(i);
             if (c >= 0x20 && c < 0x7f && c != '\\') {
@@ -44,6 +44,14 @@ public record RobotHello(String name, String robotType, RobotParameters paramete
                 b.append(String.format("\\u%04x", (int) c));
             }
         }
-        return b.append(name.length() > 80 ? "'... (" + name.length() + " characters)" : "'").toString();
+        return b.append(name.length() > 80 ? "... (" + name.length() + " characters)" : "").toString();
+    }
+
+    /**
+     * @param name any text, or null
+     * @return {@link #printable} in single quotes ({@code no name} for null)
+     */
+    public static String quoted(String name) {
+        return name == null ? printable(null) : "'" + printable(name) + "'";
     }
 }

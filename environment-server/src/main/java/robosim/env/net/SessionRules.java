@@ -184,7 +184,7 @@ final class SessionRules {
             }
         }
         if (refusal != null) {
-            LOG.warning("refusing robot " + RobotHello.quoted(hello.name()).replaceAll("^'|'$", "") + ": " + refusal);
+            LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
             if (c.isLink()) {
                 c.send(new Bye("refused: " + refusal, hello.name()));
             } else {
