@@ -34,6 +34,8 @@ public abstract class AbstractRobot {
     private volatile int stepMs = 100;
     private volatile HardwareSimulator hardware;
     private volatile String connectionError;
+    /** How the last attempt to connect ended, while {@link #hardware} is null. */
+    private volatile RunEnd lastEnd;
     private final Queue<RobotMessage> inbox = new ConcurrentLinkedQueue<>();
     private final Queue<String> requestErrors = new ConcurrentLinkedQueue<>();
     private final Object messageNumbers = new Object();
@@ -94,6 +96,7 @@ public abstract class AbstractRobot {
             w = hw.connect(link);
         } catch (IOException | RuntimeException e) {
             hardware = null;
+            lastEnd = hw.runEnd();
             throw e;
         }
         stepMs = w.stepMs();
@@ -289,6 +292,20 @@ public abstract class AbstractRobot {
         if (hw != null && !hw.isEnded()) {
             hw.disconnect("the robot's program disconnected");
         }
+    }
+
+    /**
+     * How the robot's part in the run ended: the Environment ended the run, the program left, the
+     * Environment refused or dropped the robot, or it was lost (it closed the connection without a
+     * bye, the connection broke, or it sent nothing, neither a step nor a keep-alive, for the lost
+     * time: 10 s unless the system property {@value HardwareOptions#LOST_AFTER_PROPERTY} says
+     * otherwise). {@link RunEnd#describe()} says it in one line.
+     *
+     * @return the end, or null while the robot is connected (or before it tried to connect)
+     */
+    public RunEnd getRunEnd() {
+        HardwareSimulator hw = hardware;
+        return hw == null ? lastEnd : hw.runEnd();
     }
 
     /** @return whether the robot is connected to the Environment */

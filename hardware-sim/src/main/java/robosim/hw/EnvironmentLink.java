@@ -15,7 +15,9 @@ public interface EnvironmentLink {
     /**
      * Connects, says hello and waits (bounded) for the Environment's welcome. From then on each
      * step goes to {@code receiver}, on a thread of the link; the first may come before this
-     * returns.
+     * returns. The link tells the receiver how it ended ({@link StepReceiver#ended}): the
+     * Environment's bye, or the Environment lost (the connection closed or broke, or nothing came,
+     * neither a step nor a keep-alive, for {@link HardwareOptions#lostAfterMs()}).
      *
      * @param hello    the robot's name, type and parameters
      * @param receiver where the steps go
@@ -42,4 +44,7 @@ public interface EnvironmentLink {
 
     /** Closes without a word; no step is delivered after it returns. Closing twice does nothing. */
     void close();
+
+    /** @return the Environment's host and port, {@code host:port}, for messages */
+    String environment();
 }

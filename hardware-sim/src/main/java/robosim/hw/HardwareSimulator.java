@@ -53,7 +53,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private final Queue<RobotRequest> robotRequestQueue = new ConcurrentLinkedQueue<>();
     private final HardwareOptions options;
     private volatile EnvironmentLink link;
-    private volatile String endReason;
+    private volatile RunEnd runEnd;
     private volatile long openStep;
     private volatile Thread keeper;
     private long warnedStep = -1;
@@ -95,14 +95,18 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         // joined first: a step that comes before the welcome returns waits for this thread's yield
         gate.join(me);
         this.link = link;
+        RunEndWatch.joining(this);
         try {
             Welcome w = link.open(hello, this);
             WATCHED.add(this);
             return w;
         } catch (IOException | RuntimeException e) {
             gate.leave(me);
-            endReason = "not connected: " + e.getMessage();
-            gate.close();
+            if (e instanceof RefusedException refused) {
+                end(RunEnd.Kind.REFUSED, refused.reason());
+            } else {
+                end(RunEnd.Kind.NOT_CONNECTED, String.valueOf(e.getMessage()));
+            }
             throw e;
         }
     }
@@ -165,9 +169,18 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         }
     }
 
-    /** @return why the connection ended, or null while connected */
+    /**
+     * @return how the robot's part in the run ended (the run's end, its own leave, a refusal, a drop,
+     *         the Environment lost), or null while it lasts
+     */
+    public RunEnd runEnd() {
+        return runEnd;
+    }
+
+    /** @return why the robot's part in the run ended (the reason of {@link #runEnd()}), or null while it lasts */
     public String endReason() {
-        return endReason;
+        RunEnd e = runEnd;
+        return e == null ? null : e.reason();
     }
 
     /**
@@ -176,21 +189,17 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * @param reason for the Environment's log
      */
     public void disconnect(String reason) {
-        leave(reason, "disconnected: " + reason);
+        leave(reason);
     }
 
-    /** Says bye over the link and ends, with the reason fixed before the link's thread sees it close. */
-    private void leave(String bye, String reason) {
-        synchronized (this) {
-            if (endReason == null) {
-                endReason = reason;
-            }
-        }
+    /** Says bye over the link and ends, with the end settled before the link's thread sees it close. */
+    private void leave(String reason) {
+        settle(RunEnd.Kind.LEFT, reason);
         EnvironmentLink l = link;
         if (l != null) {
-            l.bye(bye);
+            l.bye(reason);
         }
-        end(reason);
+        close();
     }
 
     @Override
@@ -202,8 +211,8 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     }
 
     @Override
-    public void ended(String reason) {
-        end(reason);
+    public void ended(RunEnd.Kind kind, String reason) {
+        end(kind, reason);
     }
 
     /**
@@ -214,7 +223,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private void sendRequests() {
         EnvironmentLink l = link;
         if (gate.participantCount() == 0 && keeper == null) {
-            leave("the robot's code has ended", "the robot's code has ended");
+            leave("the robot's code has ended");
             return;
         }
         List<RobotRequest> requests = new ArrayList<>();
@@ -225,7 +234,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         try {
             l.send(openStep, requests);
         } catch (IOException e) {
-            end("sending requests failed: " + e.getMessage());
+            end(RunEnd.Kind.LOST, "sending requests failed: " + e.getMessage());
         }
     }
 
@@ -250,14 +259,28 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         }
     }
 
-    private void end(String reason) {
-        WATCHED.remove(this);
+    private void end(RunEnd.Kind kind, String reason) {
+        settle(kind, reason);
+        close();
+    }
+
+    /** Fixes how the robot's part ended, if nothing has yet; the first end is the one that counts. */
+    private void settle(RunEnd.Kind kind, String reason) {
+        RunEnd e;
         synchronized (this) {
-            if (endReason == null) {
-                endReason = reason;
-                LOG.fine(() -> "robot " + hello.name() + ": " + reason);
+            if (runEnd != null) {
+                return;
             }
+            EnvironmentLink l = link;
+            e = new RunEnd(hello.name(), kind, l == null ? "?" : l.environment(), openStep, reason);
+            runEnd = e;
         }
+        LOG.fine(e::describe);
+        RunEndWatch.ended(this, e);
+    }
+
+    private void close() {
+        WATCHED.remove(this);
         gate.close();
         EnvironmentLink l = link;
         if (l != null) {

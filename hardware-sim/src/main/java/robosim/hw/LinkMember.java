@@ -71,8 +71,13 @@ final class LinkMember extends ReleasedOnClose {
     }
 
     /** The link ended the robot's part, or the whole link ended. */
-    void ended(String reason) {
-        receiver.ended(reason);
+    void ended(RunEnd.Kind kind, String reason) {
+        receiver.ended(kind, reason);
         close();
+    }
+
+    @Override
+    public String environment() {
+        return host + ":" + port;
     }
 }

@@ -21,6 +21,7 @@ import java.util.logging.Logger;
 import robosim.protocol.Bye;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.KeepAlive;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
@@ -90,7 +91,7 @@ final class SharedLink {
         this.options = options;
         this.socket = SocketLink.connectSocket(host, port, options);
         try {
-            socket.setSoTimeout((int) options.stepReadTimeoutMs());
+            socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
             writer.write(new LinkHello("pid " + ProcessHandle.current().pid()));
@@ -163,30 +164,34 @@ final class SharedLink {
     }
 
     private void read() {
-        String reason = "the Environment closed the connection";
+        RunEnd.Kind kind = RunEnd.Kind.LOST;
+        String reason = SocketLink.CLOSED;
         try {
             Message m;
             while ((m = reader.read()) != null) {
                 if (m instanceof TimeSteps ts) {
                     steps(ts);
+                } else if (m instanceof KeepAlive) {
+                    continue; // a sign of life: the read's timeout starts again
                 } else if (m instanceof Welcome w) {
                     welcomed(w);
                 } else if (m instanceof Bye bye && bye.robot() != null) {
                     byeTo(bye.robot(), bye.reason());
                 } else if (m instanceof Bye bye) {
-                    reason = "the Environment said " + bye.reason();
+                    kind = RunEnd.ofBye(bye.reason());
+                    reason = RunEnd.withoutPrefix(bye.reason());
                     break;
                 } else {
-                    reason = "the Environment sent " + SocketLink.describe(m);
+                    reason = "it sent " + SocketLink.describe(m);
                     break;
                 }
             }
         } catch (SocketTimeoutException e) {
-            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
+            reason = SocketLink.silent(options);
         } catch (IOException e) {
-            reason = e.getMessage();
+            reason = "the connection failed: " + e.getMessage();
         }
-        endAll(reason);
+        endAll(kind, reason);
     }
 
     private void welcomed(Welcome w) {
@@ -204,12 +209,13 @@ final class SharedLink {
     private void byeTo(String robot, String reason) {
         Joining j = joining.get(robot);
         if (j != null && !j.welcome().isDone()) {
-            j.welcome().completeExceptionally(new IOException("the Environment at " + host + ":" + port + " " + reason));
+            j.welcome().completeExceptionally(new RefusedException("the Environment at " + host + ":" + port + " "
+                    + reason, RunEnd.withoutPrefix(reason)));
             return;
         }
         LinkMember m = members.get(robot);
         if (m != null) {
-            m.ended("the Environment said " + reason);
+            m.ended(RunEnd.ofBye(reason), RunEnd.withoutPrefix(reason));
         }
     }
 
@@ -286,7 +292,7 @@ final class SharedLink {
         try {
             writer.write(m);
         } catch (IOException e) {
-            endAll("sending requests failed: " + e.getMessage());
+            endAll(RunEnd.Kind.LOST, "sending requests failed: " + e.getMessage());
         }
     }
 
@@ -300,12 +306,12 @@ final class SharedLink {
         write(complete);
     }
 
-    private void endAll(String reason) {
+    private void endAll(RunEnd.Kind kind, String reason) {
         synchronized (this) {
             if (endReason != null) {
                 return;
             }
-            endReason = reason;
+            endReason = "the Environment at " + host + ":" + port + ": " + reason;
         }
         OPEN.remove(host + ":" + port, this);
         try {
@@ -314,10 +320,10 @@ final class SharedLink {
             LOG.log(Level.FINE, "closing", e);
         }
         for (Joining j : joining.values()) {
-            j.welcome().completeExceptionally(new IOException(reason));
+            j.welcome().completeExceptionally(new IOException(endReason));
         }
         for (LinkMember m : members.values()) {
-            m.ended(reason);
+            m.ended(kind, reason);
         }
     }
 }

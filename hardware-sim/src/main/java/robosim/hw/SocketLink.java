@@ -13,6 +13,7 @@ import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.KeepAlive;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
@@ -22,7 +23,9 @@ import robosim.protocol.Welcome;
 
 /**
  * A robot's connection of its own: its hello, then a {@link TimeStep} in and a
- * {@link RobotRequests} out each step, read by a thread of the robot's own.
+ * {@link RobotRequests} out each step, read by a thread of the robot's own. A {@link KeepAlive}
+ * counts only as a sign of life: the read gives up after {@link HardwareOptions#lostAfterMs()}
+ * without a byte.
  */
 final class SocketLink extends ReleasedOnClose {
     private static final Logger LOG = Logger.getLogger(SocketLink.class.getName());
@@ -78,14 +81,23 @@ final class SocketLink extends ReleasedOnClose {
         }
     }
 
-    /** @return what the Environment's refusal or odd answer was, as a connect failure's text */
-    static String refusal(String host, int port, Message answer) {
-        return answer instanceof Bye bye ? "the Environment at " + host + ":" + port + " " + bye.reason()
-                : "the Environment at " + host + ":" + port + " answered " + describe(answer);
+    /** @return the Environment's refusal or odd answer to a hello, as a connect failure */
+    static IOException refusal(String host, int port, Message answer) {
+        String at = "the Environment at " + host + ":" + port;
+        return answer instanceof Bye bye ? new RefusedException(at + " " + bye.reason(), RunEnd.withoutPrefix(bye.reason()))
+                : new IOException(at + " answered " + describe(answer));
     }
 
     static String describe(Message m) {
         return m == null ? "nothing (the connection closed)" : "an unexpected " + m.getClass().getSimpleName();
+    }
+
+    /** The reason a link gives when the Environment closes the connection without a bye. */
+    static final String CLOSED = "it closed the connection without a bye";
+
+    /** @return the reason a link gives when the Environment has been silent for the lost time */
+    static String silent(HardwareOptions options) {
+        return "it sent nothing, neither a step nor a keep-alive, for " + options.lostAfterMs() + " ms";
     }
 
     static List<Command> commands(List<RobotRequest> requests) {
@@ -105,10 +117,13 @@ final class SocketLink extends ReleasedOnClose {
             writer = new FrameWriter(socket.getOutputStream(), CODEC);
             writer.write(hello);
             Message first = reader.read();
-            if (!(first instanceof Welcome w)) {
-                throw new IOException(refusal(host, port, first));
+            while (first instanceof KeepAlive) {
+                first = reader.read();
             }
-            socket.setSoTimeout((int) options.stepReadTimeoutMs());
+            if (!(first instanceof Welcome w)) {
+                throw refusal(host, port, first);
+            }
+            socket.setSoTimeout((int) options.lostAfterMs());
             RobotThreads.unstarted("hw-" + hello.name(), () -> read(receiver)).start();
             return w;
         } catch (IOException | RuntimeException e) {
@@ -118,26 +133,30 @@ final class SocketLink extends ReleasedOnClose {
     }
 
     private void read(StepReceiver receiver) {
-        String reason = "the Environment closed the connection";
+        RunEnd.Kind kind = RunEnd.Kind.LOST;
+        String reason = CLOSED;
         try {
             Message m;
             while ((m = reader.read()) != null) {
                 if (m instanceof TimeStep ts) {
                     receiver.step(new RobotSensorResponse(ts.step(), ts.state()));
+                } else if (m instanceof KeepAlive) {
+                    continue; // a sign of life: the read's timeout starts again
                 } else if (m instanceof Bye bye) {
-                    reason = "the Environment said " + bye.reason();
+                    kind = RunEnd.ofBye(bye.reason());
+                    reason = RunEnd.withoutPrefix(bye.reason());
                     break;
                 } else {
-                    reason = "the Environment sent " + describe(m);
+                    reason = "it sent " + describe(m);
                     break;
                 }
             }
         } catch (SocketTimeoutException e) {
-            reason = "no step arrived within " + options.stepReadTimeoutMs() + " ms";
+            reason = silent(options);
         } catch (IOException e) {
-            reason = e.getMessage();
+            reason = "the connection failed: " + e.getMessage();
         }
-        receiver.ended(reason);
+        receiver.ended(kind, reason);
         close();
     }
 
@@ -154,6 +173,11 @@ final class SocketLink extends ReleasedOnClose {
             LOG.log(Level.FINE, "bye not sent", e);
         }
         close();
+    }
+
+    @Override
+    public String environment() {
+        return host + ":" + port;
     }
 
     @Override

@@ -13,9 +13,11 @@ public interface StepReceiver {
     void step(RobotSensorResponse response);
 
     /**
-     * No more steps will come: the Environment ended the robot's part in the run, or the link broke.
+     * No more steps will come: the Environment ended the run or the robot's part in it, or it was
+     * lost.
      *
+     * @param kind   how the robot's part ended
      * @param reason why, for the robot's program
      */
-    void ended(String reason);
+    void ended(RunEnd.Kind kind, String reason);
 }

@@ -33,7 +33,7 @@ class AbstractRobotUnitTest {
     @AfterEach
     void end() throws InterruptedException {
         if (link.receiver != null) {
-            link.receiver.ended("the test is over");
+            link.receiver.ended(RunEnd.Kind.RUN_ENDED, "the test is over");
         }
         code.close();
     }

@@ -81,4 +81,9 @@ final class FakeLink implements EnvironmentLink {
     public void close() {
         closed = true;
     }
+
+    @Override
+    public String environment() {
+        return "fake:1";
+    }
 }

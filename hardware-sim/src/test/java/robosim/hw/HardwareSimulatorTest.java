@@ -37,6 +37,7 @@ import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
+import robosim.protocol.KeepAlive;
 import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
 import robosim.protocol.RobotParameters;
@@ -68,7 +69,7 @@ class HardwareSimulatorTest {
             env.close();
         } finally {
             if (made != null) {
-                made.ended("the test is over");
+                made.ended(RunEnd.Kind.RUN_ENDED, "the test is over");
             }
             code.close();
         }
@@ -133,10 +134,13 @@ class HardwareSimulatorTest {
     void anEnvironmentThatRefusesTheRobotFailsTheConnectWithItsReason() throws Exception {
         CompletableFuture<Welcome> welcome = connecting(hardware("r9", OPTIONS), env.port());
         env.acceptHello();
-        env.send(new Bye("no robot r9 in this world"));
+        env.send(new Bye("refused: world w has no robot named 'r9'"));
         Throwable e = assertInstanceOf(IOException.class, failureOf(welcome));
-        assertEquals("the Environment at 127.0.0.1:" + env.port() + " no robot r9 in this world", e.getMessage());
+        assertEquals("the Environment at 127.0.0.1:" + env.port() + " refused: world w has no robot named 'r9'",
+                e.getMessage());
         assertNull(env.read(), "the robot has closed its end");
+        assertEquals(new RunEnd("r9", RunEnd.Kind.REFUSED, "127.0.0.1:" + env.port(), 0,
+                "world w has no robot named 'r9'"), made.runEnd());
     }
 
     @Test
@@ -285,9 +289,10 @@ class HardwareSimulatorTest {
         env.welcome("r1");
         env.step(1);
         assertNull(hw.endReason(), "connected");
-        env.send(new Bye("the run is over"));
+        env.send(new Bye("done: step limit 1 reached"));
         RobotCode.join(robot);
-        assertEquals("the Environment said the run is over", hw.endReason());
+        assertEquals(new RunEnd("r1", RunEnd.Kind.RUN_ENDED, "127.0.0.1:" + env.port(), 1, "step limit 1 reached"),
+                hw.runEnd());
         assertTrue(made.isEnded());
         assertNull(env.read(), "the robot has closed its end");
     }
@@ -301,7 +306,10 @@ class HardwareSimulatorTest {
         env.step(1);
         env.closeConnection();
         RobotCode.join(robot);
-        assertEquals("the Environment closed the connection", hw.endReason());
+        assertEquals(new RunEnd("r1", RunEnd.Kind.LOST, "127.0.0.1:" + env.port(), 1,
+                "it closed the connection without a bye"), hw.runEnd());
+        assertEquals("robot r1 lost the Environment at 127.0.0.1:" + env.port()
+                + " after step 1: it closed the connection without a bye", hw.runEnd().describe());
     }
 
     @Test
@@ -313,19 +321,54 @@ class HardwareSimulatorTest {
         env.step(1);
         env.welcome("r1");
         RobotCode.join(robot);
-        assertEquals("the Environment sent an unexpected Welcome", hw.endReason());
+        assertEquals(RunEnd.Kind.LOST, hw.runEnd().kind());
+        assertEquals("it sent an unexpected Welcome", hw.endReason());
         assertNull(env.read(), "the robot has closed its end");
     }
 
     @Test
-    void noStepWithinTheStepTimeoutEndsTheLink() throws Exception {
+    void anEnvironmentSilentForTheLostTimeIsDeclaredLost() throws Exception {
         HardwareSimulator hw = hardware("r1", new HardwareOptions(WAIT_MS, 300, WAIT_MS));
         Thread robot = run(hw, this::yieldUntilTheEnd);
         env.acceptHello();
         env.welcome("r1");
+        env.step(1);
         RobotCode.join(robot);
-        assertEquals("no step arrived within 300 ms", hw.endReason());
+        assertEquals(new RunEnd("r1", RunEnd.Kind.LOST, "127.0.0.1:" + env.port(), 1,
+                "it sent nothing, neither a step nor a keep-alive, for 300 ms"), hw.runEnd());
         assertNull(env.read(), "the robot has closed its end");
+    }
+
+    @Test
+    void keepAlivesKeepAPausedEnvironmentFromBeingDeclaredLost() throws Exception {
+        HardwareSimulator hw = hardware("r1", new HardwareOptions(WAIT_MS, 1_000, WAIT_MS));
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        // 2 s without a step, a keep-alive every 200 ms: twice the lost time, never silent for it
+        for (int i = 0; i < 10; i++) {
+            env.send(new KeepAlive(1));
+            env.assertSilentFor(200);
+        }
+        assertNull(hw.runEnd(), "still in the run");
+        assertEquals(List.of(), env.step(2));
+        env.send(new Bye("done: step limit 2 reached"));
+        RobotCode.join(robot);
+        assertEquals(RunEnd.Kind.RUN_ENDED, hw.runEnd().kind());
+    }
+
+    @Test
+    void aByeThatNamesNoRunEndDropsTheRobotWithTheEnvironmentsReason() throws Exception {
+        HardwareSimulator hw = hardware("r1", OPTIONS);
+        Thread robot = run(hw, this::yieldUntilTheEnd);
+        env.acceptHello();
+        env.welcome("r1");
+        env.step(1);
+        env.send(new Bye("it did not send its requests for step 2 within 500 ms"));
+        RobotCode.join(robot);
+        assertEquals(new RunEnd("r1", RunEnd.Kind.DROPPED, "127.0.0.1:" + env.port(), 1,
+                "it did not send its requests for step 2 within 500 ms"), hw.runEnd());
     }
 
     @Test
@@ -341,7 +384,8 @@ class HardwareSimulatorTest {
         env.send(new TimeStep(2, 100, FakeEnvironment.state(1)));
         assertEquals(new Bye("the program is done"), env.read());
         RobotCode.join(robot);
-        assertEquals("disconnected: the program is done", hw.endReason());
+        assertEquals(RunEnd.Kind.LEFT, hw.runEnd().kind());
+        assertEquals("the program is done", hw.endReason());
         assertTrue(made.isEnded());
     }
 
@@ -367,14 +411,14 @@ class HardwareSimulatorTest {
         RobotCode.join(robot);
         assertEquals(List.of(), env.step(1));
         assertEquals(List.of(), env.step(2));
-        env.send(new Bye("done"));
+        env.send(new Bye("done: step limit 2 reached"));
         assertNull(env.read(), "the robot has closed its end");
         for (Thread t : Thread.getAllStackTraces().keySet()) {
             if (t.getName().equals("hw-keep-r-kept")) {
                 RobotCode.join(t);
             }
         }
-        assertEquals("the Environment said done", hw.endReason());
+        assertEquals("step limit 2 reached", hw.endReason());
     }
 
     @Test

@@ -36,7 +36,7 @@ class HardwareSimulatorUnitTest {
 
     @AfterEach
     void end() throws InterruptedException {
-        hw.ended("the test is over");
+        hw.ended(RunEnd.Kind.RUN_ENDED, "the test is over");
         code.close();
     }
 
@@ -137,11 +137,12 @@ class HardwareSimulatorUnitTest {
         link.step(1);
         link.next();
 
-        hw.ended("the Environment said done");
+        hw.ended(RunEnd.Kind.RUN_ENDED, "step limit 1 reached");
 
         RobotCode.join(t);
         assertTrue(hw.isEnded());
-        assertEquals("the Environment said done", hw.endReason());
+        assertEquals(new RunEnd("r1", RunEnd.Kind.RUN_ENDED, "fake:1", 1, "step limit 1 reached"), hw.runEnd());
+        assertEquals("step limit 1 reached", hw.endReason());
         assertTrue(link.closed);
     }
 
@@ -149,7 +150,8 @@ class HardwareSimulatorUnitTest {
     void disconnectSaysByeOverTheLink() throws Exception {
         RobotCode.join(robot(() -> hw.disconnect("the program is done")));
         assertEquals("the program is done", link.byes.poll(WAIT_MS, TimeUnit.MILLISECONDS));
-        assertEquals("disconnected: the program is done", hw.endReason());
+        assertEquals(RunEnd.Kind.LEFT, hw.runEnd().kind());
+        assertEquals("the program is done", hw.endReason());
         assertTrue(link.closed);
     }
 
@@ -167,12 +169,23 @@ class HardwareSimulatorUnitTest {
 
     @Test
     void aRefusedRobotIsNotConnectedAndSaysWhy() {
-        FakeLink refusing = new FakeLink(new IOException("the Environment at here refused: no robot r1"));
+        FakeLink refusing = new FakeLink(new RefusedException("the Environment at here refused: no robot r1",
+                "no robot r1"));
 
         IOException e = assertThrows(IOException.class, () -> hw.connect(refusing));
 
         assertEquals("the Environment at here refused: no robot r1", e.getMessage());
         assertTrue(hw.isEnded());
-        assertEquals("not connected: the Environment at here refused: no robot r1", hw.endReason());
+        assertEquals(new RunEnd("r1", RunEnd.Kind.REFUSED, "fake:1", 0, "no robot r1"), hw.runEnd());
+    }
+
+    @Test
+    void aConnectionThatFailsBeforeTheWelcomeIsNotConnected() {
+        FakeLink failing = new FakeLink(new IOException("no Environment at here:1 within 300 ms"));
+
+        assertThrows(IOException.class, () -> hw.connect(failing));
+
+        assertEquals(new RunEnd("r1", RunEnd.Kind.NOT_CONNECTED, "fake:1", 0, "no Environment at here:1 within 300 ms"),
+                hw.runEnd());
     }
 }

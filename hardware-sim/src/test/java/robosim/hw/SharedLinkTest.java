@@ -165,7 +165,8 @@ class SharedLinkTest {
 
         assertEquals(Map.of("r1", List.of()), requests(2));
         assertTrue(r2.isEnded());
-        assertEquals("the Environment said it did not send its requests in time", r2.endReason());
+        assertEquals(RunEnd.Kind.DROPPED, r2.runEnd().kind());
+        assertEquals("it did not send its requests in time", r2.endReason());
         assertFalse(r1.isEnded());
         out.write(new Bye("done: step limit 2 reached"));
         assertEquals(null, in.read(), "the link closes");
@@ -173,7 +174,8 @@ class SharedLinkTest {
         while (!r1.isEnded() && System.nanoTime() < deadline) {
             Thread.sleep(5);
         }
-        assertEquals("the Environment said done: step limit 2 reached", r1.endReason());
+        assertEquals(RunEnd.Kind.RUN_ENDED, r1.runEnd().kind());
+        assertEquals("step limit 2 reached", r1.endReason());
     }
 
     @Test
@@ -197,6 +199,8 @@ class SharedLinkTest {
 
         assertTrue(done.await(WAIT_MS, TimeUnit.MILLISECONDS));
         assertTrue(failure[0].getMessage().endsWith(" refused: world w has no robot named 'r9'"), failure[0].getMessage());
+        assertEquals(new RunEnd("r9", RunEnd.Kind.REFUSED, "127.0.0.1:" + listener.getLocalPort(), 0,
+                "world w has no robot named 'r9'"), r9.runEnd());
         steps(1, "r1");
         assertEquals(Set.of("r1"), requests(1).keySet());
     }

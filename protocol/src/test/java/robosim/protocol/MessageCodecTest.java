@@ -121,6 +121,12 @@ class MessageCodecTest {
         assertEquals(Messages.linkRequests(), roundTrip(format, Messages.linkRequests()));
     }
 
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void keepAliveRoundTripsWithItsStep(Format format) throws FrameException {
+        assertEquals(new KeepAlive(42), roundTrip(format, Messages.keepAlive()));
+    }
+
     @Test
     void fixturesHoldOneMessageOfEveryType() {
         Set<Class<?>> covered = Messages.all().stream().map(Object::getClass).collect(Collectors.toSet());
@@ -199,6 +205,7 @@ class MessageCodecTest {
         "LinkHello, linkHello",
         "TimeSteps, timeSteps",
         "LinkRequests, linkRequests",
+        "KeepAlive, keepAlive",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
         Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))

@@ -125,8 +125,12 @@ final class Messages {
                 new LinkRequests.ForRobot("robot2", List.of())));
     }
 
+    static KeepAlive keepAlive() {
+        return new KeepAlive(42);
+    }
+
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
-                snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests());
+                snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), keepAlive());
     }
 }

@@ -1,0 +1,91 @@
+package robosim.hw;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * Follows the robots of this JVM from the moment it is opened: how many are still in their run
+ * (connecting or connected), and how each of the others ended. It is for a launcher that runs a
+ * robot program and reports its robots' ends ({@code robosim robot}); a program reads its own
+ * robot's end with {@link AbstractRobot#getRunEnd()}.
+ */
+public final class RunEndWatch implements AutoCloseable {
+    private static final Set<RunEndWatch> OPEN = ConcurrentHashMap.newKeySet();
+
+    private final Set<HardwareSimulator> running = new HashSet<>();
+    private final List<RunEnd> ends = new ArrayList<>();
+
+    private RunEndWatch() {
+    }
+
+    /** @return a watch that follows every robot that begins to connect from now on, until closed */
+    public static RunEndWatch open() {
+        RunEndWatch w = new RunEndWatch();
+        OPEN.add(w);
+        return w;
+    }
+
+    /** A robot began to connect. */
+    static void joining(HardwareSimulator hw) {
+        for (RunEndWatch w : OPEN) {
+            w.add(hw);
+        }
+    }
+
+    /** A robot's part in the run ended; called once per robot. */
+    static void ended(HardwareSimulator hw, RunEnd end) {
+        for (RunEndWatch w : OPEN) {
+            w.remove(hw, end);
+        }
+    }
+
+    private synchronized void add(HardwareSimulator hw) {
+        running.add(hw);
+        notifyAll();
+    }
+
+    private synchronized void remove(HardwareSimulator hw, RunEnd end) {
+        if (running.remove(hw)) {
+            ends.add(end);
+            notifyAll();
+        }
+    }
+
+    /** @return the robots followed that are connecting or connected */
+    public synchronized int running() {
+        return running.size();
+    }
+
+    /** @return how the robots followed ended, in the order they ended */
+    public synchronized List<RunEnd> ends() {
+        return List.copyOf(ends);
+    }
+
+    /**
+     * Waits until no robot followed is connecting or connected.
+     *
+     * @param timeoutMs the longest wait, ms
+     * @return whether none is
+     * @throws InterruptedException if interrupted
+     */
+    public synchronized boolean awaitNoneRunning(long timeoutMs) throws InterruptedException {
+        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (!running.isEmpty()) {
+            long left = (deadline - System.nanoTime()) / 1_000_000L;
+            if (left <= 0) {
+                return false;
+            }
+            wait(left);
+        }
+        return true;
+    }
+
+    /** Stops following robots. */
+    @Override
+    public void close() {
+        OPEN.remove(this);
+    }
+}
