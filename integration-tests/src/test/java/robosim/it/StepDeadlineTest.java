@@ -8,13 +8,16 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import robosim.aria.ArRobot;
 import robosim.env.core.RobotSummary;
+import robosim.env.net.Departure;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.examples.wander.Wander;
+import robosim.hw.RunEnd;
 
 /**
  * A robot whose code never yields misses the step deadline: the Environment drops it by name with
@@ -30,6 +33,7 @@ class StepDeadlineTest {
         AtomicBoolean spinning = new AtomicBoolean(true);
         AtomicBoolean r2Connected = new AtomicBoolean();
         AtomicBoolean r2SawItsEnd = new AtomicBoolean();
+        AtomicReference<RunEnd> r2End = new AtomicReference<>();
         Thread r1 = null;
         Thread r2 = null;
         try (LogCapture log = new LogCapture("robosim.env.net");
@@ -50,6 +54,7 @@ class StepDeadlineTest {
                         work.incrementAndGet(); // busy computing, never yielding to the simulation
                     }
                     r2SawItsEnd.set(!robot.isConnected());
+                    r2End.set(robot.getRunEnd());
                 }
             }, "robot-r2");
             for (Thread t : List.of(r1, r2)) {
@@ -69,8 +74,10 @@ class StepDeadlineTest {
             assertTrue(aboutR2.get(0).contains("did not send its requests for step"), aboutR2.get(0));
             assertTrue(log.warnings().stream().noneMatch(w -> w.contains("robot r1")), "r1 was not dropped: "
                     + log.warnings());
+            assertEquals(Departure.Kind.DROPPED, report.departure("r2").orElseThrow().kind(), "the report marks r2");
             r2.join(10_000);
             assertTrue(r2SawItsEnd.get(), "r2's program learnt that the Environment dropped it");
+            assertEquals(RunEnd.Kind.DROPPED, r2End.get().kind(), "and why: " + r2End.get());
         } finally {
             spinning.set(false);
             for (Thread t : new Thread[] {r1, r2}) {

@@ -13,6 +13,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
+import robosim.env.net.Departure;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
@@ -24,7 +25,8 @@ import robosim.protocol.recording.RecordingWriter;
 
 /** {@code robosim env}: loads a world, waits for its robots, runs the lockstep steps. */
 @Command(name = "env", mixinStandardHelpOptions = true,
-        description = "Run the Environment: load WORLD, wait for the robots it names, run, print each robot's end.")
+        description = "Run the Environment: load WORLD, wait for the robots it names, run, print each robot's end"
+                + " (ran to the end, or left, dropped or lost, with the step and the reason).")
 final class EnvCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -145,9 +147,17 @@ final class EnvCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "Gold found by %s at step %d%n", report.find().robot(), report.find().step());
         }
         for (RobotSummary r : report.robots()) {
-            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d%n",
-                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions());
+            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%n",
+                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()));
         }
         out.flush();
+    }
+
+    /**
+     * @return {@code ran to the end}, or how the robot went before it: {@code left}, {@code dropped}
+     *         or {@code lost}, the step and the reason
+     */
+    static String howItEnded(RunReport report, String robot) {
+        return report.departure(robot).map(Departure::describe).orElse("ran to the end");
     }
 }

@@ -132,8 +132,8 @@ final class GoldfinderCommand implements Callable<Integer> {
             o.printf(Locale.ROOT, "Gold not found: %s%n", report.endReason());
         }
         for (RobotSummary r : report.robots()) {
-            o.printf(Locale.ROOT, "robot %s: travelled %.0f mm, collisions %d, pose (%.0f, %.0f, %.1f)%n", r.name(),
-                    r.distance(), r.collisions(), r.x(), r.y(), r.th());
+            o.printf(Locale.ROOT, "robot %s: travelled %.0f mm, collisions %d, pose (%.0f, %.0f, %.1f), %s%n", r.name(),
+                    r.distance(), r.collisions(), r.x(), r.y(), r.th(), EnvCommand.howItEnded(report, r.name()));
         }
         o.flush();
     }

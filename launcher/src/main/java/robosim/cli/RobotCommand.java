@@ -1,7 +1,6 @@
 package robosim.cli;
 
 import java.io.File;
-import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.net.URL;
@@ -14,13 +13,23 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.hw.HardwareOptions;
 
 /**
  * {@code robosim robot}: runs a robot program in this JVM, as the original's
- * {@code java <robotApplication> robotName localhost portNumber}.
+ * {@code java <robotApplication> robotName localhost portNumber}, and says in one line per robot how
+ * its part in the run ended, with an exit code for it (see {@link RobotProgram}).
  */
 @Command(name = "robot", mixinStandardHelpOptions = true,
-        description = "Run a robot program: CLASS's main(NAME, HOST, PORT, ARGS...).")
+        description = {"Run a robot program: CLASS's main(NAME, HOST, PORT, ARGS...).",
+                "When the program and its robots are done, prints one line per robot: how its part in the run ended,"
+                        + " the Environment's host:port, the last step and the reason."},
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = {"0:the run ended, or the program left it",
+                "1:the program failed, or its robot could not connect",
+                "2:bad command line",
+                "3:the Environment was lost: it closed the connection without a bye, died, or sent nothing for the lost time",
+                "4:the Environment refused or dropped the robot"})
 final class RobotCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -44,11 +53,30 @@ final class RobotCommand implements Callable<Integer> {
             description = "where the program's classes are, besides RoboSim's (directories or jars, ':'-separated)")
     String classpath;
 
+    @Option(names = "--lost-after", paramLabel = "MS",
+            description = "declare the Environment lost after MS ms in which it sent nothing, neither a step nor a keep-alive"
+                    + " (it sends one after each second without anything else); default: the system property "
+                    + HardwareOptions.LOST_AFTER_PROPERTY + " if set, else " + HardwareOptions.DEFAULT_LOST_AFTER_MS)
+    Long lostAfterMs;
+
     @Override
     public Integer call() throws Exception {
         if (port <= 0 || port > 65535) {
             spec.commandLine().getErr().println("robosim robot: " + port + " was supplied for PORT: a port is 1 to 65535");
             return 2;
+        }
+        if (lostAfterMs != null && (lostAfterMs < 1 || lostAfterMs > Integer.MAX_VALUE)) {
+            spec.commandLine().getErr().println("robosim robot: " + lostAfterMs + " was supplied for --lost-after: it is 1 to "
+                    + Integer.MAX_VALUE + " ms");
+            return 2;
+        }
+        if (lostAfterMs == null) {
+            try {
+                HardwareOptions.configuredLostAfterMs();
+            } catch (IllegalArgumentException e) {
+                spec.commandLine().getErr().println("robosim robot: " + e.getMessage());
+                return 2;
+            }
         }
         ClassLoader loader = getClass().getClassLoader();
         if (classpath != null) {
@@ -72,13 +100,22 @@ final class RobotCommand implements Callable<Integer> {
         }
         List<String> args = new ArrayList<>(List.of(name, host, Integer.toString(port)));
         args.addAll(rest);
-        Thread.currentThread().setContextClassLoader(loader);
-        try {
-            main.invoke(null, (Object) args.toArray(new String[0]));
-        } catch (InvocationTargetException e) {
-            spec.commandLine().getErr().println("robosim robot: robot " + name + "'s program failed: " + e.getCause());
-            return 1;
+        // the program's robots read the lost time when they connect, without code of their own
+        String before = System.getProperty(HardwareOptions.LOST_AFTER_PROPERTY);
+        if (lostAfterMs != null) {
+            System.setProperty(HardwareOptions.LOST_AFTER_PROPERTY, Long.toString(lostAfterMs));
         }
-        return 0;
+        try {
+            return new RobotProgram(main, args.toArray(new String[0]), loader, name)
+                    .run(spec.commandLine().getOut(), spec.commandLine().getErr());
+        } finally {
+            if (lostAfterMs != null) {
+                if (before == null) {
+                    System.clearProperty(HardwareOptions.LOST_AFTER_PROPERTY);
+                } else {
+                    System.setProperty(HardwareOptions.LOST_AFTER_PROPERTY, before);
+                }
+            }
+        }
     }
 }

@@ -7,7 +7,7 @@ package robosim.protocol;
  * count of the Environment's silence: a robot that hears nothing, neither a step nor a keep-alive,
  * for its lost time declares the Environment lost.
  *
- * @param step the step open, or the last step run; 0 before the first
+ * @param step the last step the Environment ran; 0 before the first
  */
 public record KeepAlive(long step) implements Message {
 }

@@ -25,6 +25,7 @@ import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.InvalidValueException;
+import robosim.protocol.KeepAlive;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotState;
@@ -52,6 +53,8 @@ public final class EnvironmentServer implements AutoCloseable {
     private static final long MAX_QUEUED_VIEWER = 256L << 20;
     /** Robots whose states share one {@link TimeSteps} frame. */
     static final int ROBOTS_PER_FRAME = 100;
+    /** How long robots may hear nothing from the Environment before it sends them a {@link KeepAlive}, ms. */
+    static final long KEEP_ALIVE_MS = 1_000;
 
     private final Simulation sim;
     private final ServerOptions options;
@@ -64,6 +67,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private Selector selector;
     private ServerSocketChannel robotChannel;
     private ServerSocketChannel viewerChannel;
+    private long sentToRobotsNanos = System.nanoTime();
 
     /**
      * @param sim     the simulation to drive; it reads its robots' sensors on the server's
@@ -136,6 +140,7 @@ public final class EnvironmentServer implements AutoCloseable {
         listeners.snapshot(sim.snapshot());
         long started = System.nanoTime();
         String reason = loop();
+        List<Departure> departures = rules.departures();
         long wall = System.nanoTime() - started;
         listeners.end("done: " + reason);
         listeners.close();
@@ -150,7 +155,8 @@ public final class EnvironmentServer implements AutoCloseable {
         for (String name : sim.robotNames()) {
             summaries.add(sim.summary(name));
         }
-        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find(), connected);
+        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find(), connected,
+                departures);
     }
 
     private void awaitRobots() throws InterruptedException {
@@ -253,13 +259,14 @@ public final class EnvironmentServer implements AutoCloseable {
         for (int i = 0; i < frames.length; i++) {
             to.get(i).sendFrame(frames[i]);
         }
+        sentToRobotsNanos = System.nanoTime();
     }
 
     /** Serves every ready connection once, waiting until something is ready or the deadline. */
     private void pump(long deadlineNanos) throws InterruptedException {
         long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadlineNanos - System.nanoTime()));
         try {
-            selector.select(waitMs);
+            selector.select(Math.min(waitMs, KEEP_ALIVE_MS));
         } catch (IOException e) {
             throw new UncheckedIOException("the selector failed", e);
         }
@@ -277,6 +284,27 @@ public final class EnvironmentServer implements AutoCloseable {
                 accept((ServerSocketChannel) key.channel(), (Connection.Kind) key.attachment());
             } else {
                 serve((Connection) key.attachment(), key);
+            }
+        }
+        keepRobotsAlive();
+    }
+
+    /**
+     * Sends a {@link KeepAlive} to every robot connection and shared link that has said hello, once
+     * robots have been sent nothing for {@link #KEEP_ALIVE_MS}: before the first step while other
+     * robots are still connecting, and while a slow robot holds a step up. A robot that hears
+     * nothing, neither a step nor a keep-alive, for its lost time declares the Environment lost.
+     */
+    private void keepRobotsAlive() {
+        long now = System.nanoTime();
+        if (now - sentToRobotsNanos < TimeUnit.MILLISECONDS.toNanos(KEEP_ALIVE_MS)) {
+            return;
+        }
+        sentToRobotsNanos = now;
+        ByteBuffer frame = FrameWriter.frame(codec, new KeepAlive(sim.stepCount()));
+        for (Connection c : all) {
+            if (c.kind == Connection.Kind.ROBOT && (c.isLink() || c.name() != null)) {
+                c.sendFrame(frame.duplicate());
             }
         }
     }
@@ -312,7 +340,7 @@ public final class EnvironmentServer implements AutoCloseable {
         } catch (InvalidValueException e) {
             rules.invalid(c, e.getMessage());
         } catch (IOException e) {
-            rules.closed(c, e.getMessage());
+            rules.failed(c, e);
             c.close(e.getMessage());
         }
     }

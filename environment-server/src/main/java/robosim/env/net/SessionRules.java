@@ -1,5 +1,6 @@
 package robosim.env.net;
 
+import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -13,6 +14,7 @@ import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.comms.CommsSettings;
 import robosim.protocol.Command;
+import robosim.protocol.FrameException;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.CommsUpdate;
@@ -37,11 +39,14 @@ final class SessionRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
     /** The reason given when a peer ends its connection cleanly. */
     static final String DISCONNECTED = "it disconnected";
+    /** Why a robot whose connection ended cleanly but without a bye is lost. */
+    static final String NO_BYE = "the connection closed without a bye";
 
     private final Simulation sim;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final List<Connection> viewers = new ArrayList<>();
     private final Set<String> waiting = new LinkedHashSet<>();
+    private final Departures departures = new Departures();
     private long openStep;
     private Map<String, List<Command>> commands;
 
@@ -69,6 +74,30 @@ final class SessionRules {
 
     Set<String> waitingFor() {
         return waiting;
+    }
+
+    /** @return the robots that left, were dropped or were lost since the run started, in that order */
+    List<Departure> departures() {
+        return departures.list();
+    }
+
+    /** Marks a robot gone at the step open (or the last step run). */
+    private void departed(String robot, Departure.Kind kind, String reason) {
+        departures.mark(robot, kind, openStep > 0 ? openStep : sim.stepCount(), reason);
+    }
+
+    /** Marks the robots of a robot connection lost. */
+    private void lost(Connection c, String reason) {
+        if (c.kind != Connection.Kind.ROBOT) {
+            return;
+        }
+        if (c.isLink()) {
+            for (String robot : c.robots()) {
+                departed(robot, Departure.Kind.LOST, reason);
+            }
+        } else if (c.name() != null && robots.get(c.name()) == c) {
+            departed(c.name(), Departure.Kind.LOST, reason);
+        }
     }
 
     /** Opens a step: from now the connected robots' requests for it are collected. */
@@ -132,6 +161,7 @@ final class SessionRules {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
             LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            departed(c.name(), Departure.Kind.LEFT, bye.reason());
             c.shut();
             drop(c.name(), null);
         } else {
@@ -152,11 +182,13 @@ final class SessionRules {
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
                 LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + bye.reason());
+                departed(bye.robot(), Departure.Kind.LEFT, bye.reason());
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
             LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + bye.reason());
             for (String robot : c.robots()) {
+                departed(robot, Departure.Kind.LEFT, bye.reason());
                 drop(robot, null);
             }
             c.shut();
@@ -234,12 +266,7 @@ final class SessionRules {
                     : waiting.contains(name) ? "while step " + openStep + " is open"
                     : "after it had already sent its requests for step " + openStep;
             String rule = "robot " + name + " sent requests for step " + step + " " + open;
-            if (c.isLink()) {
-                drop(name, rule);
-            } else {
-                c.close(rule);
-                drop(name, null);
-            }
+            drop(name, rule);
             return;
         }
         commands.put(name, sent);
@@ -303,9 +330,25 @@ final class SessionRules {
         }
     }
 
+    /**
+     * A peer's connection failed. A frame that breaks the rules drops the robots on it, told why as
+     * far as the connection still carries it; any other failure (a reset, a stream that ends inside a
+     * frame) has lost them.
+     *
+     * @param e what reading or writing threw
+     */
+    void failed(Connection c, IOException e) {
+        if (!(e instanceof FrameException)) {
+            lost(c, "the connection failed: " + e.getMessage());
+            c.close(e.getMessage());
+        }
+        closed(c, e.getMessage());
+    }
+
     /** A peer's connection ended, cleanly ({@link #DISCONNECTED}) or for the reason given. */
     void closed(Connection c, String reason) {
         if (DISCONNECTED.equals(reason)) {
+            lost(c, NO_BYE);
             c.shut();
         }
         if (c.kind == Connection.Kind.VIEWER) {
@@ -338,10 +381,15 @@ final class SessionRules {
 
     /**
      * Takes a robot out of the run: its connection is closed and its body stays where it stopped.
+     * A robot dropped for a reason is told it in a bye, and marked dropped in the run report unless
+     * it has already gone otherwise.
      *
      * @param reason logged with the robot's name, or null for an orderly leave
      */
     void drop(String name, String reason) {
+        if (reason != null) {
+            departed(name, Departure.Kind.DROPPED, reason);
+        }
         Connection c = robots.remove(name);
         waiting.remove(name);
         sim.halt(name);
@@ -352,6 +400,7 @@ final class SessionRules {
         if (c.isLink()) {
             c.dropRobot(name, reason);
         } else if (reason != null) {
+            c.send(new Bye(reason));
             c.close(reason);
         } else {
             c.sendAndClose(new Bye("goodbye"));

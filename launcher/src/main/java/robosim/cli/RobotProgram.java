@@ -1,0 +1,133 @@
+package robosim.cli;
+
+import java.io.PrintWriter;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import robosim.hw.RunEnd;
+import robosim.hw.RunEndWatch;
+
+/**
+ * Runs a robot program's {@code main} and reports how its robots' parts in the run ended, one line
+ * each, with the exit code {@code robosim robot} gives for them. The program's {@code main} runs on
+ * a thread of its own, so that the launcher can end the program once every robot is out of the run
+ * even if {@code main} never returns (a loop that waits for a move the Environment will never
+ * finish): it waits for {@code main} to return, then for robots kept in the run after it
+ * ({@code runAsync}); and once all the program's robots are out of the run by the Environment's
+ * doing, it gives {@code main} {@link #GRACE_MS} to return by itself.
+ */
+final class RobotProgram {
+    /** The exit code when the Environment was lost: it closed the connection, it died or it went silent. */
+    static final int LOST = 3;
+    /** The exit code when the Environment refused or dropped a robot. */
+    static final int REFUSED_OR_DROPPED = 4;
+    /** How long {@code main} may go on once every robot of the program is out of the run, ms. */
+    static final long GRACE_MS = 2_000;
+    private static final long POLL_MS = 50;
+
+    private final Method main;
+    private final String[] args;
+    private final ClassLoader loader;
+    private final String name;
+    private volatile Throwable failure;
+
+    /**
+     * @param main   the program's {@code public static void main(String[])}
+     * @param args   its arguments
+     * @param loader where its classes come from
+     * @param name   the robot's name, for messages
+     */
+    RobotProgram(Method main, String[] args, ClassLoader loader, String name) {
+        this.main = main;
+        this.args = args;
+        this.loader = loader;
+        this.name = name;
+    }
+
+    /**
+     * Runs the program until it and its robots are done, then prints a line for each robot's end
+     * (the run's end or the program's own leave on {@code out}, anything else on {@code err}).
+     *
+     * @return 0 if every robot ran to the end of the run or left it, {@link #LOST},
+     *         {@link #REFUSED_OR_DROPPED}, or 1 if a robot could not connect or {@code main} threw
+     * @throws InterruptedException if interrupted while waiting
+     */
+    int run(PrintWriter out, PrintWriter err) throws InterruptedException {
+        try (RunEndWatch watch = RunEndWatch.open()) {
+            Thread program = new Thread(this::invoke, "robot-program-" + name);
+            program.setContextClassLoader(loader);
+            program.start();
+            awaitProgram(program, watch);
+            while (!watch.awaitNoneRunning(POLL_MS * 20)) {
+                // robots kept in the run after main returned; each ends with the run, or lost
+            }
+            return report(watch.ends(), out, err);
+        }
+    }
+
+    private void invoke() {
+        try {
+            main.invoke(null, (Object) args);
+        } catch (InvocationTargetException e) {
+            failure = e.getCause();
+        } catch (IllegalAccessException | RuntimeException e) {
+            failure = e;
+        }
+    }
+
+    /** Waits until main returns, or until the Environment has ended every robot and main had its grace. */
+    private static void awaitProgram(Thread program, RunEndWatch watch) throws InterruptedException {
+        while (program.isAlive()) {
+            program.join(POLL_MS);
+            if (program.isAlive() && watch.running() == 0 && endedByEnvironment(watch.ends())) {
+                program.join(GRACE_MS);
+                if (watch.running() == 0) {
+                    return;
+                }
+            }
+        }
+    }
+
+    private static boolean endedByEnvironment(List<RunEnd> ends) {
+        return ends.stream().anyMatch(e -> e.kind() != RunEnd.Kind.LEFT && e.kind() != RunEnd.Kind.NOT_CONNECTED);
+    }
+
+    private int report(List<RunEnd> ends, PrintWriter out, PrintWriter err) {
+        Map<String, RunEnd> last = new LinkedHashMap<>();
+        for (RunEnd e : ends) {
+            last.put(e.robot(), e);
+            // a robot that could not connect: its program's connect call said why, and the log too
+            if (e.kind() == RunEnd.Kind.NOT_CONNECTED) {
+                continue;
+            }
+            if (e.kind().isFailure()) {
+                err.println("robosim robot: " + e.describe());
+            } else {
+                out.println(e.describe());
+            }
+        }
+        if (failure != null) {
+            err.println("robosim robot: robot " + name + "'s program failed: " + failure);
+        }
+        out.flush();
+        err.flush();
+        for (RunEnd e : ends) {
+            if (last.get(e.robot()) == e && e.kind().isFailure()) {
+                return exitCode(e.kind());
+            }
+        }
+        return failure != null ? 1 : 0;
+    }
+
+    /** @return the exit code for a robot's part that ended this way */
+    static int exitCode(RunEnd.Kind kind) {
+        return switch (kind) {
+            case RUN_ENDED, LEFT -> 0;
+            case NOT_CONNECTED -> 1;
+            case LOST -> LOST;
+            case REFUSED, DROPPED -> REFUSED_OR_DROPPED;
+        };
+    }
+}

@@ -1,0 +1,42 @@
+package robosim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.env.core.RobotSummary;
+import robosim.env.net.Departure;
+import robosim.env.net.RunReport;
+
+/** The Environment's end summary: a line per robot, which says how each robot's part ended. */
+class RunReportLinesTest {
+    private static RobotSummary at(String name, double x) {
+        return new RobotSummary(name, x, 1000, 90, 1234, 1, false, x, 1000, 90);
+    }
+
+    @Test
+    void eachRobotThatLeftWasDroppedOrWasLostIsMarkedWithTheStepAndTheReason() {
+        RunReport report = new RunReport(40, 4000, "step limit 40 reached",
+                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000), at("r4", 4000)), 0, null, 0,
+                List.of(new Departure("r2", Departure.Kind.LEFT, 2, "the robot's program disconnected"),
+                        new Departure("r3", Departure.Kind.LOST, 2, "the connection closed without a bye"),
+                        new Departure("r4", Departure.Kind.DROPPED, 2,
+                                "it did not send its requests for step 2 within 500 ms")));
+        StringWriter out = new StringWriter();
+
+        EnvCommand.printReport(new PrintWriter(out), report);
+
+        assertEquals(List.of(
+                "Run ended after 40 steps (4.0 s simulated): step limit 40 reached",
+                "robot r1: pose (1000, 1000, 90.0) travelled 1234 mm, collisions 1, ran to the end",
+                "robot r2: pose (2000, 1000, 90.0) travelled 1234 mm, collisions 1, left at step 2: the robot's program"
+                        + " disconnected",
+                "robot r3: pose (3000, 1000, 90.0) travelled 1234 mm, collisions 1, lost at step 2: the connection closed"
+                        + " without a bye",
+                "robot r4: pose (4000, 1000, 90.0) travelled 1234 mm, collisions 1, dropped at step 2: it did not send its"
+                        + " requests for step 2 within 500 ms"),
+                out.toString().lines().toList());
+    }
+}
