@@ -37,7 +37,9 @@ import robosim.protocol.Welcome;
  * {@link LinkRequests} frame out, written by the thread that completes it (the last robot to
  * yield). Each robot keeps its own {@link HardwareSimulator}, request queue and state. When some
  * robots are late, the requests of the others go after {@link #LINGER_MS} in a frame of their own,
- * so that only the late ones miss the Environment's step deadline.
+ * so that only the late ones miss the Environment's step deadline. As on a robot's own connection, a
+ * {@link KeepAlive} is only a sign of life, and an Environment silent for
+ * {@link HardwareOptions#lostAfterMs()} is lost for every robot of the link.
  */
 final class SharedLink {
     private static final Logger LOG = Logger.getLogger(SharedLink.class.getName());

@@ -10,12 +10,14 @@ import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.FrameReader;
@@ -126,6 +128,22 @@ class RobotProgramEndsTest {
                 ServerOptions.loopback().withMaxSteps(20));
              LauncherJvm robot = new LauncherJvm("robot", WANDER, "r1", "127.0.0.1", Integer.toString(h.robotPort()))) {
             assertEquals("step limit 20 reached", h.await().endReason());
+            assertEquals(0, robot.awaitExit(30), robot.output());
+            assertEquals(List.of("robot r1 ran to the end of the run at 127.0.0.1:" + h.robotPort()
+                    + " after step 20: step limit 20 reached"), linesWith(robot, "r1"), robot.output());
+        }
+    }
+
+    @Test
+    void aRobotKeptInTheRunAfterMainReturnsRunsUntilTheRunEnds() throws Exception {
+        try (LocalEnvironment h = new LocalEnvironment(WorldReader.read(oneRobotWorld()), 1,
+                ServerOptions.loopback().withMaxSteps(20));
+             LauncherJvm robot = new LauncherJvm("robot", TaskDriver.class.getName(), "r1", "127.0.0.1",
+                     Integer.toString(h.robotPort()))) {
+            RunReport report = h.await();
+            assertEquals("step limit 20 reached", report.endReason());
+            assertEquals(Optional.empty(), report.departure("r1"), "r1 ran to the end");
+            assertTrue(report.robots().get(0).distance() > 100, "its task drove it: " + report.robots().get(0));
             assertEquals(0, robot.awaitExit(30), robot.output());
             assertEquals(List.of("robot r1 ran to the end of the run at 127.0.0.1:" + h.robotPort()
                     + " after step 20: step limit 20 reached"), linesWith(robot, "r1"), robot.output());
