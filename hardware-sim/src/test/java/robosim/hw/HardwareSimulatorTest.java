@@ -341,13 +341,13 @@ class HardwareSimulatorTest {
 
     @Test
     void keepAlivesKeepAPausedEnvironmentFromBeingDeclaredLost() throws Exception {
-        HardwareSimulator hw = hardware("r1", new HardwareOptions(WAIT_MS, 1_000, WAIT_MS));
+        HardwareSimulator hw = hardware("r1", new HardwareOptions(WAIT_MS, 2_000, WAIT_MS));
         Thread robot = run(hw, this::yieldUntilTheEnd);
         env.acceptHello();
         env.welcome("r1");
         env.step(1);
-        // 2 s without a step, a keep-alive every 200 ms: twice the lost time, never silent for it
-        for (int i = 0; i < 10; i++) {
+        // 3 s without a step, a keep-alive every 200 ms: longer than the lost time, never silent for it
+        for (int i = 0; i < 15; i++) {
             env.send(new KeepAlive(1));
             env.assertSilentFor(200);
         }

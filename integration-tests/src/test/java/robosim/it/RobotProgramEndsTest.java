@@ -108,8 +108,8 @@ class RobotProgramEndsTest {
                 RobotState start = new RobotState(0, 0, 1500, 1500, 45, 0, 0, 0, 0, false, new int[0], 0);
                 out.write(new Welcome("r1", 100, start));
                 out.write(new TimeStep(1, 0, start));
+                long silentSince = System.nanoTime(); // the last the Environment sends
                 assertEquals(1, assertInstanceOf(RobotRequests.class, in.read()).step());
-                long silentSince = System.nanoTime();
 
                 // the Environment says nothing more, and keeps the connection open
                 assertEquals(3, robot.awaitExit(30), robot.output());
