@@ -25,8 +25,9 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = LinkHello.class, name = "linkHello"),
         @JsonSubTypes.Type(value = TimeSteps.class, name = "timeSteps"),
         @JsonSubTypes.Type(value = LinkRequests.class, name = "linkRequests"),
+        @JsonSubTypes.Type(value = ControlHello.class, name = "controlHello"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
-        CommsUpdate, LinkHello, TimeSteps, LinkRequests {
+        CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello {
 }

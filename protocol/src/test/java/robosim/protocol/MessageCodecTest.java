@@ -121,6 +121,19 @@ class MessageCodecTest {
         assertEquals(Messages.linkRequests(), roundTrip(format, Messages.linkRequests()));
     }
 
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void helloesRoundTripTheirSecretAndNeverPrintIt(Format format) throws FrameException {
+        List<Message> hellos = List.of(Messages.robotHello(), Messages.linkHello(), Messages.controlHello(),
+                new ViewerHello("v", Messages.SECRET));
+        for (Message m : hellos) {
+            assertEquals(m, roundTrip(format, m));
+            assertFalse(m.toString().contains(Messages.SECRET), m.toString());
+        }
+        // a hello without a secret has no token on the wire at all
+        assertEquals(new ViewerHello("v"), roundTrip(format, new ViewerHello("v")));
+    }
+
     @Test
     void fixturesHoldOneMessageOfEveryType() {
         Set<Class<?>> covered = Messages.all().stream().map(Object::getClass).collect(Collectors.toSet());
