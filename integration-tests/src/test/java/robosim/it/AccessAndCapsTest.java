@@ -29,6 +29,9 @@ import robosim.env.net.Limits;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.protocol.Bye;
+import robosim.protocol.ControlHello;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldDescription;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RunSecret;
 import robosim.protocol.Welcome;
@@ -85,6 +88,24 @@ class AccessAndCapsTest {
             assertTrue(log.warnings().stream().anyMatch(w -> w.matches(
                     "closing a robot connection from /127\\.0\\.0\\.1:\\d+: it said no hello within 300 ms")),
                     log.warnings().toString());
+        }
+    }
+
+    @Test
+    void anIdleControlClientIsClosedAndAViewerThatReadsIsNot() throws Exception {
+        ServerOptions options = ServerOptions.loopback().withLimits(Limits.defaults().withIdleTimeoutMs(300));
+        try (LogCapture log = new LogCapture("robosim.env.net");
+             LocalEnvironment h = new LocalEnvironment("empty-room.xml", options);
+             RawPeer control = new RawPeer(h.viewerPort());
+             RawPeer viewer = new RawPeer(h.viewerPort())) {
+            control.send(new ControlHello("idle", null));
+            viewer.send(new ViewerHello("watching"));
+            assertInstanceOf(WorldDescription.class, viewer.read());
+
+            assertTrue(control.closedByPeer());
+            assertTrue(log.warnings().contains("closing control client idle: it sent nothing for 300 ms (--idle-timeout)"),
+                    log.warnings().toString());
+            assertTrue(log.warnings().stream().noneMatch(w -> w.contains("watching")), log.warnings().toString());
         }
     }
 
