@@ -41,6 +41,17 @@ class WorldGeometryErrorTest {
     }
 
     @Test
+    void aRobotWhoseParameterFileBreaksAPhysicalBoundIsRefusedNamingTheFile() {
+        fixtures.writeRobot("fast.p", "ConfigVersion 2.0\nSection General settings\nClass Pioneer\nSubclass p3dx\n"
+                + "MaxVelocity 1e300\n");
+        fixtures.fails("fast.xml", """
+                <world name="fast" width="6000" height="6000">
+                  <robot name="r1" type="pioneer" x="1000" y="1000" params="../robots/fast.p"/>
+                </world>
+                """, 2, "robot 'r1': parameter file ../robots/fast.p breaks a bound: 1.0E300 was supplied for maxVelocity");
+    }
+
+    @Test
     void aRobotNameOutsideTheNameRuleIsRefused() {
         fixtures.fails("names.xml", """
                 <world name="names" width="6000" height="6000">
