@@ -79,6 +79,24 @@ class AccessAndCapsTest {
     }
 
     @Test
+    void aViewerWithoutTheSecretIsToldWhyItWasRefused() throws Exception {
+        ServerOptions options = ServerOptions.loopback().withAccess(Access.secret(SECRET));
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
+            StringWriter err = new StringWriter();
+            CommandLine cl = Main.commandLine();
+            cl.setOut(new PrintWriter(new StringWriter()));
+            cl.setErr(new PrintWriter(err, true));
+
+            int code = cl.execute("viewer", "--port", Integer.toString(h.viewerPort()), "--png-dir",
+                    dir.resolve("png").toString());
+
+            assertEquals(1, code);
+            assertTrue(err.toString().contains("sent no world: refused: viewer png:png presented no run secret"),
+                    err.toString());
+        }
+    }
+
+    @Test
     void aConnectionThatSaysNoHelloIsClosedAtTheDeadline() throws Exception {
         ServerOptions options = ServerOptions.loopback().withLimits(Limits.defaults().withHelloDeadlineMs(300));
         try (LogCapture log = new LogCapture("robosim.env.net");
