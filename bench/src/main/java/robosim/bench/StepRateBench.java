@@ -15,6 +15,8 @@ import robosim.env.core.Parallel;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
+import robosim.env.net.Access;
+import robosim.env.net.Limits;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
@@ -158,7 +160,7 @@ public final class StepRateBench {
         Loaded loaded = load(worldFile, Parallel.SERIAL);
         Simulation sim = loaded.sim();
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS,
-                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads);
+                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads, Limits.defaults(), Access.open());
         List<BenchRobots.Share> shares = BenchRobots.split(robots, clients);
         List<Process> started = new CopyOnWriteArrayList<>();
         ClientWatch watch = new ClientWatch(Thread.currentThread());

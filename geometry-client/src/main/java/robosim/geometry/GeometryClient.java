@@ -42,6 +42,13 @@ public final class GeometryClient {
     private static final double MAX_PIECE_ROTATION = Math.toRadians(3);
     /** Largest length of one sweep piece of a turning motion. */
     private static final double MAX_PIECE_LENGTH = 50;
+    /**
+     * Most pieces of one sweep, whatever is asked: a turn of more than 360 degrees is swept once
+     * (its poses repeat), so only a long turning arc reaches this, with pieces then longer than
+     * {@link #MAX_PIECE_LENGTH}.
+     */
+    static final int MAX_PIECES = 4096;
+    private static final double FULL_TURN = 2 * Math.PI;
     /** The contact search stops when the remaining gap of motion is below this, in mm. */
     private static final double CONTACT_TOLERANCE = 0.05;
     /** The side of a cell of the grids, mm: a few robots across. */
@@ -181,16 +188,15 @@ public final class GeometryClient {
     public SweepResult sweep(int id, double distance, double rotation) {
         Bodies.Body body = bodies.get(id);
         Pose2D start = body.pose;
-        int pieces = 1;
-        if (Math.abs(rotation) > 1e-12) {
-            pieces = (int) Math.max(Math.ceil(Math.abs(rotation) / MAX_PIECE_ROTATION),
-                    Math.ceil(Math.abs(distance) / MAX_PIECE_LENGTH));
-        }
+        // after each full turn of an arc the body is back where it started: the first turn holds
+        // every place it reaches, so the work is bounded by geometry, not by the speed asked
+        double part = Math.abs(rotation) > FULL_TURN ? FULL_TURN / Math.abs(rotation) : 1;
+        int pieces = pieces(distance * part, rotation * part);
         double travel = Math.abs(distance) + Math.abs(rotation) * body.shape.radius();
         double from = 0;
         Pose2D fromPose = start;
         for (int i = 1; i <= pieces; i++) {
-            double to = (double) i / pieces;
+            double to = part * i / pieces;
             Pose2D toPose = start.advance(distance * to, rotation * to);
             if (sweptHits(body.shape, fromPose, toPose, id)) {
                 return contact(body.shape, id, start, distance, rotation, from, to, travel);
@@ -198,7 +204,25 @@ public final class GeometryClient {
             from = to;
             fromPose = toPose;
         }
-        return new SweepResult(1, fromPose, false);
+        return new SweepResult(1, part < 1 ? start.advance(distance, rotation) : fromPose, false);
+    }
+
+    /**
+     * The pieces a sweep cuts a motion into: one for a straight line (the hull of the two ends is
+     * exact), else enough that no piece turns more than 3 degrees or runs more than
+     * {@value #MAX_PIECE_LENGTH} mm, at most {@value #MAX_PIECES}.
+     *
+     * @param distance arc length in mm
+     * @param rotation heading change in radians, at most a full turn
+     * @return the number of pieces, 1 to {@value #MAX_PIECES}
+     */
+    static int pieces(double distance, double rotation) {
+        if (!(Math.abs(rotation) > 1e-12)) {
+            return 1;
+        }
+        double wanted = Math.max(Math.ceil(Math.abs(rotation) / MAX_PIECE_ROTATION),
+                Math.ceil(Math.abs(distance) / MAX_PIECE_LENGTH));
+        return (int) Math.min(MAX_PIECES, Math.max(1, wanted));
     }
 
     private SweepResult contact(BodyShape shape, int id, Pose2D start, double distance, double rotation,

@@ -252,4 +252,37 @@ class GeometryClientSweepTest {
 
         assertFalse(r.blocked());
     }
+
+    @Test
+    void anAbsurdSpinIsSweptAsOneTurnAndEndsWhereTheArcSays() {
+        // 10^12 radians would once have been cut into 2^31 pieces; the poses repeat every turn
+        GeometryClient world = new GeometryClient(List.of(box(600, -1000, 700, 1000)));
+        int id = world.addBody(P3DX, new Pose2D(0, 0, 0));
+
+        SweepResult r = world.sweep(id, 0, 1e12);
+
+        assertFalse(r.blocked());
+        assertEquals(new Pose2D(0, 0, 0).advance(0, 1e12), r.pose());
+    }
+
+    @Test
+    void anAbsurdSpinIntoAWallStopsAtTheSameContactAsAQuarterTurn() {
+        Polygon wall = box(260, -1000, 400, 1000);
+        GeometryClient world = new GeometryClient(List.of(wall));
+        int id = world.addBody(P3DX, new Pose2D(0, 0, 0));
+
+        SweepResult spin = world.sweep(id, 0, 1e12);
+        SweepResult quarter = world.sweep(id, 0, Math.PI / 2);
+
+        assertEquals(quarter.pose().th(), spin.pose().th(), 2e-4);
+        assertInContact(world, id, spin, wall);
+    }
+
+    @Test
+    void theWorkOfASweepIsBoundedWhateverIsAsked() {
+        assertEquals(1, GeometryClient.pieces(1e300, 0));
+        assertEquals(120, GeometryClient.pieces(0, 2 * Math.PI));
+        assertEquals(GeometryClient.MAX_PIECES, GeometryClient.pieces(1e300, 2 * Math.PI));
+        assertEquals(1, GeometryClient.pieces(Double.NaN, Double.NaN));
+    }
 }

@@ -8,6 +8,7 @@ import java.util.logging.Logger;
 import robosim.protocol.Command;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RunSecret;
 import robosim.protocol.RobotState;
 import robosim.protocol.Welcome;
 import robosim.protocol.RobotParameters;
@@ -87,7 +88,8 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
-        HardwareSimulator hw = new HardwareSimulator(new RobotHello(name, robotType, parameters), this::responded,
+        HardwareSimulator hw = new HardwareSimulator(
+                new RobotHello(name, robotType, parameters, RunSecret.find(null, port)), this::responded,
                 options);
         // the hardware may deliver the first step before connect returns; it waits for the first yield
         hardware = hw;

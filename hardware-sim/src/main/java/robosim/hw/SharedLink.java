@@ -26,6 +26,7 @@ import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RunSecret;
 import robosim.protocol.TimeSteps;
 import robosim.protocol.Welcome;
 
@@ -96,7 +97,7 @@ final class SharedLink {
             socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid()));
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), RunSecret.find(null, port)));
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;

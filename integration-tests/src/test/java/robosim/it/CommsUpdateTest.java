@@ -11,7 +11,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import picocli.CommandLine;
 import robosim.comms.CommsSettings;
+import robosim.env.net.Access;
 import robosim.env.net.ServerOptions;
+import robosim.protocol.RunSecret;
 
 /** The comms settings change while the Environment runs (it is waiting for its robots here). */
 @Timeout(value = 1, unit = TimeUnit.MINUTES)
@@ -35,6 +37,31 @@ class CommsUpdateTest {
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
             assertEquals(1, run("comms", "--port", Integer.toString(h.server.viewerPort()), "--loss", "1.5"));
             assertEquals(CommsSettings.DEFAULT, h.sim.commsSettings());
+        }
+    }
+
+    @Test
+    void withoutTheRunSecretTheSettingsCannotBeChanged() throws Exception {
+        String secret = RunSecret.create();
+        ServerOptions options = ServerOptions.loopback().withMaxSteps(1).withAccess(Access.secret(secret));
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
+            String port = Integer.toString(h.server.viewerPort());
+            StringWriter err = new StringWriter();
+            CommandLine cl = Main.commandLine();
+            cl.setOut(new PrintWriter(new StringWriter()));
+            cl.setErr(new PrintWriter(err, true));
+
+            assertEquals(1, cl.execute("comms", "--port", port, "--loss", "1"));
+            assertTrue(err.toString().startsWith("robosim comms: the Environment refused: control client comms"
+                    + " presented no run secret"), err.toString());
+            assertEquals(CommsSettings.DEFAULT, h.sim.commsSettings());
+
+            try {
+                assertEquals(0, run("comms", "--port", port, "--token", secret, "--latency", "2"));
+                assertEquals(2, h.sim.commsSettings().latencySteps());
+            } finally {
+                System.clearProperty(RunSecret.PROPERTY);
+            }
         }
     }
 

@@ -14,7 +14,9 @@ import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.ViewerHello;
+import robosim.protocol.Bye;
+import robosim.protocol.ControlHello;
+import robosim.protocol.RunSecret;
 
 /** {@code robosim comms}: changes a running Environment's communication settings. */
 @Command(name = "comms", mixinStandardHelpOptions = true,
@@ -25,6 +27,9 @@ final class CommsCommand implements Callable<Integer> {
 
     @Mixin
     ViewerPortOptions at;
+
+    @Mixin
+    SecretOption secret;
 
     @Option(names = "--range", paramLabel = "MM", description = "the farthest a message reaches (0: no limit)")
     Double range;
@@ -47,12 +52,23 @@ final class CommsCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim comms: give at least one setting to change (see --help)");
             return 2;
         }
+        String token;
+        try {
+            String bad = secret.apply();
+            if (bad != null) {
+                throw new IllegalArgumentException(bad);
+            }
+            token = RunSecret.find(null, at.port);
+        } catch (IllegalArgumentException e) {
+            spec.commandLine().getErr().println("robosim comms: " + e.getMessage());
+            return 2;
+        }
         try (Socket s = new Socket()) {
             s.connect(new InetSocketAddress(at.host, at.port), 10_000);
             s.setSoTimeout(10_000);
             MessageCodec codec = new MessageCodec();
             FrameWriter w = new FrameWriter(s.getOutputStream(), codec);
-            w.write(new ViewerHello("comms-control"));
+            w.write(new ControlHello("comms", token));
             w.write(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
             FrameReader r = new FrameReader(s.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
             Message m;
@@ -63,8 +79,13 @@ final class CommsCommand implements Callable<Integer> {
                             now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());
                     return 0;
                 }
+                if (m instanceof Bye bye) {
+                    spec.commandLine().getErr().println("robosim comms: the Environment " + bye.reason());
+                    return 1;
+                }
             }
-            spec.commandLine().getErr().println("robosim comms: the Environment refused the settings (its log says why)");
+            spec.commandLine().getErr().println("robosim comms: the Environment closed the connection without an answer"
+                    + " (its log says why)");
             return 1;
         } catch (IOException e) {
             spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + at.host + ":" + at.port

@@ -3,6 +3,7 @@ package robosim.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -61,6 +62,9 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     RecordOptions recording;
 
+    @Mixin
+    AccessOptions access;
+
     @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
@@ -83,19 +87,42 @@ final class EnvCommand implements Callable<Integer> {
         try {
             checkFlags();
             options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
-                    connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME, threads());
+                    connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME, threads(), access.limits(),
+                    access.access());
         } catch (IllegalArgumentException e) {
             err.println("robosim env: " + e.getMessage());
             return 2;
         }
         Simulation sim = new Simulation(w, seed);
-        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
+        EnvironmentServer made;
+        try {
+            made = new EnvironmentServer(sim, options);
+        } catch (IllegalArgumentException e) {
+            err.println("robosim env: " + e.getMessage());
+            return 1;
+        }
+        List<Path> secretFiles = List.of();
+        String secret = options.access().secret();
+        try (EnvironmentServer server = made) {
             try {
                 server.bind();
+            } catch (IllegalStateException e) {
+                err.println("robosim env: " + e.getMessage() + " (leave out --no-token)");
+                return 2;
             } catch (IOException e) {
                 err.println("robosim env: cannot listen on " + bind + " ports " + port + " and " + viewerPort + ": "
                         + e.getMessage());
                 return 1;
+            }
+            if (secret != null) {
+                try {
+                    secretFiles = access.publish(secret, out, server.robotPort(), server.viewerPort());
+                } catch (IOException e) {
+                    err.println("robosim env: cannot write the run secret: " + e.getMessage());
+                    return 1;
+                }
+            } else {
+                out.println("Run secret: none (--no-token): anyone on this machine may join, watch and change the run");
             }
             RecordingWriter recorder = null;
             if (recording.requested()) {
@@ -121,6 +148,8 @@ final class EnvCommand implements Callable<Integer> {
             if (recorder != null) {
                 return recording.report(out, err, "env", recorder);
             }
+        } finally {
+            AccessOptions.unpublish(secretFiles, secret);
         }
         return 0;
     }

@@ -17,10 +17,12 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
+import robosim.env.net.Access;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
+import robosim.protocol.RunSecret;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
@@ -85,7 +87,25 @@ final class GoldfinderCommand implements Callable<Integer> {
         Path frames = out.resolve("frames");
         Files.createDirectories(frames);
         Simulation sim = new Simulation(w, seed);
-        ServerOptions options = ServerOptions.loopback().withMaxSteps(maxSteps).withWaitViewers(noFrames ? 0 : 1);
+        // the run's own secret: the team and the viewer present it, nobody else can join or watch
+        String secret = RunSecret.create();
+        ServerOptions options = ServerOptions.loopback().withMaxSteps(maxSteps).withWaitViewers(noFrames ? 0 : 1)
+                .withAccess(Access.secret(secret));
+        String before = System.getProperty(RunSecret.PROPERTY);
+        System.setProperty(RunSecret.PROPERTY, secret);
+        try {
+            return run(o, w, sim, frames, options, secret);
+        } finally {
+            if (before == null) {
+                System.clearProperty(RunSecret.PROPERTY);
+            } else {
+                System.setProperty(RunSecret.PROPERTY, before);
+            }
+        }
+    }
+
+    private int run(PrintWriter o, World w, Simulation sim, Path frames, ServerOptions options, String secret)
+            throws Exception {
         o.printf(Locale.ROOT, "Seed: %d%nGoldFinder: world %s, %d robots%s, gold at (%.0f, %.0f)%n", seed, w.name(),
                 robots, separateJvms ? " in separate JVMs" : " as threads", w.gold().x(), w.gold().y());
         o.flush();
@@ -105,7 +125,7 @@ final class GoldfinderCommand implements Callable<Integer> {
                 if (separateJvms) {
                     for (int k = 1; k <= robots; k++) {
                         processes.add(RobotProcesses.start("robosim.examples.goldfinder.Gold", "r" + k,
-                                server.robotPort(), out.resolve("r" + k + ".log"),
+                                server.robotPort(), secret, out.resolve("r" + k + ".log"),
                                 Double.toString(cellSize), Long.toString(seed)));
                     }
                 } else {

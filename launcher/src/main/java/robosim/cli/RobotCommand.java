@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -49,6 +50,9 @@ final class RobotCommand implements Callable<Integer> {
     @Parameters(index = "4..*", paramLabel = "ARGS", description = "more arguments for the program")
     List<String> rest = new ArrayList<>();
 
+    @Mixin
+    SecretOption secret;
+
     @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH",
             description = "where the program's classes are, besides RoboSim's (directories or jars, ':'-separated)")
     String classpath;
@@ -63,6 +67,11 @@ final class RobotCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         if (port <= 0 || port > 65535) {
             spec.commandLine().getErr().println("robosim robot: " + port + " was supplied for PORT: a port is 1 to 65535");
+            return 2;
+        }
+        String bad = secret.apply();
+        if (bad != null) {
+            spec.commandLine().getErr().println("robosim robot: " + bad);
             return 2;
         }
         if (lostAfterMs != null && (lostAfterMs < 1 || lostAfterMs > Integer.MAX_VALUE)) {

@@ -39,6 +39,9 @@ final class ViewerCommand implements Callable<Integer> {
     @Mixin
     ViewerPortOptions at;
 
+    @Mixin
+    SecretOption secret;
+
     @Option(names = "--png-dir", paramLabel = "DIR", description = "where to write frame-NNNNNN.png")
     Path pngDir;
 
@@ -66,6 +69,10 @@ final class ViewerCommand implements Callable<Integer> {
         ViewerOptions options;
         try {
             drawing.validate();
+            String bad = secret.apply();
+            if (bad != null) {
+                throw new IllegalArgumentException(bad);
+            }
             RenderedImages.requireEvery(every);
             options = ViewerOptions.of(at.host, at.port).withName(name())
                     .withReadTimeout(Duration.ofMinutes(10));

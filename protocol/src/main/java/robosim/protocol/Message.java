@@ -25,9 +25,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = LinkHello.class, name = "linkHello"),
         @JsonSubTypes.Type(value = TimeSteps.class, name = "timeSteps"),
         @JsonSubTypes.Type(value = LinkRequests.class, name = "linkRequests"),
+        @JsonSubTypes.Type(value = ControlHello.class, name = "controlHello"),
         @JsonSubTypes.Type(value = KeepAlive.class, name = "keepAlive"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
-        CommsUpdate, LinkHello, TimeSteps, LinkRequests, KeepAlive {
+        CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello, KeepAlive {
 }

@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.regex.Pattern;
 
 /**
@@ -8,8 +9,29 @@ import java.util.regex.Pattern;
  * @param name       the robot's name, as the world file declares it
  * @param robotType  the robot's type, for example {@code pioneer}
  * @param parameters the robot's own parameters, which the Environment simulates
+ * @param token      the run secret (see {@link RunSecret}), or null when the run has none or the
+ *                   robot says hello on a shared link that presented it
  */
-public record RobotHello(String name, String robotType, RobotParameters parameters) implements Message {
+public record RobotHello(String name, String robotType, RobotParameters parameters,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) String token) implements Message {
+    /**
+     * A hello that presents no secret.
+     *
+     * @param name       the robot's name, as the world file declares it
+     * @param robotType  the robot's type, for example {@code pioneer}
+     * @param parameters the robot's own parameters, which the Environment simulates
+     */
+    public RobotHello(String name, String robotType, RobotParameters parameters) {
+        this(name, robotType, parameters, null);
+    }
+
+    /** @return the hello with the secret masked */
+    @Override
+    public String toString() {
+        return "RobotHello[name=" + printable(name) + ", robotType=" + robotType + ", parameters=" + parameters
+                + ", token=" + RunSecret.masked(token) + "]";
+    }
+
     /** What a robot's name may be, in a world file and on the wire: 1 to 64 letters, digits, '_', '-' or '.'. */
     public static final Pattern NAME = Pattern.compile("[A-Za-z0-9_.-]{1,64}");
     /** The rule of {@link #NAME}, in words. */

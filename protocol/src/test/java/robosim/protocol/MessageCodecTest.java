@@ -123,6 +123,19 @@ class MessageCodecTest {
 
     @ParameterizedTest
     @EnumSource(Format.class)
+    void helloesRoundTripTheirSecretAndNeverPrintIt(Format format) throws FrameException {
+        List<Message> hellos = List.of(Messages.robotHello(), Messages.linkHello(), Messages.controlHello(),
+                new ViewerHello("v", Messages.SECRET));
+        for (Message m : hellos) {
+            assertEquals(m, roundTrip(format, m));
+            assertFalse(m.toString().contains(Messages.SECRET), m.toString());
+        }
+        // a hello without a secret has no token on the wire at all
+        assertEquals(new ViewerHello("v"), roundTrip(format, new ViewerHello("v")));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
     void keepAliveRoundTripsWithItsStep(Format format) throws FrameException {
         assertEquals(new KeepAlive(42), roundTrip(format, Messages.keepAlive()));
     }

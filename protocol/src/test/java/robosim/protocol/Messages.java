@@ -41,8 +41,11 @@ final class Messages {
                 List.of("message 3 is addressed to 'nobody', but there is no robot of that name"), 0b100001);
     }
 
+    /** A run secret, as {@link RunSecret#create} makes them. */
+    static final String SECRET = "q3Zt0m9B1x-F_kLr8cVwYh2NsPe4JdUa6GiOoT5bXyE";
+
     static RobotHello robotHello() {
-        return new RobotHello("robot1", "pioneer", p3dx());
+        return new RobotHello("robot1", "pioneer", p3dx(), SECRET);
     }
 
     static Welcome welcome() {
@@ -109,7 +112,11 @@ final class Messages {
     }
 
     static LinkHello linkHello() {
-        return new LinkHello("client-7");
+        return new LinkHello("client-7", SECRET);
+    }
+
+    static ControlHello controlHello() {
+        return new ControlHello("comms", SECRET);
     }
 
     /** Two robots' states, the second without sonar. */
@@ -131,6 +138,7 @@ final class Messages {
 
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
-                snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), keepAlive());
+                snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), controlHello(),
+                keepAlive());
     }
 }

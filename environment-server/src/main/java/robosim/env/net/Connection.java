@@ -44,6 +44,10 @@ final class Connection {
     private final Set<String> robots = new LinkedHashSet<>();
     private boolean closed;
     private boolean closeWhenFlushed;
+    private boolean control;
+    private final long acceptedNanos = System.nanoTime();
+    private long lastReadNanos = acceptedNanos;
+    private long lastWriteNanos = acceptedNanos;
 
     Connection(Kind kind, SocketChannel channel, Selector selector, MessageCodec codec, int maxFrame,
                long maxQueuedBytes) throws IOException {
@@ -63,7 +67,7 @@ final class Connection {
         if (link) {
             return "link of " + name + " at " + address;
         }
-        String k = kind.name().toLowerCase();
+        String k = control ? "control client" : kind.name().toLowerCase();
         return name != null ? k + " " + name : k + " at " + address;
     }
 
@@ -118,6 +122,49 @@ final class Connection {
         this.name = name;
     }
 
+    /** Makes this viewer-port connection a control client, which may change the run. */
+    void becomeControl() {
+        control = true;
+    }
+
+    /** @return whether this is a control client */
+    boolean isControl() {
+        return control;
+    }
+
+    /** @return whether the peer has said a hello that was accepted: it has a name, or is a link */
+    boolean greeted() {
+        return name != null;
+    }
+
+    /** @return when the connection was accepted, {@link System#nanoTime()} */
+    long acceptedNanos() {
+        return acceptedNanos;
+    }
+
+    /** @return when a frame's bytes last arrived from the peer, {@link System#nanoTime()} */
+    long lastReadNanos() {
+        return lastReadNanos;
+    }
+
+    /**
+     * @return when the peer last took some of what is queued for it, or since when nothing has been
+     *         queued, {@link System#nanoTime()}
+     */
+    long lastWriteNanos() {
+        return lastWriteNanos;
+    }
+
+    /** @return bytes queued for the peer and not yet written */
+    long queuedBytes() {
+        return queuedBytes;
+    }
+
+    /** @return the peer's address */
+    String address() {
+        return address;
+    }
+
     String name() {
         return name;
     }
@@ -143,6 +190,9 @@ final class Connection {
             }
             return null;
         }
+        if (n > 0) {
+            lastReadNanos = System.nanoTime();
+        }
         buffer.flip();
         return decoder.decode(buffer);
     }
@@ -162,6 +212,9 @@ final class Connection {
     void sendFrame(ByteBuffer frame) {
         if (closed || closeWhenFlushed) {
             return;
+        }
+        if (outgoing.isEmpty()) {
+            lastWriteNanos = System.nanoTime();
         }
         queuedBytes += frame.remaining();
         outgoing.add(frame);
@@ -195,6 +248,9 @@ final class Connection {
             ByteBuffer b = outgoing.peek();
             int n = channel.write(b);
             queuedBytes -= n;
+            if (n > 0) {
+                lastWriteNanos = System.nanoTime();
+            }
             if (b.hasRemaining()) {
                 key.interestOps(SelectionKey.OP_READ | SelectionKey.OP_WRITE);
                 return;

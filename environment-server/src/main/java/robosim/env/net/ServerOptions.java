@@ -16,9 +16,12 @@ import robosim.protocol.FrameReader;
  * @param maxFrame         largest frame accepted, bytes
  * @param threads          threads that read the robots' sensors each step, at least 1 (1: all on the
  *                         step loop's thread); the run is the same with any number
+ * @param limits           the caps on connections and queues
+ * @param access           who may use the ports: the run secret, whether viewers need it
  */
 public record ServerOptions(String bindAddress, int robotPort, int viewerPort, long maxSteps, boolean realtime,
-                            long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame, int threads) {
+                            long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame, int threads,
+                            Limits limits, Access access) {
 
     /** Checks every value; a bad one is named with the rule it breaks. */
     public ServerOptions {
@@ -30,10 +33,14 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
         requireAtLeast("waitViewers", waitViewers, 0);
         requireAtLeast("maxFrame", maxFrame, 64);
         requireAtLeast("threads", threads, 1);
+        if (limits == null || access == null) {
+            throw new IllegalArgumentException("limits and access must be given (Limits.defaults(), Access.open())");
+        }
     }
 
     /**
-     * Options with as many threads as the machine has processors ({@link #defaultThreads()}).
+     * Options with as many threads as the machine has processors ({@link #defaultThreads()}), the
+     * default {@link Limits} and no run secret ({@link Access#open()}).
      *
      * @param bindAddress      address to listen on, normally 127.0.0.1
      * @param robotPort        port for robots, 0 for any free one
@@ -48,7 +55,7 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
     public ServerOptions(String bindAddress, int robotPort, int viewerPort, long maxSteps, boolean realtime,
                          long stepTimeoutMs, long connectTimeoutMs, int waitViewers, int maxFrame) {
         this(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs, connectTimeoutMs, waitViewers,
-                maxFrame, defaultThreads());
+                maxFrame, defaultThreads(), Limits.defaults(), Access.open());
     }
 
     /** @return the threads a server uses unless told otherwise: the processors the JVM may use */
@@ -68,19 +75,31 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
     /** @param steps the step limit @return a copy with it */
     public ServerOptions withMaxSteps(long steps) {
         return new ServerOptions(bindAddress, robotPort, viewerPort, steps, realtime, stepTimeoutMs,
-                connectTimeoutMs, waitViewers, maxFrame, threads);
+                connectTimeoutMs, waitViewers, maxFrame, threads, limits, access);
     }
 
     /** @param viewers viewers to wait for @return a copy with it */
     public ServerOptions withWaitViewers(int viewers) {
         return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
-                connectTimeoutMs, viewers, maxFrame, threads);
+                connectTimeoutMs, viewers, maxFrame, threads, limits, access);
     }
 
     /** @param count threads that read the sensors @return a copy with it */
     public ServerOptions withThreads(int count) {
         return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
-                connectTimeoutMs, waitViewers, maxFrame, count);
+                connectTimeoutMs, waitViewers, maxFrame, count, limits, access);
+    }
+
+    /** @param caps the caps on connections and queues @return a copy with them */
+    public ServerOptions withLimits(Limits caps) {
+        return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
+                connectTimeoutMs, waitViewers, maxFrame, threads, caps, access);
+    }
+
+    /** @param rules who may use the ports @return a copy with them */
+    public ServerOptions withAccess(Access rules) {
+        return new ServerOptions(bindAddress, robotPort, viewerPort, maxSteps, realtime, stepTimeoutMs,
+                connectTimeoutMs, waitViewers, maxFrame, threads, limits, rules);
     }
 
     /**
@@ -110,6 +129,21 @@ public record ServerOptions(String bindAddress, int robotPort, int viewerPort, l
     public static void requireAtLeast(String name, long value, long min) {
         if (value < min) {
             throw new IllegalArgumentException(value + " was supplied for " + name + ": it must be at least " + min);
+        }
+    }
+
+    /**
+     * The rule for a value with an upper bound, shared with command lines so that an error names the
+     * flag the user typed.
+     *
+     * @param name  what the value was supplied for: a parameter or a flag
+     * @param value the value
+     * @param max   the greatest value allowed
+     * @throws IllegalArgumentException naming the value, the name and the rule, if it is above {@code max}
+     */
+    public static void requireAtMost(String name, long value, long max) {
+        if (value > max) {
+            throw new IllegalArgumentException(value + " was supplied for " + name + ": it must be at most " + max);
         }
     }
 }

@@ -18,6 +18,8 @@ import robosim.protocol.FrameException;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.CommsUpdate;
+import robosim.protocol.ControlHello;
+import robosim.protocol.RunSecret;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
@@ -33,7 +35,9 @@ import robosim.protocol.Welcome;
  * step; then sends exactly one set of requests for each step the Environment opens. A shared link
  * (a connection that said {@link LinkHello}) follows the same rules for each of its robots, and a
  * robot that breaks one is dropped alone while the link goes on. A viewer says hello and then only
- * listens. Anything else closes that peer, with a log line naming it and the rule.
+ * listens; a control client says hello and may then change the run. When the run has a secret
+ * ({@link Access}), every hello must present it, except a viewer's when anyone may watch. Anything
+ * else closes that peer, with a log line naming it and the rule.
  */
 final class SessionRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
@@ -43,15 +47,25 @@ final class SessionRules {
     static final String NO_BYE = "the connection closed without a bye";
 
     private final Simulation sim;
+    private final Access access;
+    private final Limits limits;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final List<Connection> viewers = new ArrayList<>();
+    private final List<Connection> controls = new ArrayList<>();
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
     private long openStep;
     private Map<String, List<Command>> commands;
 
+    /** Rules without a run secret, with the default caps. */
     SessionRules(Simulation sim) {
+        this(sim, Access.open(), Limits.defaults());
+    }
+
+    SessionRules(Simulation sim, Access access, Limits limits) {
         this.sim = sim;
+        this.access = access;
+        this.limits = limits;
     }
 
     boolean allConnected() {
@@ -128,8 +142,35 @@ final class SessionRules {
             return;
         }
         ByteBuffer encoded = FrameWriter.frame(codec, snapshot);
+        makeRoomForViewers(encoded.remaining());
         for (Connection v : viewers) {
             v.sendFrame(encoded.duplicate());
+        }
+    }
+
+    /**
+     * Drops the viewer furthest behind, named, until all viewers' queues together, with a frame of
+     * the given size more for each, fit the budget (a frame queued for several viewers counts once
+     * for each).
+     */
+    private void makeRoomForViewers(int frameBytes) {
+        while (!viewers.isEmpty()) {
+            long total = 0;
+            Connection slowest = viewers.get(0);
+            for (Connection v : viewers) {
+                total += v.queuedBytes();
+                if (v.queuedBytes() > slowest.queuedBytes()) {
+                    slowest = v;
+                }
+            }
+            long after = total + (long) frameBytes * viewers.size();
+            if (after <= limits.viewerBudget()) {
+                return;
+            }
+            slowest.close("it is the viewer furthest behind (" + slowest.queuedBytes() + " bytes queued) and the"
+                    + " viewers' queues together would hold " + after + " bytes, over the budget of "
+                    + limits.viewerBudget() + " (--viewer-budget)");
+            viewers.remove(slowest);
         }
     }
 
@@ -142,6 +183,28 @@ final class SessionRules {
         }
     }
 
+    /**
+     * What a hello's secret says, when the run has one.
+     *
+     * @param who       the peer, for the reason
+     * @param presented the secret it presented, or null
+     * @return why it is refused, or null if it may go on
+     */
+    private String secretRefusal(String who, String presented) {
+        if (!access.guarded() || RunSecret.matches(access.secret(), presented)) {
+            return null;
+        }
+        return who + (presented == null ? " presented no run secret" : " presented a wrong run secret")
+                + "; this Environment admits only those who present the secret it printed at its start (a --token"
+                + " option, the " + RunSecret.ENV + " variable, or the file it wrote)";
+    }
+
+    /** Refuses a peer that has not been admitted: a Bye with the reason, a log line, and the connection closes. */
+    private static void refuse(Connection c, String reason) {
+        LOG.warning(() -> "refusing " + c.peer() + ": " + reason);
+        c.sendAndClose(new Bye("refused: " + reason));
+    }
+
     private void fromRobot(Connection c, Message m) {
         if (c.isClosed()) {
             return;
@@ -152,7 +215,12 @@ final class SessionRules {
             if (m instanceof RobotHello hello) {
                 hello(c, hello);
             } else if (m instanceof LinkHello hello) {
-                c.becomeLink(hello.client());
+                String refusal = secretRefusal("a shared link", hello.token());
+                if (refusal != null) {
+                    refuse(c, refusal);
+                    return;
+                }
+                c.becomeLink(RobotHello.printable(hello.client()));
                 LOG.fine(() -> "a shared link opened: " + c.peer());
             } else {
                 c.close("expected robotHello or linkHello as its first message, got " + typeOf(m));
@@ -207,7 +275,7 @@ final class SessionRules {
     }
 
     private void hello(Connection c, RobotHello hello) {
-        String refusal = refusal(hello);
+        String refusal = refusal(c, hello);
         if (refusal == null) {
             try {
                 sim.useParameters(hello.name(), hello.parameters());
@@ -235,7 +303,12 @@ final class SessionRules {
         LOG.info(() -> "robot " + hello.name() + " connected" + (c.isLink() ? " on a shared link (" + c.peer() + ")" : ""));
     }
 
-    private String refusal(RobotHello hello) {
+    private String refusal(Connection c, RobotHello hello) {
+        // a link presented the secret when it opened
+        String secret = c.isLink() ? null : secretRefusal("robot " + RobotHello.printable(hello.name()), hello.token());
+        if (secret != null) {
+            return secret;
+        }
         if (!RobotHello.validName(hello.name())) {
             return RobotHello.NAME_RULE + "; " + RobotHello.quoted(hello.name()) + " is not";
         }
@@ -298,18 +371,64 @@ final class SessionRules {
         if (c.isClosed()) {
             return;
         }
-        if (c.name() == null && m instanceof ViewerHello hello) {
-            // a hello without a name still counts: the next one is a second hello
-            c.setName(hello.name() != null ? hello.name() : "(unnamed)");
-            viewers.add(c);
-            c.send(sim.description());
-            c.send(sim.snapshot());
-            LOG.info(() -> "viewer " + hello.name() + " attached at step " + sim.stepCount());
-        } else if (c.name() != null && m instanceof CommsUpdate u) {
+        if (!c.greeted() && m instanceof ViewerHello hello) {
+            viewerHello(c, hello);
+        } else if (!c.greeted() && m instanceof ControlHello hello) {
+            controlHello(c, hello);
+        } else if (c.isControl() && m instanceof CommsUpdate u) {
             commsUpdate(c, u);
+        } else if (c.greeted() && !c.isControl() && m instanceof CommsUpdate) {
+            c.sendAndClose(new Bye("refused: a viewer cannot change the run; a control client that presents the"
+                    + " run secret can (robosim comms)"));
+            LOG.warning(() -> "closing " + c.peer() + ": it sent commsUpdate; a viewer cannot change the run");
+        } else if (c.isControl()) {
+            c.close("sent " + typeOf(m) + "; a control client sends controlHello once, then only commsUpdate");
+        } else if (!c.greeted()) {
+            c.close("sent " + typeOf(m) + "; the viewer port's first message is viewerHello or controlHello");
         } else {
-            c.close("sent " + typeOf(m) + "; a viewer sends viewerHello once, then only commsUpdate");
+            c.close("sent " + typeOf(m) + "; a viewer sends viewerHello once and then nothing");
         }
+    }
+
+    private void viewerHello(Connection c, ViewerHello hello) {
+        String name = hello.name() != null ? RobotHello.printable(hello.name()) : "(unnamed)";
+        String refusal = access.publicView() ? null : secretRefusal("viewer " + name, hello.token());
+        if (refusal == null) {
+            viewers.removeIf(Connection::isClosed);
+            if (viewers.size() >= limits.maxViewers()) {
+                refusal = viewers.size() + " viewers are attached, the most this Environment allows (--max-viewers)";
+            }
+        }
+        if (refusal != null) {
+            refuse(c, refusal);
+            return;
+        }
+        // a hello without a name still counts: the next one is a second hello
+        c.setName(name);
+        viewers.add(c);
+        c.send(sim.description());
+        c.send(sim.snapshot());
+        LOG.info(() -> "viewer " + name + " attached at step " + sim.stepCount());
+    }
+
+    private void controlHello(Connection c, ControlHello hello) {
+        String name = hello.name() != null ? RobotHello.printable(hello.name()) : "(unnamed)";
+        String refusal = secretRefusal("control client " + name, hello.token());
+        if (refusal == null) {
+            controls.removeIf(Connection::isClosed);
+            if (controls.size() >= limits.maxControls()) {
+                refusal = controls.size() + " control clients are attached, the most this Environment allows"
+                        + " (--max-controls)";
+            }
+        }
+        if (refusal != null) {
+            refuse(c, refusal);
+            return;
+        }
+        c.setName(name);
+        c.becomeControl();
+        controls.add(c);
+        LOG.info(() -> "control client " + name + " attached at step " + sim.stepCount());
     }
 
     private void commsUpdate(Connection c, CommsUpdate u) {
@@ -326,7 +445,8 @@ final class SessionRules {
             c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
                     next.maxMessageBytes()));
         } catch (IllegalArgumentException e) {
-            c.close("sent comms settings that break a rule: " + e.getMessage());
+            LOG.warning(() -> "closing " + c.peer() + ": it sent comms settings that break a rule: " + e.getMessage());
+            c.sendAndClose(new Bye("refused: the comms settings break a rule: " + e.getMessage()));
         }
     }
 
@@ -353,6 +473,7 @@ final class SessionRules {
         }
         if (c.kind == Connection.Kind.VIEWER) {
             viewers.remove(c);
+            controls.remove(c);
             if (!DISCONNECTED.equals(reason)) {
                 c.close(reason);
             }

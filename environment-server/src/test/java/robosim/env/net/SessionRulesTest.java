@@ -26,6 +26,8 @@ import robosim.env.core.Simulation;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
+import robosim.protocol.CommsUpdate;
+import robosim.protocol.ControlHello;
 import robosim.protocol.InvalidValueException;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
@@ -379,7 +381,7 @@ class SessionRulesTest {
     }
 
     @Test
-    void aViewerThatSendsAnythingButCommsUpdatesIsClosed() throws IOException {
+    void aViewerThatSendsAnythingAfterItsHelloIsClosed() throws IOException {
         Peer viewer = loopback.connect(Connection.Kind.VIEWER);
         viewer.send(new ViewerHello("v"));
         deliver(viewer);
@@ -388,7 +390,7 @@ class SessionRulesTest {
         deliver(viewer);
 
         assertTrue(viewer.closedByEnvironment());
-        assertEquals("closing viewer v: sent RobotRequests; a viewer sends viewerHello once, then only commsUpdate",
+        assertEquals("closing viewer v: sent RobotRequests; a viewer sends viewerHello once and then nothing",
                 onlyWarning());
     }
 
@@ -403,7 +405,7 @@ class SessionRulesTest {
 
         assertTrue(viewer.closedByEnvironment());
         assertEquals(1, rules.viewerCount());
-        assertEquals("closing viewer (unnamed): sent ViewerHello; a viewer sends viewerHello once, then only commsUpdate",
+        assertEquals("closing viewer (unnamed): sent ViewerHello; a viewer sends viewerHello once and then nothing",
                 onlyWarning());
     }
 
@@ -415,7 +417,8 @@ class SessionRulesTest {
         deliver(viewer);
 
         assertTrue(viewer.closedByEnvironment());
-        assertTrue(onlyWarning().endsWith(": sent RobotHello; a viewer sends viewerHello once, then only commsUpdate"),
+        assertTrue(onlyWarning().endsWith(": sent RobotHello; the viewer port's first message is viewerHello or"
+                + " controlHello"),
                 onlyWarning());
         assertEquals(Set.of(), rules.connectedRobots().keySet());
     }
@@ -572,6 +575,203 @@ class SessionRulesTest {
 
             assertTrue(link.closedByEnvironment());
             assertNull(rules.connectedRobots().get("r1"));
+        }
+    }
+
+    /**
+     * A run with a secret: every hello must present it (a viewer's too, unless anyone may watch), and
+     * only a control client may change the run.
+     */
+    @Nested
+    class WithASecret {
+        private static final String SECRET = "s3cret-s3cret-s3cret-s3cret";
+
+        private void guard(boolean publicView) {
+            rules = new SessionRules(sim, new Access(SECRET, publicView), Limits.defaults());
+        }
+
+        private RobotHello hello(String name, String token) {
+            return new RobotHello(name, "pioneer", sim.world().robots().get(0).parameters(), token);
+        }
+
+        @Test
+        void aRobotThatPresentsTheSecretIsWelcomed() throws IOException {
+            guard(false);
+            Peer peer = loopback.connect(Connection.Kind.ROBOT);
+
+            peer.send(hello("r1", SECRET));
+            deliver(peer);
+
+            assertEquals("r1", assertInstanceOf(Welcome.class, peer.read()).name());
+        }
+
+        @Test
+        void aRobotWithoutTheSecretIsRefusedAndCannotSquatTheName() throws IOException {
+            guard(false);
+            Peer squatter = loopback.connect(Connection.Kind.ROBOT);
+            squatter.send(hello("r1", null));
+            deliver(squatter);
+            Peer guesser = loopback.connect(Connection.Kind.ROBOT);
+            guesser.send(hello("r1", "not-the-secret-at-all"));
+            deliver(guesser);
+
+            assertRefused(squatter, "robot r1 presented no run secret; this Environment admits only those who"
+                    + " present the secret it printed at its start (a --token option, the ROBOSIM_TOKEN variable, or"
+                    + " the file it wrote)");
+            Bye bye = assertInstanceOf(Bye.class, guesser.read());
+            assertTrue(bye.reason().startsWith("refused: robot r1 presented a wrong run secret;"), bye.reason());
+            assertEquals(Set.of(), rules.connectedRobots().keySet());
+            // the real program still gets its name, and then a second claim with the secret is refused
+            Peer real = loopback.connect(Connection.Kind.ROBOT);
+            real.send(hello("r1", SECRET));
+            deliver(real);
+            assertEquals("r1", assertInstanceOf(Welcome.class, real.read()).name());
+            Peer second = loopback.connect(Connection.Kind.ROBOT);
+            second.send(hello("r1", SECRET));
+            deliver(second);
+            assertRefused(second, "robot r1 is already connected");
+            assertTrue(log.warnings().stream().noneMatch(w -> w.contains(SECRET)), log.warnings().toString());
+        }
+
+        @Test
+        void aSharedLinkWithoutTheSecretIsRefusedBeforeAnyRobot() throws IOException {
+            guard(false);
+            Peer link = loopback.connect(Connection.Kind.ROBOT);
+
+            link.send(new LinkHello("intruder"));
+            deliver(link);
+
+            Bye bye = assertInstanceOf(Bye.class, link.read());
+            assertTrue(bye.reason().startsWith("refused: a shared link presented no run secret"), bye.reason());
+            assertTrue(link.closedByEnvironment());
+        }
+
+        @Test
+        void aSharedLinkWithTheSecretCarriesRobotsThatDoNotRepeatIt() throws IOException {
+            guard(false);
+            Peer link = loopback.connect(Connection.Kind.ROBOT);
+
+            link.send(new LinkHello("team", SECRET));
+            deliver(link);
+            link.send(hello("r1", null));
+            deliver(link);
+
+            assertEquals("r1", assertInstanceOf(Welcome.class, link.read()).name());
+        }
+
+        @Test
+        void aViewerNeedsTheSecretUnlessTheViewIsPublic() throws IOException {
+            guard(false);
+            Peer stranger = loopback.connect(Connection.Kind.VIEWER);
+            stranger.send(new ViewerHello("peeker"));
+            deliver(stranger);
+            Peer friend = loopback.connect(Connection.Kind.VIEWER);
+            friend.send(new ViewerHello("friend", SECRET));
+            deliver(friend);
+
+            Bye bye = assertInstanceOf(Bye.class, stranger.read());
+            assertTrue(bye.reason().startsWith("refused: viewer peeker presented no run secret"), bye.reason());
+            assertInstanceOf(WorldDescription.class, friend.read());
+
+            guard(true);
+            Peer anyone = loopback.connect(Connection.Kind.VIEWER);
+            anyone.send(new ViewerHello("anyone"));
+            deliver(anyone);
+            assertInstanceOf(WorldDescription.class, anyone.read());
+        }
+
+        @Test
+        void aViewerCannotChangeTheCommsSettingsEvenWithTheSecret() throws IOException {
+            guard(true);
+            Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+            viewer.send(new ViewerHello("v", SECRET));
+            deliver(viewer);
+            viewer.read();
+            viewer.read();
+
+            viewer.send(new CommsUpdate(null, null, null, 1.0, null));
+            deliver(viewer);
+
+            Bye bye = assertInstanceOf(Bye.class, viewer.read());
+            assertTrue(bye.reason().startsWith("refused: a viewer cannot change the run"), bye.reason());
+            assertEquals(0.0, sim.commsSettings().lossProbability());
+        }
+
+        @Test
+        void aControlClientChangesTheCommsSettingsOnlyWithTheSecret() throws IOException {
+            guard(true);
+            Peer stranger = loopback.connect(Connection.Kind.VIEWER);
+            stranger.send(new ControlHello("comms", null));
+            deliver(stranger);
+            Peer control = loopback.connect(Connection.Kind.VIEWER);
+            control.send(new ControlHello("comms", SECRET));
+            deliver(control);
+
+            control.send(new CommsUpdate(null, null, 3, null, null));
+            deliver(control);
+
+            Bye bye = assertInstanceOf(Bye.class, stranger.read());
+            assertTrue(bye.reason().startsWith("refused: control client comms presented no run secret"), bye.reason());
+            assertEquals(3, assertInstanceOf(CommsUpdate.class, control.read()).latencySteps());
+            assertEquals(3, sim.commsSettings().latencySteps());
+        }
+
+        @Test
+        void viewersBeyondTheCapAreRefusedNamingIt() throws IOException {
+            rules = new SessionRules(sim, Access.secret(SECRET), Limits.defaults().withMaxViewers(1));
+            Peer first = loopback.connect(Connection.Kind.VIEWER);
+            first.send(new ViewerHello("first", SECRET));
+            deliver(first);
+            Peer second = loopback.connect(Connection.Kind.VIEWER);
+            second.send(new ViewerHello("second", SECRET));
+            deliver(second);
+
+            assertInstanceOf(WorldDescription.class, first.read());
+            assertEquals("refused: 1 viewers are attached, the most this Environment allows (--max-viewers)",
+                    assertInstanceOf(Bye.class, second.read()).reason());
+            assertEquals(1, rules.viewerCount());
+        }
+    }
+
+    /** Viewers that do not read hold queues; together they stay within one budget. */
+    @Nested
+    class ViewerBudget {
+        private static final long BUDGET = 4L << 20;
+
+        /** A snapshot of about 1 MB: one robot with a long laser scan. */
+        private robosim.protocol.Snapshot big(long step) {
+            int[] scan = new int[300_000];
+            java.util.Arrays.fill(scan, 7_654_321);
+            return new robosim.protocol.Snapshot(step, step * 100, List.of(new robosim.protocol.Snapshot.RobotView(
+                    "r1", 0, 0, 0, false, true, new int[0], 0, 0, 0, scan, 1)));
+        }
+
+        private Peer viewer(String name) throws IOException {
+            Peer v = loopback.connect(Connection.Kind.VIEWER, BUDGET, 4096);
+            v.send(new ViewerHello(name));
+            deliver(v);
+            return v;
+        }
+
+        @Test
+        void theViewerFurthestBehindIsDroppedFirstAndNamed() throws IOException {
+            rules = new SessionRules(sim, Access.open(), Limits.defaults().withViewerBudget(BUDGET));
+            Peer early = viewer("early");
+            rules.broadcastSnapshot(big(1), loopback.codec);
+            rules.broadcastSnapshot(big(2), loopback.codec);
+            Peer late = viewer("late");
+
+            for (int step = 3; step <= 6 && rules.viewerCount() == 2; step++) {
+                rules.broadcastSnapshot(big(step), loopback.codec);
+            }
+
+            assertEquals(1, rules.viewerCount());
+            assertTrue(early.connection.isClosed());
+            assertTrue(!late.connection.isClosed());
+            assertTrue(late.connection.queuedBytes() <= BUDGET);
+            String warning = onlyWarning();
+            assertTrue(warning.startsWith("closing viewer early: it is the viewer furthest behind ("), warning);
+            assertTrue(warning.endsWith(", over the budget of 4194304 (--viewer-budget)"), warning);
         }
     }
 }

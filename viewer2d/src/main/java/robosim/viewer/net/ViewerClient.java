@@ -14,6 +14,7 @@ import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
+import robosim.protocol.RunSecret;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
@@ -84,13 +85,19 @@ public final class ViewerClient {
      */
     public ViewerSummary run() throws ViewerException {
         Session session = new Session();
+        String token;
+        try {
+            token = RunSecret.find(null, options.port());
+        } catch (IllegalArgumentException e) {
+            throw new ViewerException("cannot attach to the environment at " + options.peer() + ": " + e.getMessage(), e);
+        }
         try {
             socket = connect();
             if (stopped) {
                 closeQuietly(socket);
             }
             socket.setSoTimeout(Math.toIntExact(options.readTimeout().toMillis()));
-            new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name()));
+            new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name(), token));
             return session.run(new FrameReader(socket.getInputStream(), codec, options.maxFrame()));
         } catch (ViewerException e) {
             session.abandon();
@@ -143,6 +150,9 @@ public final class ViewerClient {
             Message first = read(in, "the world description");
             if (first == null) {
                 throw fail("closed the connection before sending the world description", null);
+            }
+            if (first instanceof Bye bye) {
+                throw fail("sent no world: " + bye.reason(), null);
             }
             if (!(first instanceof WorldDescription description)) {
                 throw fail("broke the protocol: the first message must be a world description, not "

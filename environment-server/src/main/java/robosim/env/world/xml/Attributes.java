@@ -8,6 +8,9 @@ import java.util.regex.Pattern;
  * file, the element's line, the attribute and the value.
  */
 final class Attributes {
+    /** The largest number a world file may hold either way: 1000 km in mm, ten times the largest world. */
+    static final double MAX_MAGNITUDE = 1e9;
+
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
     private final Path file;
@@ -37,14 +40,23 @@ final class Attributes {
         return text;
     }
 
-    /** @return the value as a finite number; it must be present */
+    /**
+     * @return the value as a finite number of at most {@link #MAX_MAGNITUDE} either way (1000 km in
+     *         mm: ten times the largest world); it must be present
+     */
     double number(Element element, String attribute, String value) {
         String text = text(element, attribute, value);
         if (!NUMBER.matcher(text).matches() || !Double.isFinite(Double.parseDouble(text))) {
             throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is '" + text
                     + "', not a number");
         }
-        return Double.parseDouble(text);
+        double v = Double.parseDouble(text);
+        if (Math.abs(v) > MAX_MAGNITUDE) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + text
+                    + " but must be from " + format(-MAX_MAGNITUDE) + " to " + format(MAX_MAGNITUDE)
+                    + ": no number in a world file is larger");
+        }
+        return v;
     }
 
     /** @return the value as a finite number, or {@code fallback} when it is absent */

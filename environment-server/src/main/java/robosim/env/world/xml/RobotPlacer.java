@@ -96,6 +96,10 @@ final class RobotPlacer {
         }
         try {
             RobotParameters read = RobotParametersReader.read(file);
+            String bad = read.violation();
+            if (bad != null) {
+                throw attributes.error(e, "robot '" + name + "': parameter file " + params + " breaks a bound: " + bad);
+            }
             parameterCache.put(file, read);
             return read;
         } catch (ParameterFileException ex) {

@@ -54,8 +54,9 @@ class WorldCommsErrorTest {
 
     @Test
     void latencyFitsInAnInt() {
+        // no number in a world file is over 10^9, so an int always holds a whole one
         failsWith("<comms latency=\"3000000000\"/>",
-                "attribute latency on <comms> is 3000000000 but must be a whole number from 1 to 2147483647");
+                "attribute latency on <comms> is 3000000000 but must be from -1000000000 to 1000000000");
     }
 
     @ParameterizedTest

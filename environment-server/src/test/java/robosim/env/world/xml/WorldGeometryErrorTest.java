@@ -28,9 +28,27 @@ class WorldGeometryErrorTest {
     @Test
     void aWorldWiderThanAHundredKilometresIsRefused() {
         fixtures.fails("huge.xml", """
-                <world name="huge" width="1e308" height="6000">
+                <world name="huge" width="2e8" height="6000">
                 </world>
                 """, 1, "attribute width on <world> is", "but must be at most 100000000");
+    }
+
+    @Test
+    void coordinatesFarOutsideAnyWorldAreRefusedBeforeTheyReachTheGeometry() {
+        failsWith("<polygon points=\"100,100 200,100 200,1e308\"/>", "attribute points on <polygon> is 1e308 but must"
+                + " be from -1000000000 to 1000000000: no number in a world file is larger");
+        failsWith("<wall x1=\"0\" y1=\"0\" x2=\"-4e9\" y2=\"5\"/>", "attribute x2 on <wall> is -4e9 but must be from");
+    }
+
+    @Test
+    void aRobotWhoseParameterFileBreaksAPhysicalBoundIsRefusedNamingTheFile() {
+        fixtures.writeRobot("fast.p", "ConfigVersion 2.0\nSection General settings\nClass Pioneer\nSubclass p3dx\n"
+                + "MaxVelocity 1e300\n");
+        fixtures.fails("fast.xml", """
+                <world name="fast" width="6000" height="6000">
+                  <robot name="r1" type="pioneer" x="1000" y="1000" params="../robots/fast.p"/>
+                </world>
+                """, 2, "robot 'r1': parameter file ../robots/fast.p breaks a bound: 1.0E300 was supplied for maxVelocity");
     }
 
     @Test
