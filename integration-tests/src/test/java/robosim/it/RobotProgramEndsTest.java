@@ -20,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
+import robosim.protocol.Bye;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
@@ -64,7 +65,7 @@ class RobotProgramEndsTest {
     @Test
     void theEnvironmentKilledMidRunEndsTheRobotProgramWithExit3AndOneLineSayingSo() throws Exception {
         try (LauncherJvm env = new LauncherJvm("env", oneRobotWorld().toString(), "--port", "0", "--viewer-port", "0",
-                "--realtime", "--wait-viewers", "1")) {
+                "--realtime", "--wait-viewers", "1", "--no-token")) {
             String listening = env.awaitLine(l -> l.startsWith("Environment: world one-robot, robots on "), 60);
             Matcher m = Pattern.compile("robots on 127\\.0\\.0\\.1:(\\d+), viewers on 127\\.0\\.0\\.1:(\\d+)")
                     .matcher(listening);
@@ -76,6 +77,7 @@ class RobotProgramEndsTest {
                 Message seen;
                 do {
                     seen = viewer.read();
+                    assertTrue(seen != null && !(seen instanceof Bye), "the viewer was let in: " + seen);
                 } while (!(seen instanceof Snapshot s && s.step() >= 3));
 
                 env.kill();
