@@ -1,0 +1,147 @@
+package robosim.protocol;
+
+import java.util.Arrays;
+import java.util.HexFormat;
+import java.util.Random;
+
+/**
+ * Seeded-random test cases, and the byte mutations the fuzz tests apply to valid input. Case
+ * {@code i} of seed {@code s} draws from its own {@link Random}, so one case can be replayed alone.
+ * Three system properties change a run: {@value #SEED} (the seed), {@value #CASES} (how many
+ * cases) and {@value #CASE} (run only that case). A failing case names its seed, its number and
+ * its input.
+ */
+public final class Fuzz {
+    /** The system property that replaces every fuzz test's seed. */
+    public static final String SEED = "robosim.fuzz.seed";
+    /** The system property that sets how many cases each fuzz test runs. */
+    public static final String CASES = "robosim.fuzz.cases";
+    /** The system property that runs one case alone. */
+    public static final String CASE = "robosim.fuzz.case";
+
+    private final Random random;
+    private String input = "(not described)";
+
+    private Fuzz(Random random) {
+        this.random = random;
+    }
+
+    /** One case's body. */
+    public interface Body {
+        /**
+         * @param fuzz the case: its random source, and where it describes its input
+         * @throws Exception anything, reported with the seed and the case
+         */
+        void run(Fuzz fuzz) throws Exception;
+    }
+
+    /**
+     * Runs the cases.
+     *
+     * @param seed  the test's own seed, unless {@value #SEED} is set
+     * @param cases the test's own number of cases, unless {@value #CASES} is set
+     * @param body  one case
+     */
+    public static void cases(long seed, int cases, Body body) {
+        long s = Long.getLong(SEED, seed);
+        Integer only = Integer.getInteger(CASE);
+        int first = only == null ? 0 : only;
+        int end = only == null ? Integer.getInteger(CASES, cases) : only + 1;
+        for (int i = first; i < end; i++) {
+            Fuzz fuzz = new Fuzz(new Random(s * 0x9E3779B97F4A7C15L + i));
+            try {
+                body.run(fuzz);
+            } catch (Throwable t) {
+                throw new AssertionError("fuzz case " + i + " of seed " + s + " failed (replay it alone with -D"
+                        + SEED + "=" + s + " -D" + CASE + "=" + i + "): " + t + "\ninput: " + fuzz.input, t);
+            }
+        }
+    }
+
+    /** @return the case's random source */
+    public Random random() {
+        return random;
+    }
+
+    /** @param description the case's input, named in a failure */
+    public void input(String description) {
+        input = description.length() > 2000 ? description.substring(0, 2000) + "..." : description;
+    }
+
+    /** @param bytes the case's input, named in a failure in hex */
+    public void input(byte[] bytes) {
+        input(bytes.length + " bytes: " + HexFormat.of().formatHex(bytes, 0, Math.min(bytes.length, 1000)));
+    }
+
+    /** Lengths, counts and values at the edges of what an int holds. */
+    static final int[] EDGE_INTS = {0, 1, -1, 0x7f, 0x80, 0xff, 0x7fff, 0xffff, Integer.MAX_VALUE, Integer.MIN_VALUE,
+        1 << 20, 1 << 24, 1 << 30};
+
+    /**
+     * @param valid a valid input
+     * @return it, changed by one to four mutations: bit flips, edge values, cuts, random bytes
+     *         inserted, parts deleted or repeated; or now and then random bytes only
+     */
+    public byte[] mutate(byte[] valid) {
+        if (random.nextInt(20) == 0) {
+            return garbage(random.nextInt(64));
+        }
+        byte[] b = valid.clone();
+        for (int n = 1 + random.nextInt(4); n > 0; n--) {
+            b = mutateOnce(b);
+        }
+        return b;
+    }
+
+    private byte[] mutateOnce(byte[] b) {
+        int at = b.length == 0 ? 0 : random.nextInt(b.length);
+        switch (random.nextInt(8)) {
+            case 0 -> {
+                if (b.length > 0) {
+                    b[at] ^= (byte) (1 << random.nextInt(8));
+                }
+            }
+            case 1 -> {
+                if (b.length > 0) {
+                    b[at] = (byte) EDGE_INTS[random.nextInt(EDGE_INTS.length)];
+                }
+            }
+            case 2 -> b = Arrays.copyOf(b, at);
+            case 3 -> b = splice(b, at, at, garbage(1 + random.nextInt(16)));
+            case 4 -> b = splice(b, at, Math.min(b.length, at + 1 + random.nextInt(16)), new byte[0]);
+            case 5 -> b = splice(b, at, at, Arrays.copyOfRange(b, at, Math.min(b.length, at + 1 + random.nextInt(32))));
+            case 6 -> {
+                if (b.length >= 4) {
+                    int v = EDGE_INTS[random.nextInt(EDGE_INTS.length)];
+                    int p = random.nextInt(b.length - 3);
+                    b[p] = (byte) (v >>> 24);
+                    b[p + 1] = (byte) (v >>> 16);
+                    b[p + 2] = (byte) (v >>> 8);
+                    b[p + 3] = (byte) v;
+                }
+            }
+            default -> {
+                for (int i = 0; i < 1 + random.nextInt(8) && b.length > 0; i++) {
+                    b[random.nextInt(b.length)] = (byte) random.nextInt();
+                }
+            }
+        }
+        return b;
+    }
+
+    /** @return {@code b} with bytes {@code from} to {@code to} replaced by {@code with} */
+    static byte[] splice(byte[] b, int from, int to, byte[] with) {
+        byte[] out = new byte[b.length - (to - from) + with.length];
+        System.arraycopy(b, 0, out, 0, from);
+        System.arraycopy(with, 0, out, from, with.length);
+        System.arraycopy(b, to, out, from + with.length, b.length - to);
+        return out;
+    }
+
+    /** @return {@code length} random bytes */
+    public byte[] garbage(int length) {
+        byte[] g = new byte[length];
+        random.nextBytes(g);
+        return g;
+    }
+}
