@@ -74,7 +74,7 @@ public final class Fuzz {
     }
 
     /** Lengths, counts and values at the edges of what an int holds. */
-    static final int[] EDGE_INTS = {0, 1, -1, 0x7f, 0x80, 0xff, 0x7fff, 0xffff, Integer.MAX_VALUE, Integer.MIN_VALUE,
+    public static final int[] EDGE_INTS = {0, 1, -1, 0x7f, 0x80, 0xff, 0x7fff, 0xffff, Integer.MAX_VALUE, Integer.MIN_VALUE,
         1 << 20, 1 << 24, 1 << 30};
 
     /**
@@ -129,8 +129,14 @@ public final class Fuzz {
         return b;
     }
 
-    /** @return {@code b} with bytes {@code from} to {@code to} replaced by {@code with} */
-    static byte[] splice(byte[] b, int from, int to, byte[] with) {
+    /**
+     * @param b    bytes
+     * @param from the first byte replaced
+     * @param to   the byte after the last one replaced
+     * @param with what replaces them
+     * @return {@code b} with bytes {@code from} to {@code to} replaced by {@code with}
+     */
+    public static byte[] splice(byte[] b, int from, int to, byte[] with) {
         byte[] out = new byte[b.length - (to - from) + with.length];
         System.arraycopy(b, 0, out, 0, from);
         System.arraycopy(with, 0, out, from, with.length);
