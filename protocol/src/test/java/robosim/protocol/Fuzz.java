@@ -1,8 +1,12 @@
 package robosim.protocol;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HexFormat;
+import java.util.List;
 import java.util.Random;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Seeded-random test cases, and the byte mutations the fuzz tests apply to valid input. Case
@@ -142,6 +146,94 @@ public final class Fuzz {
         System.arraycopy(with, 0, out, from, with.length);
         System.arraycopy(b, to, out, from + with.length, b.length - to);
         return out;
+    }
+
+    private static final Pattern NUMBER = Pattern.compile("-?\\d+(\\.\\d+)?");
+    private static final Pattern WORD = Pattern.compile("[A-Za-z][A-Za-z0-9]*");
+    /** Numbers and words no valid file holds where a number belongs. */
+    private static final String[] EDGE_NUMBERS = {"1e308", "-1e308", "1e999", "-1e999", "NaN", "-NaN", "Infinity",
+        "-Infinity", "-0", "0", "-1", "4.9e-324", "2.5e-400", "99999999999999999999", "9223372036854775808",
+        "2147483648", "-2147483649", "0x10", "1_000", "1,5", "1.5.5", "+", "-", ".", "e5", "1e", "\uff11\uff12",
+        "1".repeat(400), "0.0000000000000000000000000000001"};
+    /** Lines a text file may hold, broken or hostile: markup, entities, control characters, long lines. */
+    private static final String[] EDGE_LINES = {"", " ", "\t", "\r", ";", "<", ">", "&", "&amp;", "&e;", "&#0;",
+        "&#xd800;", "<!-- x -->", "<![CDATA[1]]>", "<?xml version=\"1.0\"?>",
+        "<!DOCTYPE x [<!ENTITY e SYSTEM \"file:///etc/passwd\">]>",
+        "<!DOCTYPE x [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;\">]>",
+        "\u0000", "\u0007", "\ufeff", "\ufffe", "\ud83d\ude00", "x".repeat(20_000), "<a>", "</a>", "<a/>",
+        "<a b=\"1\" b=\"2\"/>", "=\"\"", "\"", "'"};
+
+    /**
+     * @param valid a valid text file, such as a world or a robot parameter file
+     * @return it, changed by one to three mutations: numbers replaced by edge values, words swapped
+     *         or lengthened, lines repeated, dropped, swapped or replaced by hostile ones (markup,
+     *         entities, control characters, nesting thousands of elements deep), characters
+     *         inserted or the text cut short
+     */
+    public String mutateText(String valid) {
+        String t = valid;
+        for (int n = 1 + random.nextInt(3); n > 0; n--) {
+            t = mutateTextOnce(t);
+        }
+        return t;
+    }
+
+    private String mutateTextOnce(String t) {
+        List<String> lines = new ArrayList<>(List.of(t.split("\n", -1)));
+        int line = random.nextInt(lines.size());
+        switch (random.nextInt(10)) {
+            case 0, 1, 2 -> {
+                return replaceMatch(t, NUMBER, EDGE_NUMBERS[random.nextInt(EDGE_NUMBERS.length)]);
+            }
+            case 3 -> {
+                List<String> words = matches(t, WORD);
+                String with = words.isEmpty() ? "x" : random.nextInt(4) == 0 ? words.get(random.nextInt(words.size())).repeat(500)
+                        : words.get(random.nextInt(words.size()));
+                return replaceMatch(t, WORD, with);
+            }
+            case 4 -> lines.add(line, lines.get(random.nextInt(lines.size())));
+            case 5 -> lines.remove(line);
+            case 6 -> lines.add(line, EDGE_LINES[random.nextInt(EDGE_LINES.length)]);
+            case 7 -> {
+                int depth = random.nextInt(4) == 0 ? 5000 : random.nextInt(50);
+                lines.add(line, "<a>".repeat(depth) + "</a>".repeat(random.nextInt(depth + 1)));
+            }
+            case 8 -> {
+                int at = random.nextInt(t.length() + 1);
+                String chars = "<>&\"'=;/ \t\n\r0123456789.-e\u0000\u00e9\u2028\ud800";
+                StringBuilder b = new StringBuilder(t.substring(0, at));
+                for (int i = 1 + random.nextInt(6); i > 0; i--) {
+                    b.append(chars.charAt(random.nextInt(chars.length())));
+                }
+                return b.append(t.substring(at)).toString();
+            }
+            default -> {
+                return t.substring(0, random.nextInt(t.length() + 1));
+            }
+        }
+        return String.join("\n", lines);
+    }
+
+    private String replaceMatch(String t, Pattern pattern, String with) {
+        List<int[]> spans = new ArrayList<>();
+        Matcher m = pattern.matcher(t);
+        while (m.find()) {
+            spans.add(new int[] {m.start(), m.end()});
+        }
+        if (spans.isEmpty()) {
+            return t + with;
+        }
+        int[] span = spans.get(random.nextInt(spans.size()));
+        return t.substring(0, span[0]) + with + t.substring(span[1]);
+    }
+
+    private static List<String> matches(String t, Pattern pattern) {
+        List<String> found = new ArrayList<>();
+        Matcher m = pattern.matcher(t);
+        while (m.find()) {
+            found.add(m.group());
+        }
+        return found;
     }
 
     /** @return {@code length} random bytes */
