@@ -236,6 +236,18 @@ public final class Fuzz {
         return found;
     }
 
+    /**
+     * @param text a text file's bytes
+     * @return its lines as readers count them: each ended by a line feed, a carriage return or both
+     */
+    public static int lines(byte[] text) {
+        int lines = 1;
+        for (int i = 0; i < text.length; i++) {
+            lines += text[i] == '\n' || text[i] == '\r' && (i + 1 == text.length || text[i + 1] != '\n') ? 1 : 0;
+        }
+        return lines;
+    }
+
     /** @return {@code length} random bytes */
     public byte[] garbage(int length) {
         byte[] g = new byte[length];

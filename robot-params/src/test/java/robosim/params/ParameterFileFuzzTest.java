@@ -56,22 +56,13 @@ class ParameterFileFuzzTest {
         return m.group(1) == null ? 0 : Integer.parseInt(m.group(1));
     }
 
-    /** @return the lines of a text as readers count them: ended by a line feed, a carriage return or both */
-    static int lines(byte[] bytes) {
-        int lines = 1;
-        for (int i = 0; i < bytes.length; i++) {
-            lines += bytes[i] == '\n' || bytes[i] == '\r' && (i + 1 == bytes.length || bytes[i + 1] != '\n') ? 1 : 0;
-        }
-        return lines;
-    }
-
     private static void readOrRefused(Path file, byte[] bytes) {
         RobotParameters p;
         try {
             p = RobotParametersReader.read(file);
         } catch (ParameterFileException e) {
             int line = line(file, e.getMessage());
-            assertTrue(line <= lines(bytes), "line " + line + " of a file of " + lines(bytes) + " lines: " + e.getMessage());
+            assertTrue(line <= Fuzz.lines(bytes), "line " + line + " of a file of " + Fuzz.lines(bytes) + " lines: " + e.getMessage());
             return;
         }
         for (double v : List.of(p.robotRadius(), p.robotWidth(), p.robotLengthFront(), p.robotLengthRear(),
