@@ -131,7 +131,7 @@ final class SessionRules {
         } else if (m instanceof RobotRequests req) {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
             c.shut();
             drop(c.name(), null);
         } else {
@@ -151,11 +151,11 @@ final class SessionRules {
             hello(c, hello);
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
-                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + bye.reason());
+                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
             for (String robot : c.robots()) {
                 drop(robot, null);
             }
@@ -213,7 +213,7 @@ final class SessionRules {
         String declared = sim.world().robots().stream().filter(r -> r.name().equals(hello.name()))
                 .findFirst().orElseThrow().type();
         if (!declared.equalsIgnoreCase(hello.robotType())) {
-            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + hello.robotType();
+            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + printable(hello.robotType());
         }
         if (robots.containsKey(hello.name())) {
             return "robot " + hello.name() + " is already connected";
@@ -277,7 +277,7 @@ final class SessionRules {
             viewers.add(c);
             c.send(sim.description());
             c.send(sim.snapshot());
-            LOG.info(() -> "viewer " + hello.name() + " attached at step " + sim.stepCount());
+            LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
         } else if (c.name() != null && m instanceof CommsUpdate u) {
             commsUpdate(c, u);
         } else {
@@ -356,6 +356,11 @@ final class SessionRules {
         } else {
             c.sendAndClose(new Bye("goodbye"));
         }
+    }
+
+    /** @return text a peer chose, escaped for one log line (see {@link RobotHello#printable(String, int)}) */
+    private static String printable(String text) {
+        return RobotHello.printable(text, 300);
     }
 
     private static String typeOf(Message m) {
