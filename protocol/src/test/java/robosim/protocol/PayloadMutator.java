@@ -30,7 +30,7 @@ import java.util.Random;
  * The tree is then written as JSON or Smile, nesting limits lifted, so that the codec's own limits
  * are what is tested.
  */
-final class PayloadMutator {
+public final class PayloadMutator {
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
     private static final ObjectMapper TREES = new ObjectMapper();
     private static final StreamWriteConstraints UNLIMITED = StreamWriteConstraints.builder().maxNestingDepth(100_000).build();
@@ -44,7 +44,8 @@ final class PayloadMutator {
 
     private final Random random;
 
-    PayloadMutator(Random random) {
+    /** @param random where the mutations come from */
+    public PayloadMutator(Random random) {
         this.random = random;
     }
 
@@ -53,7 +54,7 @@ final class PayloadMutator {
      * @param smile   whether to write Smile, else JSON
      * @return the message's tree, changed in one to three places, written as a payload
      */
-    byte[] mutate(Message message, boolean smile) {
+    public byte[] mutate(Message message, boolean smile) {
         JsonNode root = TREES.valueToTree(message);
         for (int n = 1 + random.nextInt(3); n > 0; n--) {
             root = mutateOnce(root);

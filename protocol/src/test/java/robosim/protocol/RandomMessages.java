@@ -176,8 +176,12 @@ public final class RandomMessages {
         return random.nextInt(10) == 0 ? null : text(40);
     }
 
-    /** @return text of up to {@code max} characters from all of Unicode, none a lone surrogate */
-    String text(int max) {
+    /**
+     * @param max the most characters
+     * @return text of up to {@code max} characters from all of Unicode (control characters too),
+     *         none a lone surrogate
+     */
+    public String text(int max) {
         int n = random.nextInt(max + 1);
         StringBuilder b = new StringBuilder(n);
         while (b.length() < n) {
