@@ -41,7 +41,6 @@ final class HostilePeers implements AutoCloseable {
     private final List<String> names;
     private final RobotParameters params;
     private final List<Socket> open = new ArrayList<>();
-    private int sent;
 
     /**
      * @param fuzz       the case, for its random source and its mutations
@@ -58,12 +57,8 @@ final class HostilePeers implements AutoCloseable {
         this.params = ParameterFileReader.read(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.p"));
     }
 
-    /**
-     * Opens {@code peers} connections, each sending what one hostile peer sends during step {@code step}.
-     *
-     * @return the frames and byte runs sent so far
-     */
-    int attack(long step, int peers) {
+    /** Opens {@code peers} connections, each sending what one hostile peer sends during step {@code step}. */
+    void attack(long step, int peers) {
         for (int i = 0; i < peers; i++) {
             boolean robot = random.nextInt(3) > 0;
             byte[] bytes = robot ? robotPeer(step) : viewerPeer();
@@ -85,7 +80,6 @@ final class HostilePeers implements AutoCloseable {
                 // the Environment may close a hostile peer before it has written everything: that is its right
             }
         }
-        return sent;
     }
 
     /** @return what one hostile robot connection sends, as the bytes of one or more frames */
@@ -164,8 +158,7 @@ final class HostilePeers implements AutoCloseable {
         return frame(CODEC.encode(m));
     }
 
-    private byte[] frame(byte[] payload) {
-        sent++;
+    private static byte[] frame(byte[] payload) {
         return ByteBuffer.allocate(4 + payload.length).putInt(payload.length).put(payload).array();
     }
 

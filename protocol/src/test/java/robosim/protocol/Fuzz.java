@@ -9,11 +9,11 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
- * Seeded-random test cases, and the byte mutations the fuzz tests apply to valid input. Case
- * {@code i} of seed {@code s} draws from its own {@link Random}, so one case can be replayed alone.
- * Three system properties change a run: {@value #SEED} (the seed), {@value #CASES} (how many
- * cases) and {@value #CASE} (run only that case). A failing case names its seed, its number and
- * its input.
+ * Seeded-random test cases, and the byte and text mutations the fuzz tests apply to valid input
+ * (docs/TESTING.md lists the tests). Case {@code i} of seed {@code s} draws from its own
+ * {@link Random}, so one case can be replayed alone. Three system properties change a run:
+ * {@value #SEED} (the seed), {@value #CASES} (how many cases) and {@value #CASE} (run only that
+ * case). A failing case names its seed, its number and its input.
  */
 public final class Fuzz {
     /** The system property that replaces every fuzz test's seed. */
