@@ -13,10 +13,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import robosim.aria.ArRobot;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.examples.wander.Wander;
 import robosim.protocol.Fuzz;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
@@ -79,18 +77,7 @@ class HostilePeersFuzzTest {
         try (LocalEnvironment env = new LocalEnvironment(LocalEnvironment.shipped("empty-room.xml"), 1, options, gate);
              HostilePeers hostile = attack == null ? null : new HostilePeers(attack, env.robotPort(), env.viewerPort(),
                      List.of("r1", "r2", "r3", "robot", "r1 ", ""))) {
-            List<Thread> robots = new ArrayList<>();
-            for (String name : env.sim.robotNames()) {
-                Thread t = new Thread(() -> {
-                    ArRobot robot = new ArRobot(name, "127.0.0.1", env.robotPort(), "p3dx");
-                    if (robot.blockingConnect()) {
-                        new Wander(robot).run();
-                    }
-                }, "wander-" + name);
-                t.setDaemon(true);
-                t.start();
-                robots.add(t);
-            }
+            List<Thread> robots = env.wanderers();
             if (hostile != null) {
                 for (int round = 0; round < ROUNDS; round++) {
                     Long step = gate.arrived.poll(30, TimeUnit.SECONDS);
