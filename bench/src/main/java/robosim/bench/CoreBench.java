@@ -46,7 +46,8 @@ public final class CoreBench {
         Simulation sim = loaded.sim();
         List<String> names = sim.robotNames();
         int[] none = new int[0];
-        StepWindows windows = window > 0 ? new StepWindows(window) : null;
+        StepWindows windows = window > 0
+                ? new StepWindows(window, () -> names.stream().filter(n -> sim.state(n).stalled()).count()) : null;
         if (windows != null) {
             windows.at(0);
         }

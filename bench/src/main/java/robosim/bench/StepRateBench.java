@@ -397,7 +397,8 @@ public final class StepRateBench {
                 + " step:heap_gc_mb every --heap-every steps");
         out.println("windows (--window N): after each run one win line per JVM and N steps, from the first step on:"
                 + " steps = the steps it covers, steps_per_s (wall clock), cpu_us_per_step = the JVM's CPU time (all its"
-                + " threads) per step, alloc_kb_per_step = heap its live platform threads allocated per step (KiB)");
+                + " threads) per step, alloc_kb_per_step = heap its live platform threads allocated per step (KiB); in the core"
+                + " alone, stalled = robots stalled at the window's end");
         out.flush();
     }
 
@@ -424,8 +425,9 @@ public final class StepRateBench {
             }
             for (StepWindows.Window x : w.windows()) {
                 out.printf(Locale.ROOT, "win  run=%-4s robots=%-4d sensors=%-11s jvm=%-7s steps=%d-%d steps_per_s=%.1f"
-                                + " cpu_us_per_step=%.1f alloc_kb_per_step=%.2f%n", r.run(), r.robots(), r.sensors().label(),
-                        w.jvm(), x.from(), x.to(), x.stepsPerSecond(), x.cpuMicrosPerStep(), x.allocatedKibPerStep());
+                                + " cpu_us_per_step=%.1f alloc_kb_per_step=%.2f%s%n", r.run(), r.robots(), r.sensors().label(),
+                        w.jvm(), x.from(), x.to(), x.stepsPerSecond(), x.cpuMicrosPerStep(), x.allocatedKibPerStep(),
+                        x.stalled() < 0 ? "" : " stalled=" + x.stalled());
             }
         }
         out.flush();

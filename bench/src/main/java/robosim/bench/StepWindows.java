@@ -18,7 +18,8 @@ import java.util.function.LongSupplier;
  * <p>Allocation is summed over the JVM's live platform threads
  * ({@code com.sun.management.ThreadMXBean.getThreadAllocatedBytes}); a virtual thread's allocation
  * counts on its carrier, and a thread that ended takes its count with it, so it is an approximation
- * where threads come and go. A figure this JVM does not give is -1.
+ * where threads come and go. A figure this JVM does not give is -1. Where the run can tell (the core
+ * alone, on the thread that steps it), each mark also counts the robots stalled then.
  */
 public final class StepWindows {
     /** How a client JVM's line of marks starts in its log. */
@@ -31,18 +32,21 @@ public final class StepWindows {
      * @param nanos          {@link System#nanoTime()}
      * @param cpuNanos       this JVM's CPU time so far, or -1
      * @param allocatedBytes the heap its threads have allocated so far, or -1
+     * @param stalled        robots stalled then, or -1 if unknown
      */
-    record Mark(long step, long nanos, long cpuNanos, long allocatedBytes) {
+    record Mark(long step, long nanos, long cpuNanos, long allocatedBytes, long stalled) {
         String encode() {
-            return step + ":" + nanos + ":" + cpuNanos + ":" + allocatedBytes;
+            return step + ":" + nanos + ":" + cpuNanos + ":" + allocatedBytes + ":" + stalled;
         }
 
         static Mark decode(String s) {
             String[] p = s.split(":");
-            if (p.length != 4) {
-                throw new IllegalArgumentException(s + " was supplied for a window mark: it must be step:nanos:cpu:allocated");
+            if (p.length != 5) {
+                throw new IllegalArgumentException(s + " was supplied for a window mark: it must be"
+                        + " step:nanos:cpu:allocated:stalled");
             }
-            return new Mark(Long.parseLong(p[0]), Long.parseLong(p[1]), Long.parseLong(p[2]), Long.parseLong(p[3]));
+            return new Mark(Long.parseLong(p[0]), Long.parseLong(p[1]), Long.parseLong(p[2]), Long.parseLong(p[3]),
+                    Long.parseLong(p[4]));
         }
     }
 
@@ -54,8 +58,9 @@ public final class StepWindows {
      * @param seconds        wall-clock time
      * @param cpuNanos       the JVM's CPU time in it, or -1 if unknown
      * @param allocatedBytes heap allocated in it, or -1 if unknown
+     * @param stalled        robots stalled at its end, or -1 if unknown
      */
-    public record Window(long from, long to, double seconds, long cpuNanos, long allocatedBytes) {
+    public record Window(long from, long to, double seconds, long cpuNanos, long allocatedBytes, long stalled) {
         /** @return steps per second */
         public double stepsPerSecond() {
             return (to - from) / seconds;
@@ -76,6 +81,7 @@ public final class StepWindows {
     private final LongSupplier clock;
     private final LongSupplier cpu;
     private final LongSupplier allocated;
+    private final LongSupplier stalled;
     private final List<Mark> marks = new ArrayList<>();
     private long next;
 
@@ -85,7 +91,17 @@ public final class StepWindows {
      * @param every steps per window, at least 1
      */
     public StepWindows(long every) {
-        this(every, System::nanoTime, StepWindows::processCpuNanos, StepWindows::allocatedBytes);
+        this(every, () -> -1);
+    }
+
+    /**
+     * Windows of this JVM that also count the robots stalled at each mark.
+     *
+     * @param every   steps per window, at least 1
+     * @param stalled robots stalled now, asked on the thread that marks, or -1 if unknown
+     */
+    public StepWindows(long every, LongSupplier stalled) {
+        this(every, System::nanoTime, StepWindows::processCpuNanos, StepWindows::allocatedBytes, stalled);
     }
 
     /**
@@ -93,8 +109,9 @@ public final class StepWindows {
      * @param clock     nanoseconds
      * @param cpu       CPU time so far, ns, or -1
      * @param allocated heap allocated so far, bytes, or -1
+     * @param stalled   robots stalled now, or -1
      */
-    StepWindows(long every, LongSupplier clock, LongSupplier cpu, LongSupplier allocated) {
+    StepWindows(long every, LongSupplier clock, LongSupplier cpu, LongSupplier allocated, LongSupplier stalled) {
         if (every < 1) {
             throw new IllegalArgumentException(every + " was supplied for steps per window: it must be at least 1");
         }
@@ -102,6 +119,7 @@ public final class StepWindows {
         this.clock = clock;
         this.cpu = cpu;
         this.allocated = allocated;
+        this.stalled = stalled;
     }
 
     /**
@@ -129,7 +147,7 @@ public final class StepWindows {
     }
 
     private void mark(long step) {
-        marks.add(new Mark(step, clock.getAsLong(), cpu.getAsLong(), allocated.getAsLong()));
+        marks.add(new Mark(step, clock.getAsLong(), cpu.getAsLong(), allocated.getAsLong(), stalled.getAsLong()));
         next = (step / every + 1) * every;
     }
 
@@ -145,7 +163,7 @@ public final class StepWindows {
             Mark b = marks.get(i);
             if (b.step() > a.step()) {
                 out.add(new Window(a.step(), b.step(), (b.nanos() - a.nanos()) / 1e9, difference(a.cpuNanos(), b.cpuNanos()),
-                        difference(a.allocatedBytes(), b.allocatedBytes())));
+                        difference(a.allocatedBytes(), b.allocatedBytes()), b.stalled()));
             }
         }
         return out;

@@ -14,7 +14,7 @@ class StepWindowsTest {
     /** A clock, CPU time and allocation that each go up by a fixed amount per step. */
     private final AtomicLong step = new AtomicLong();
     private final StepWindows windows = new StepWindows(100, () -> step.get() * 2_000_000L,
-            () -> step.get() * 500_000L, () -> step.get() * 4096L);
+            () -> step.get() * 500_000L, () -> step.get() * 4096L, () -> step.get() / 100);
 
     private void runTo(long last, long by) {
         for (long s = step.get(); s <= last; s += by) {
@@ -36,6 +36,7 @@ class StepWindowsTest {
         assertEquals(500, second.stepsPerSecond(), 1e-9, "2 ms a step");
         assertEquals(500, second.cpuMicrosPerStep(), 1e-9);
         assertEquals(4, second.allocatedKibPerStep(), 1e-9);
+        assertEquals(2, second.stalled(), "counted at its end");
     }
 
     @Test
@@ -71,17 +72,18 @@ class StepWindowsTest {
     @Test
     void aLogWithoutWindowsOrWithABrokenLineGivesNone() {
         assertEquals(Optional.empty(), StepWindows.clientWindows(List.of("INFO: nothing")));
-        assertEquals(Optional.empty(), StepWindows.clientWindows(List.of("bench-windows 1:2:3")));
+        assertEquals(Optional.empty(), StepWindows.clientWindows(List.of("bench-windows 1:2:3:4")));
     }
 
     @Test
     void whatTheJvmDoesNotTellStaysUnknown() {
-        StepWindows blind = new StepWindows(10, System::nanoTime, () -> -1, () -> -1);
+        StepWindows blind = new StepWindows(10, System::nanoTime, () -> -1, () -> -1, () -> -1);
         blind.at(0);
         blind.end(10);
         StepWindows.Window w = blind.windows().get(0);
         assertEquals(-1, w.cpuMicrosPerStep());
         assertEquals(-1, w.allocatedKibPerStep());
+        assertEquals(-1, w.stalled());
         assertTrue(StepWindows.processCpuNanos() != 0);
     }
 
