@@ -327,9 +327,14 @@ public final class GeometryClient {
     }
 
     private static void addContact(Bodies.Body body, Geometry other, double tolerance, List<Double> out) {
-        if (body.polygon.isWithinDistance(other, tolerance)) {
-            Coordinate[] nearest = DistanceOp.nearestPoints(body.polygon, other);
-            Coordinate p = nearest[1];
+        if (body.envelope.distance(other.getEnvelopeInternal()) > tolerance) {
+            return;
+        }
+        // one distance computation gives both whether it is within the tolerance (as
+        // isWithinDistance would answer) and the nearest points: a body in contact needs both
+        DistanceOp distance = new DistanceOp(body.polygon, other);
+        if (distance.distance() <= tolerance) {
+            Coordinate p = distance.nearestPoints()[1];
             out.add(Math.atan2(p.y - body.pose.y(), p.x - body.pose.x()));
         }
     }
