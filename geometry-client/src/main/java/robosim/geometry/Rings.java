@@ -12,8 +12,8 @@ import org.locationtech.jts.geom.Location;
  * Exact tests on small closed rings (first point repeated last), for the motion queries, which ask
  * them several times a step for every robot in contact. They decide with JTS's exact orientation
  * predicate ({@link Orientation#index}) and its ray-crossing point location, as JTS's own predicates
- * do, so they give the answers JTS gives, without building JTS's topology graphs (tens of
- * microseconds and about 100 KB of garbage per test of two polygons in contact).
+ * do, so they give the answers JTS gives, without building JTS's topology graphs (for two polygons
+ * whose envelopes meet, tens of microseconds and kilobytes of garbage per test).
  */
 final class Rings {
     private static final Comparator<Coordinate> BY_X_THEN_Y = Comparator.<Coordinate>comparingDouble(c -> c.x)
@@ -78,7 +78,7 @@ final class Rings {
      * points encloses).
      *
      * @param a a closed ring
-     * @param b a closed ring
+     * @param b a closed ring; the two together have three points not in a line, as a body's do
      * @return the hull as a closed counter-clockwise ring of input points, no three in a line
      */
     static Coordinate[] hull(Coordinate[] a, Coordinate[] b) {
