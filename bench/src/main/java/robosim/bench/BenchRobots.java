@@ -19,7 +19,8 @@ import robosim.hw.RobotThreads;
  * its speed every step until the Environment ends the run. If any robot fails, the JVM exits with
  * status 1 at once, so the benchmark learns of it without waiting for a timeout. When every robot has
  * been disconnected, and before they are let go, it prints its memory ({@link JvmMemory#figures}) on
- * one line of its standard output, which {@link StepRateBench} reads from its log.
+ * one line of its standard output, and its windows ({@link StepWindows}) on another if asked, which
+ * {@link StepRateBench} reads from its log.
  */
 public final class BenchRobots {
     private static final Logger LOG = Logger.getLogger(BenchRobots.class.getName());
@@ -77,14 +78,16 @@ public final class BenchRobots {
     /**
      * Runs one client JVM's robots.
      *
-     * @param args HOST PORT FIRST COUNT PARAMFILE [SENSORS [HEAP_EVERY]]: SENSORS is {@code sonar} (the
-     *             default) or {@code laser}; HEAP_EVERY, the steps between samples of the heap after the
-     *             last garbage collection, taken by the first robot (0, the default, for none)
+     * @param args HOST PORT FIRST COUNT PARAMFILE [SENSORS [HEAP_EVERY [WINDOW]]]: SENSORS is
+     *             {@code sonar} (the default) or {@code laser}; HEAP_EVERY, the steps between samples of
+     *             the heap after the last garbage collection, taken by the first robot (0, the default,
+     *             for none); WINDOW, the steps per window of this JVM's CPU time and allocation, marked
+     *             by the first robot (0, the default, for none)
      * @throws InterruptedException if interrupted
      */
     public static void main(String[] args) throws InterruptedException {
         if (args.length < 5) {
-            throw new IllegalArgumentException("usage: BenchRobots HOST PORT FIRST COUNT PARAMFILE [sonar|laser [HEAP_EVERY]]");
+            throw new IllegalArgumentException("usage: BenchRobots HOST PORT FIRST COUNT PARAMFILE [sonar|laser [HEAP_EVERY [WINDOW]]]");
         }
         long mainMs = ManagementFactory.getRuntimeMXBean().getUptime();
         String host = args[0];
@@ -96,6 +99,8 @@ public final class BenchRobots {
                 : BenchSensors.SONAR;
         long heapEvery = args.length > 6 ? Long.parseLong(args[6]) : 0;
         JvmMemory.Sampler samples = heapEvery > 0 ? new JvmMemory.Sampler(heapEvery) : null;
+        long window = args.length > 7 ? Long.parseLong(args[7]) : 0;
+        StepWindows windows = window > 0 ? new StepWindows(window) : null;
         CountDownLatch disconnected = new CountDownLatch(share.count());
         CountDownLatch measured = new CountDownLatch(1);
         AtomicInteger connected = new AtomicInteger();
@@ -107,8 +112,9 @@ public final class BenchRobots {
         for (int k = share.first(); k < share.first() + share.count(); k++) {
             String name = "b" + k;
             JvmMemory.Sampler sampler = k == share.first() ? samples : null;
+            StepWindows marks = k == share.first() ? windows : null;
             Thread t = RobotThreads.unstarted(name, () -> {
-                ArRobot robot = drive(name, host, port, params, sensors, sampler, () -> {
+                ArRobot robot = drive(name, host, port, params, sensors, sampler, marks, () -> {
                     if (connected.incrementAndGet() == share.count()) {
                         LOG.info("all " + share.count() + " robots connected " + ManagementFactory.getRuntimeMXBean().getUptime()
                                 + " ms after this JVM started (main began at " + mainMs + " ms), " + cpuMs()
@@ -117,6 +123,9 @@ public final class BenchRobots {
                 });
                 if (sampler != null) {
                     sampler.add(robot.getCounter());
+                }
+                if (marks != null) {
+                    marks.end(robot.getCounter());
                 }
                 // held until the memory is measured, so the figures count every robot
                 disconnected.countDown();
@@ -130,6 +139,9 @@ public final class BenchRobots {
             t.start();
         }
         disconnected.await();
+        if (windows != null) {
+            System.out.println(windows.clientLine());
+        }
         System.out.println(JvmMemory.clientLine(JvmMemory.figures(samples)));
         System.out.flush();
         measured.countDown();
@@ -163,10 +175,11 @@ public final class BenchRobots {
      * Runs one robot until the Environment ends the run.
      *
      * @param sampler samples the heap at this robot's steps, or {@code null}
+     * @param windows marks this JVM's windows at this robot's steps, or {@code null}
      * @return the robot, disconnected
      */
     private static ArRobot drive(String name, String host, int port, String params, BenchSensors sensors,
-                                 JvmMemory.Sampler sampler, Runnable welcomed) {
+                                 JvmMemory.Sampler sampler, StepWindows windows, Runnable welcomed) {
         ArRobot robot = new ArRobot(name, host, port, params);
         ArSick laser = null;
         if (sensors.laser()) {
@@ -190,6 +203,9 @@ public final class BenchRobots {
             ArUtil.sleep(100);
             if (sampler != null) {
                 sampler.at(robot.getCounter());
+            }
+            if (windows != null && robot.getCounter() > 0) {
+                windows.at(robot.getCounter());
             }
         }
         return robot;

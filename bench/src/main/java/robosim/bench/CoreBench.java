@@ -28,22 +28,29 @@ public final class CoreBench {
      * @param robotFile the p3dx parameter file
      * @param threads   threads that read the sensors, as the Environment's {@code --threads}; 1 for
      *                  the calling thread alone
+     * @param window    steps per window of this JVM's step rate, CPU time and allocation
+     *                  ({@link StepWindows}); 0 for none
      * @return the figures; the load time is reading the world and building the Simulation
      * @throws IOException if the world cannot be written
      */
     public static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path dir, Path robotFile,
-                                           int threads) throws IOException {
+                                           int threads, long window) throws IOException {
         try (PooledParallel parallel = new PooledParallel(threads)) {
-            return run(robots, sensors, steps, GridWorld.write(robots, dir, robotFile), parallel);
+            return run(robots, sensors, steps, GridWorld.write(robots, dir, robotFile), parallel, window);
         }
     }
 
     private static StepRateBench.Result run(int robots, BenchSensors sensors, long steps, Path worldFile,
-                                            PooledParallel parallel) {
+                                            PooledParallel parallel, long window) {
         StepRateBench.Loaded loaded = StepRateBench.load(worldFile, parallel);
         Simulation sim = loaded.sim();
         List<String> names = sim.robotNames();
         int[] none = new int[0];
+        StepWindows windows = window > 0
+                ? new StepWindows(window, () -> names.stream().filter(n -> sim.state(n).stalled()).count()) : null;
+        if (windows != null) {
+            windows.at(0);
+        }
         long start = System.nanoTime();
         for (long s = 0; s < steps; s++) {
             Map<String, List<Command>> commands = new HashMap<>();
@@ -59,8 +66,16 @@ public final class CoreBench {
                         : List.of(vel, rot));
             }
             sim.step(commands);
+            if (windows != null) {
+                windows.at(s + 1);
+            }
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new StepRateBench.Result("core", robots, sensors, 0, loaded.load(0), steps, seconds);
+        StepRateBench.Result result = new StepRateBench.Result("core", robots, sensors, 0, loaded.load(0), steps, seconds);
+        if (windows == null) {
+            return result;
+        }
+        windows.end(steps);
+        return result.withWindows(List.of(new StepRateBench.WindowReport("env", windows.windows())));
     }
 }

@@ -90,16 +90,19 @@ public final class StepRateBench {
      * @param seconds wall-clock time of the steps
      * @param memory  each JVM's memory at the end of the run over TCP: the Environment's (this JVM)
      *                first, then each client's; empty for the core alone
+     * @param windows with {@code --window}, each JVM's windows of the run (this JVM's first, then each
+     *                client's); empty without
      */
     public record Result(String run, int robots, BenchSensors sensors, int clients, Load load, long steps,
-                         double seconds, List<JvmMemory.Report> memory) {
-        /** Copies the memory figures. */
+                         double seconds, List<JvmMemory.Report> memory, List<WindowReport> windows) {
+        /** Copies the memory figures and the windows. */
         public Result {
             memory = List.copyOf(memory);
+            windows = List.copyOf(windows);
         }
 
         /**
-         * A result without memory figures, as the core alone gives.
+         * A result without memory figures nor windows.
          *
          * @param run     {@code tcp} or {@code core}
          * @param robots  robots in the grid
@@ -110,7 +113,12 @@ public final class StepRateBench {
          * @param seconds wall-clock time of the steps
          */
         public Result(String run, int robots, BenchSensors sensors, int clients, Load load, long steps, double seconds) {
-            this(run, robots, sensors, clients, load, steps, seconds, List.of());
+            this(run, robots, sensors, clients, load, steps, seconds, List.of(), List.of());
+        }
+
+        /** @return this result with the given windows */
+        Result withWindows(List<WindowReport> windows) {
+            return new Result(run, robots, sensors, clients, load, steps, seconds, memory, windows);
         }
 
         /** @return steps per second */
@@ -126,6 +134,19 @@ public final class StepRateBench {
         /** @return robots × steps per second */
         public double robotStepsPerSecond() {
             return robots * stepsPerSecond();
+        }
+    }
+
+    /**
+     * One JVM's windows of a run ({@code --window}).
+     *
+     * @param jvm     {@code env} (this JVM) or {@code client0}, {@code client1}...
+     * @param windows its windows, in order; empty if a client did not report them
+     */
+    public record WindowReport(String jvm, List<StepWindows.Window> windows) {
+        /** Copies the windows. */
+        public WindowReport {
+            windows = List.copyOf(windows);
         }
     }
 
@@ -148,13 +169,15 @@ public final class StepRateBench {
      * @param threads   threads of the Environment that read the robots' sensors ({@code --threads})
      * @param heapEvery steps between samples of each JVM's heap after its last garbage collection
      *                  ({@link JvmMemory.Sampler}, forcing none); 0 for none
+     * @param window    steps per window of each JVM's step rate, CPU time and allocation
+     *                  ({@link StepWindows}, from the first step on); 0 for none
      * @return the figures
      * @throws IOException           if the world or a client JVM cannot be started
      * @throws InterruptedException  if interrupted
      * @throws IllegalStateException if a client JVM fails or the run ends early
      */
     public static Result run(int robots, BenchSensors sensors, int clients, long steps, Path dir, Path robotFile,
-                             int threads, long heapEvery) throws IOException, InterruptedException {
+                             int threads, long heapEvery, long window) throws IOException, InterruptedException {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
         // the server hands the simulation its sensing threads
         Loaded loaded = load(worldFile, Parallel.SERIAL);
@@ -167,18 +190,19 @@ public final class StepRateBench {
         Thread stopOnExit = new Thread(() -> started.forEach(Process::destroyForcibly), "bench-stop-clients");
         Runtime.getRuntime().addShutdownHook(stopOnExit);
         JvmMemory.Sampler samples = heapEvery > 0 ? new JvmMemory.Sampler(heapEvery) : null;
+        StepWindows windows = window > 0 ? new StepWindows(window) : null;
         List<JvmMemory.Report> memory = new ArrayList<>();
         Result result;
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
             for (int c = 0; c < shares.size(); c++) {
                 Process p = clientJvm(server.robotPort(), shares.get(c), sensors, robotFile, log(dir, robots, sensors, c),
-                        heapEvery);
+                        heapEvery, window);
                 started.add(p);
                 watch.watch(p, log(dir, robots, sensors, c));
             }
             RunReport report;
-            Thread sampler = samples == null ? null : sampler(sim, samples);
+            Thread sampler = samples == null && windows == null ? null : sampler(sim, samples, windows);
             try {
                 report = server.run();
             } catch (InterruptedException e) {
@@ -200,6 +224,9 @@ public final class StepRateBench {
             if (samples != null) {
                 samples.add(report.steps());
             }
+            if (windows != null) {
+                windows.end(report.steps());
+            }
             memory.add(new JvmMemory.Report("env", JvmMemory.figures(samples)));
             Load load = loaded.load(report.connectedNanoTime() - loaded.builtAt());
             result = new Result("tcp", robots, sensors, shares.size(), load, report.steps(), report.wallNanos() / 1e9);
@@ -211,24 +238,43 @@ public final class StepRateBench {
                 // the hook runs anyway
             }
         }
+        List<WindowReport> windowReports = new ArrayList<>();
+        if (windows != null) {
+            windowReports.add(new WindowReport("env", windows.windows()));
+        }
         for (int c = 0; c < shares.size(); c++) {
-            memory.add(new JvmMemory.Report("client" + c, clientMemory(log(dir, robots, sensors, c))));
+            List<String> lines = logLines(log(dir, robots, sensors, c));
+            memory.add(new JvmMemory.Report("client" + c,
+                    JvmMemory.clientFigures(lines).orElse(Map.of("figures", JvmMemory.UNAVAILABLE))));
+            if (windows != null) {
+                windowReports.add(new WindowReport("client" + c, StepWindows.clientWindows(lines).orElse(List.of())));
+            }
         }
         return new Result(result.run(), result.robots(), result.sensors(), result.clients(), result.load(), result.steps(),
-                result.seconds(), memory);
+                result.seconds(), memory, windowReports);
     }
 
     /**
-     * Starts a thread that samples this JVM's heap each time the simulation's step count reaches
-     * the next multiple of the sampler's interval, looking every {@value #SAMPLER_POLL_MS} ms; it
-     * ends when interrupted. (It reads the step count unsynchronised: a sample may come a step or
-     * a poll late, and says at which step it was taken.)
+     * Starts a thread that samples this JVM's heap and marks its windows each time the simulation's
+     * step count reaches the next multiple of their interval, looking every {@value #SAMPLER_POLL_MS}
+     * ms; it ends when interrupted. (It reads the step count unsynchronised: a sample may come a step
+     * or a poll late, and says at which step it was taken.) The windows start at the first step, so
+     * connecting is not in them.
+     *
+     * @param samples the heap's sampler, or {@code null}
+     * @param windows the windows, or {@code null}
      */
-    private static Thread sampler(Simulation sim, JvmMemory.Sampler samples) {
+    private static Thread sampler(Simulation sim, JvmMemory.Sampler samples, StepWindows windows) {
         Thread t = new Thread(() -> {
             try {
                 while (!Thread.currentThread().isInterrupted()) {
-                    samples.at(sim.stepCount());
+                    long step = sim.stepCount();
+                    if (samples != null) {
+                        samples.at(step);
+                    }
+                    if (windows != null && step > 0) {
+                        windows.at(step);
+                    }
                     Thread.sleep(SAMPLER_POLL_MS);
                 }
             } catch (InterruptedException e) {
@@ -240,12 +286,12 @@ public final class StepRateBench {
         return t;
     }
 
-    /** @return a client JVM's figures from its log, or that they are unavailable */
-    private static Map<String, String> clientMemory(Path log) {
+    /** @return a client JVM's log, or no lines if it cannot be read */
+    private static List<String> logLines(Path log) {
         try {
-            return JvmMemory.clientFigures(Files.readAllLines(log)).orElse(Map.of("figures", JvmMemory.UNAVAILABLE));
+            return Files.readAllLines(log);
         } catch (IOException e) {
-            return Map.of("figures", JvmMemory.UNAVAILABLE);
+            return List.of();
         }
     }
 
@@ -311,7 +357,7 @@ public final class StepRateBench {
     }
 
     private static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log,
-                                     long heapEvery) throws IOException {
+                                     long heapEvery, long window) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.awt.headless=true", "-Xss256k", "-Xmx" + clientHeapMb(share.count()) + "m",
                 "-cp", System.getProperty("java.class.path")));
@@ -324,7 +370,7 @@ public final class StepRateBench {
         }
         cmd.addAll(List.of(BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
                 Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName(),
-                Long.toString(heapEvery)));
+                Long.toString(heapEvery), Long.toString(window)));
         return new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
     }
 
@@ -351,6 +397,10 @@ public final class StepRateBench {
                 + " the last GC (none forced); heap_committed_mb; gcs = GCs so far; heap_live_mb = heap used after a"
                 + " System.gc() then, the simulation or the disconnected robots still held; heap_samples ="
                 + " step:heap_gc_mb every --heap-every steps");
+        out.println("windows (--window N): after each run one win line per JVM and N steps, from the first step on:"
+                + " steps = the steps it covers, steps_per_s (wall clock), cpu_us_per_step = the JVM's CPU time (all its"
+                + " threads) per step, alloc_kb_per_step = heap its live platform threads allocated per step (KiB); in the core"
+                + " alone, stalled = robots stalled at the window's end");
         out.flush();
     }
 
@@ -369,6 +419,18 @@ public final class StepRateBench {
         for (JvmMemory.Report m : r.memory()) {
             out.printf(Locale.ROOT, "mem  robots=%-4d sensors=%-11s jvm=%-7s %s%n", r.robots(), r.sensors().label(), m.jvm(),
                     JvmMemory.fields(m.figures()));
+        }
+        for (WindowReport w : r.windows()) {
+            if (w.windows().isEmpty()) {
+                out.printf(Locale.ROOT, "win  run=%-4s robots=%-4d sensors=%-11s jvm=%-7s windows=%s%n", r.run(), r.robots(),
+                        r.sensors().label(), w.jvm(), JvmMemory.UNAVAILABLE);
+            }
+            for (StepWindows.Window x : w.windows()) {
+                out.printf(Locale.ROOT, "win  run=%-4s robots=%-4d sensors=%-11s jvm=%-7s steps=%d-%d steps_per_s=%.1f"
+                                + " cpu_us_per_step=%.1f alloc_kb_per_step=%.2f%s%n", r.run(), r.robots(), r.sensors().label(),
+                        w.jvm(), x.from(), x.to(), x.stepsPerSecond(), x.cpuMicrosPerStep(), x.allocatedKibPerStep(),
+                        x.stalled() < 0 ? "" : " stalled=" + x.stalled());
+            }
         }
         out.flush();
     }

@@ -105,10 +105,11 @@ final class Bodies {
         return true;
     }
 
-    /** A body where it stands: its shape, pose, outline, envelope and edges. */
+    /** A body where it stands: its shape, pose, outline (as a closed ring, and as a polygon), envelope and edges. */
     static final class Body {
         final BodyShape shape;
         final Pose2D pose;
+        final Coordinate[] ring;
         final Polygon polygon;
         final Envelope envelope;
         final Segment[] segments;
@@ -116,7 +117,7 @@ final class Bodies {
         Body(BodyShape shape, Pose2D pose, GeometryFactory factory) {
             this.shape = shape;
             this.pose = pose;
-            Coordinate[] ring = shape.ringAt(pose);
+            ring = shape.ringAt(pose);
             polygon = factory.createPolygon(ring);
             envelope = polygon.getEnvelopeInternal();
             segments = new Segment[ring.length - 1];

@@ -3,7 +3,6 @@ package robosim.geometry;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
-import org.locationtech.jts.algorithm.ConvexHull;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
@@ -172,7 +171,7 @@ public final class GeometryClient {
      * @return true if it touches or overlaps something
      */
     public boolean overlaps(BodyShape shape, Pose2D pose, int ignoreId) {
-        return hits(factory.createPolygon(shape.ringAt(pose)), ignoreId);
+        return hits(shape.ringAt(pose), ignoreId);
     }
 
     /**
@@ -241,24 +240,28 @@ public final class GeometryClient {
         return new SweepResult(free, freePose, true);
     }
 
+    /** Whether the hull of a body at two poses touches an obstacle or another body. */
     private boolean sweptHits(BodyShape shape, Pose2D a, Pose2D b, int ignoreId) {
-        Coordinate[] ra = shape.ringAt(a);
-        Coordinate[] rb = shape.ringAt(b);
-        Coordinate[] all = new Coordinate[ra.length + rb.length];
-        System.arraycopy(ra, 0, all, 0, ra.length);
-        System.arraycopy(rb, 0, all, ra.length, rb.length);
-        return hits(new ConvexHull(all, factory).getConvexHull(), ignoreId);
+        return hits(Rings.hull(shape.ringAt(a), shape.ringAt(b)), ignoreId);
     }
 
-    private boolean hits(Geometry g, int ignoreId) {
-        Envelope env = g.getEnvelopeInternal();
-        for (Object o : obstacleIndex.query(env)) {
-            if (((PreparedGeometry) o).intersects(g)) {
-                return true;
+    /** Whether the area a simple closed ring encloses touches an obstacle or another body. */
+    private boolean hits(Coordinate[] ring, int ignoreId) {
+        Envelope env = new Envelope();
+        for (Coordinate c : ring) {
+            env.expandToInclude(c);
+        }
+        List<?> obstacles = obstacleIndex.query(env);
+        if (!obstacles.isEmpty()) {
+            Polygon g = factory.createPolygon(ring);
+            for (Object o : obstacles) {
+                if (((PreparedGeometry) o).intersects(g)) {
+                    return true;
+                }
             }
         }
         for (Bodies.Body other : bodies.near(env, ignoreId)) {
-            if (other.polygon.intersects(g)) {
+            if (Rings.intersect(ring, other.ring)) {
                 return true;
             }
         }
@@ -348,9 +351,14 @@ public final class GeometryClient {
     }
 
     private static void addContact(Bodies.Body body, Geometry other, double tolerance, List<Double> out) {
-        if (body.polygon.isWithinDistance(other, tolerance)) {
-            Coordinate[] nearest = DistanceOp.nearestPoints(body.polygon, other);
-            Coordinate p = nearest[1];
+        if (body.envelope.distance(other.getEnvelopeInternal()) > tolerance) {
+            return;
+        }
+        // one distance computation gives both whether it is within the tolerance (as
+        // isWithinDistance would answer) and the nearest points: a body in contact needs both
+        DistanceOp distance = new DistanceOp(body.polygon, other);
+        if (distance.distance() <= tolerance) {
+            Coordinate p = distance.nearestPoints()[1];
             out.add(Math.atan2(p.y - body.pose.y(), p.x - body.pose.x()));
         }
     }

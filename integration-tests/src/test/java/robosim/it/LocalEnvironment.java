@@ -6,7 +6,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import robosim.aria.ArRobot;
 import robosim.cli.RobotProcesses;
+import robosim.examples.wander.Wander;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
@@ -89,6 +91,28 @@ final class LocalEnvironment implements AutoCloseable {
         Process p = RobotProcesses.start(className, name, server.robotPort(), log, args);
         processes.add(p);
         return p;
+    }
+
+    /**
+     * Starts a Wander program (a Pioneer as ARIA sees it) for each of the world's robots, each on a
+     * daemon thread of this JVM that ends with its run.
+     *
+     * @return the threads, in the world's order
+     */
+    List<Thread> wanderers() {
+        List<Thread> robots = new ArrayList<>();
+        for (String name : sim.robotNames()) {
+            Thread t = new Thread(() -> {
+                ArRobot robot = new ArRobot(name, "127.0.0.1", robotPort(), "p3dx");
+                if (robot.blockingConnect()) {
+                    new Wander(robot).run();
+                }
+            }, "wander-" + name);
+            t.setDaemon(true);
+            t.start();
+            robots.add(t);
+        }
+        return robots;
     }
 
     /** @return the run's report, within two minutes */

@@ -2,14 +2,11 @@ package robosim.it;
 
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import robosim.aria.ArRobot;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.examples.wander.Wander;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
 import robosim.viewer.draw.RenderOptions;
@@ -52,18 +49,7 @@ final class RecordedRun {
                             throw new IllegalStateException(e);
                         }
                     });
-            List<Thread> robots = new ArrayList<>();
-            for (String name : env.sim.robotNames()) {
-                Thread t = new Thread(() -> {
-                    ArRobot robot = new ArRobot(name, "127.0.0.1", env.robotPort(), "p3dx");
-                    if (robot.blockingConnect()) {
-                        new Wander(robot).run();
-                    }
-                }, "wander-" + name);
-                t.setDaemon(true);
-                t.start();
-                robots.add(t);
-            }
+            List<Thread> robots = env.wanderers();
             RunReport r = env.await();
             live.get(60, TimeUnit.SECONDS);
             for (Thread t : robots) {

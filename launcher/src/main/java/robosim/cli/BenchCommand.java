@@ -94,6 +94,12 @@ final class BenchCommand implements Callable<Integer> {
                     + " (none forced) and print the samples with its memory figures; 0 for none; default ${DEFAULT-VALUE}")
     long heapEvery;
 
+    @Option(names = "--window", defaultValue = "0", paramLabel = "N",
+            description = "print, after each run, for every N steps from the first on: the steps per second, and each"
+                    + " JVM's CPU time and heap allocated per step (the core alone's, and over TCP the Environment's and"
+                    + " each client's); 0 for none; default ${DEFAULT-VALUE}")
+    long window;
+
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R",
             description = "runs over TCP per robot count and sensors; the median and range are printed too; default ${DEFAULT-VALUE}")
     int repeat;
@@ -127,6 +133,10 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (heapEvery < 0) {
             err.println("robosim bench: " + heapEvery + " was supplied for --heap-every: it must be 0 (none) or more");
+            return 2;
+        }
+        if (window < 0) {
+            err.println("robosim bench: " + window + " was supplied for --window: it must be 0 (none) or more");
             return 2;
         }
         int sensingThreads = threads != null ? threads : ServerOptions.defaultThreads();
@@ -171,11 +181,11 @@ final class BenchCommand implements Callable<Integer> {
             for (BenchSensors s : sensorSets) {
                 for (int n : robots) {
                     if (!skipCore) {
-                        StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads));
+                        StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads, window));
                     }
                     List<StepRateBench.Result> runs = new ArrayList<>();
                     for (int r = 0; r < repeat; r++) {
-                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads, heapEvery);
+                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads, heapEvery, window);
                         StepRateBench.print(o, tcp);
                         runs.add(tcp);
                     }

@@ -172,7 +172,8 @@ class CommandLineTest {
             "--sensors sonar,sky | sky was supplied for --sensors: sensors are sonar or laser",
             "--clients 0         | 0 was supplied for --clients: client JVMs are 1 to 64",
             "--repeat 0          | 0 was supplied for --repeat: it must be at least 1",
-            "--heap-every -1     | -1 was supplied for --heap-every: it must be 0 (none) or more"})
+            "--heap-every -1     | -1 was supplied for --heap-every: it must be 0 (none) or more",
+            "--window -1         | -1 was supplied for --window: it must be 0 (none) or more"})
     void benchWithAnInvalidOptionExitsWith2AndSaysWhyBeforeMeasuringAnything(String args, String message) {
         java.util.List<String> line = new java.util.ArrayList<>(java.util.List.of("bench", "--out", dir.toString()));
         line.addAll(java.util.List.of(args.split(" ")));

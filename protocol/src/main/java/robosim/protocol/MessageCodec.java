@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.exc.InvalidTypeIdException;
 import com.fasterxml.jackson.databind.exc.ValueInstantiationException;
+import com.fasterxml.jackson.databind.module.SimpleModule;
 import com.fasterxml.jackson.dataformat.smile.SmileFactory;
 import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
 import java.io.IOException;
@@ -41,6 +42,7 @@ public final class MessageCodec {
                 : new ObjectMapper(JsonFactory.builder().recyclerPool(JsonRecyclerPools.newConcurrentDequePool()).build());
         m.enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
         m.enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES);
+        m.registerModule(new SimpleModule("robosim-text").addDeserializer(String.class, new UnicodeTextDeserializer()));
         this.mapper = m;
     }
 
@@ -57,35 +59,49 @@ public final class MessageCodec {
     }
 
     /**
+     * Decodes a payload from a peer. The reason of every exception is safe to log in one line: what
+     * the peer wrote is quoted with characters outside printable ASCII escaped, and cut short.
+     *
      * @param payload a frame's payload
      * @return the message it holds
      * @throws InvalidValueException if the payload is a message whose values break a rule of their
      *                               record, such as a non-finite velocity
-     * @throws FrameException        if the payload is not a message of a known type
+     * @throws FrameException        if the payload is not a message of a known type, or holds text
+     *                               that is not valid UTF-8
      */
     public Message decode(byte[] payload) throws FrameException {
+        Message m;
         try {
-            Message m = mapper.readValue(payload, Message.class);
-            if (m == null) {
-                throw new FrameException("empty message");
-            }
-            return m;
+            m = mapper.readValue(payload, Message.class);
         } catch (InvalidTypeIdException e) {
             if (e.getTypeId() == null) {
-                throw new FrameException("no message type in frame of " + payload.length + " bytes: "
-                        + e.getOriginalMessage());
+                throw undecodable("no message type in frame of " + payload.length + " bytes: ", e.getOriginalMessage());
             }
-            throw new FrameException("unknown message type '" + e.getTypeId() + "'");
+            throw undecodable("unknown message type ", "'" + e.getTypeId() + "'");
         } catch (JsonProcessingException e) {
             // a record's constructor refused a value: the frame was sound, the message breaks a rule
             if (e instanceof ValueInstantiationException && e.getCause() instanceof IllegalArgumentException rule) {
-                throw new InvalidValueException(rule.getMessage());
+                throw new InvalidValueException(printable(rule.getMessage()));
             }
-            throw new FrameException("undecodable frame of " + payload.length + " bytes: "
-                    + e.getOriginalMessage());
+            throw undecodable("undecodable frame of " + payload.length + " bytes: ", e.getOriginalMessage());
         } catch (IOException e) {
-            throw new FrameException("undecodable frame of " + payload.length + " bytes: " + e.getMessage());
+            throw undecodable("undecodable frame of " + payload.length + " bytes: ", e.getMessage());
+        } catch (RuntimeException e) {
+            // Jackson's own slip on hostile bytes (a type name that is binary data met a null check)
+            throw undecodable("undecodable frame of " + payload.length + " bytes: ", "the decoder failed with " + e);
         }
+        if (m == null) {
+            throw new FrameException("empty message: a frame of " + payload.length + " bytes holds null");
+        }
+        return m;
     }
 
+    private static FrameException undecodable(String what, String quoted) {
+        return new FrameException(what + printable(quoted));
+    }
+
+    /** The peer's words, escaped (see {@link RobotHello#printable(String, int)}) and cut after 300 characters. */
+    private static String printable(String text) {
+        return RobotHello.printable(text, 300);
+    }
 }

@@ -54,19 +54,29 @@ public record RobotHello(String name, String robotType, RobotParameters paramete
      * @return it, safe to print ({@code no name} for null)
      */
     public static String printable(String name) {
-        if (name == null) {
-            return "no name";
-        }
+        return name == null ? "no name" : printable(name, 80);
+    }
+
+    /**
+     * Any text from the wire as it may go into a log line, escaped as {@link #printable(String)}
+     * escapes a name.
+     *
+     * @param text any text, or null (written {@code null})
+     * @param max  the characters kept before it is cut short
+     * @return it, safe to print
+     */
+    public static String printable(String text, int max) {
+        String s = String.valueOf(text);
         StringBuilder b = new StringBuilder();
-        for (int i = 0; i < Math.min(name.length(), 80); i++) {
-            char c = name.charAt(i);
+        for (int i = 0; i < Math.min(s.length(), max); i++) {
+            char c = s.charAt(i);
             if (c >= 0x20 && c < 0x7f && c != '\\') {
                 b.append(c);
             } else {
                 b.append(String.format("\\u%04x", (int) c));
             }
         }
-        return b.append(name.length() > 80 ? "... (" + name.length() + " characters)" : "").toString();
+        return b.append(s.length() > max ? "... (" + s.length() + " characters)" : "").toString();
     }
 
     /**

@@ -7,7 +7,11 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robosim.protocol.RecordAssert.assertDeepEquals;
 
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.dataformat.smile.SmileFactory;
 import com.fasterxml.jackson.dataformat.smile.databind.SmileMapper;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -366,5 +370,61 @@ class MessageCodecTest {
         byte[] payload = "null".getBytes(StandardCharsets.UTF_8);
 
         assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+    }
+
+    /**
+     * Smile carries text as UTF-8, and Jackson's Smile parser reads the 3-byte form of a lone
+     * surrogate (not UTF-8) into a string that no encoder can write again: an Environment passing it
+     * on (a robot's words to the viewers, its type in a refusal) failed in its step loop.
+     */
+    @Test
+    void textThatIsNotUtf8IsRefused() throws IOException {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        try (JsonGenerator g = new SmileFactory().createGenerator(out)) {
+            g.writeStartObject();
+            g.writeStringField("type", "viewerHello");
+            g.writeFieldName("name");
+            g.writeUTF8String(new byte[] {'v', (byte) 0xed, (byte) 0xa0, (byte) 0x80}, 0, 4);
+            g.writeEndObject();
+        }
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec().decode(out.toByteArray()));
+
+        assertTrue(e.getMessage().contains("text with a lone surrogate at character 1: text must be valid UTF-8"),
+                e.getMessage());
+    }
+
+    @Test
+    void aLoneSurrogateEscapedInJsonIsRefused() {
+        byte[] requests = ("{\"type\":\"robotRequests\",\"step\":1,\"commands\":[{\"cmd\":\"say\","
+                + "\"text\":\"a\\udc00\"}]}").getBytes(StandardCharsets.UTF_8);
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(requests));
+
+        assertTrue(e.getMessage().contains("text with a lone surrogate at character 1"), e.getMessage());
+    }
+
+    /** Jackson failed with a NullPointerException on an array whose first element is binary, not a type name. */
+    @Test
+    void aTypeNameThatIsBinaryIsAFrameError() {
+        byte[] payload = {0x3a, 0x29, 0x0a, 0x01, (byte) 0xf8, (byte) 0xe8, (byte) 0x81, 0, 0, (byte) 0xf9};
+
+        FrameException e = assertThrows(FrameException.class, () -> new MessageCodec().decode(payload));
+
+        assertTrue(e.getMessage().startsWith("undecodable frame of 10 bytes: "), e.getMessage());
+    }
+
+    /** A reason goes into the Environment's log line about the peer: what the peer wrote cannot start a line of its own. */
+    @Test
+    void aReasonQuotingThePeerCannotForgeALogLine() {
+        byte[] field = "{\"type\":\"bye\",\"reason\":\"x\",\"a\\nSEVERE: forged\":1}".getBytes(StandardCharsets.UTF_8);
+        byte[] type = "{\"type\":\"x\\nSEVERE: forged\"}".getBytes(StandardCharsets.UTF_8);
+
+        for (byte[] payload : List.of(field, type)) {
+            FrameException e = assertThrows(FrameException.class, () -> new MessageCodec(Format.JSON).decode(payload));
+
+            assertTrue(e.getMessage().chars().allMatch(c -> c >= 0x20 && c < 0x7f), e.getMessage());
+            assertTrue(e.getMessage().contains("\\u000aSEVERE: forged"), e.getMessage());
+        }
     }
 }

@@ -5,6 +5,9 @@ import robosim.protocol.SonarUnit;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -45,13 +48,34 @@ public final class ParameterFileReader {
      * @throws UncheckedIOException   when the file cannot be read
      */
     public static RobotParameters read(Path file) {
-        List<String> lines;
+        byte[] bytes;
         try {
-            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            bytes = Files.readAllBytes(file);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read robot parameter file " + file, e);
         }
-        return parse(file, lines);
+        return parse(file, lines(file, bytes));
+    }
+
+    /**
+     * @return the file's lines, read as UTF-8 (a leading byte order mark skipped)
+     * @throws ParameterFileException naming the line and the offset of the first byte that is not UTF-8
+     */
+    private static List<String> lines(Path file, byte[] bytes) {
+        ByteBuffer in = ByteBuffer.wrap(bytes);
+        CharBuffer text = CharBuffer.allocate(bytes.length);
+        CoderResult result = StandardCharsets.UTF_8.newDecoder().decode(in, text, true);
+        if (result.isError()) {
+            int at = in.position();
+            int line = 1;
+            for (int i = 0; i < at; i++) {
+                line += bytes[i] == '\n' || bytes[i] == '\r' && bytes[i + 1] != '\n' ? 1 : 0;
+            }
+            throw new ParameterFileException(file, line, String.format(
+                    "byte 0x%02x at byte offset %d is not UTF-8: a parameter file is UTF-8 text", bytes[at] & 0xff, at));
+        }
+        String s = text.flip().toString();
+        return (s.startsWith("\ufeff") ? s.substring(1) : s).lines().toList();
     }
 
     static RobotParameters parse(Path file, List<String> lines) {

@@ -193,6 +193,24 @@ class ParameterFileReaderTest {
 
     // --- broken files name the file, the line and the rule ---
 
+    /** Such a file was "cannot read robot parameter file", with the decoder's "Input length = 1" as the cause. */
+    @Test
+    void aByteThatIsNotUtf8IsNamedWithItsLineAndOffset() throws IOException {
+        Path file = dir.resolve("latin1.p");
+        Files.write(file, "ConfigVersion 2.0\r\nClass Pioneer\r\nSubclass caf\u00e9\r\n".getBytes(StandardCharsets.ISO_8859_1));
+
+        ParameterFileException e = assertThrows(ParameterFileException.class, () -> ParameterFileReader.read(file));
+
+        assertNamesFileLineAndRule(file, 3, "byte 0xe9 at byte offset 46 is not UTF-8: a parameter file is UTF-8 text", e);
+    }
+
+    @Test
+    void aByteOrderMarkIsSkipped() throws IOException {
+        Path file = write("bom.p", "\ufeffConfigVersion 2.0\nRobotWidth 425\n");
+
+        assertEquals(425, ParameterFileReader.read(file).robotWidth());
+    }
+
     @Test
     void keyBeforeConfigVersionIsRejected() throws IOException {
         Path file = write("noversion.p", """

@@ -17,6 +17,7 @@ import robosim.protocol.FrameDecoder;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
+import robosim.protocol.RobotHello;
 
 /**
  * One peer of the Environment, robot or viewer, on a non-blocking channel served by the step
@@ -62,13 +63,16 @@ final class Connection {
         this.key = channel.register(selector, SelectionKey.OP_READ, this);
     }
 
-    /** @return the robot's or viewer's name once it has said hello, the link's client, else its address */
+    /**
+     * @return the robot's or viewer's name once it has said hello, the link's client, else its
+     *         address; a name the peer chose is escaped, so that it cannot break a log line
+     */
     String peer() {
         if (link) {
-            return "link of " + name + " at " + address;
+            return "link of " + RobotHello.printable(name) + " at " + address;
         }
         String k = control ? "control client" : kind.name().toLowerCase();
-        return name != null ? k + " " + name : k + " at " + address;
+        return name != null ? k + " " + RobotHello.printable(name) : k + " at " + address;
     }
 
     /**

@@ -220,7 +220,7 @@ final class SessionRules {
                     refuse(c, refusal);
                     return;
                 }
-                c.becomeLink(RobotHello.printable(hello.client()));
+                c.becomeLink(hello.client());
                 LOG.fine(() -> "a shared link opened: " + c.peer());
             } else {
                 c.close("expected robotHello or linkHello as its first message, got " + typeOf(m));
@@ -228,8 +228,8 @@ final class SessionRules {
         } else if (m instanceof RobotRequests req) {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + bye.reason());
-            departed(c.name(), Departure.Kind.LEFT, bye.reason());
+            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+            departed(c.name(), Departure.Kind.LEFT, printable(bye.reason()));
             c.shut();
             drop(c.name(), null);
         } else {
@@ -249,14 +249,14 @@ final class SessionRules {
             hello(c, hello);
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
-                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + bye.reason());
-                departed(bye.robot(), Departure.Kind.LEFT, bye.reason());
+                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+                departed(bye.robot(), Departure.Kind.LEFT, printable(bye.reason()));
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + bye.reason());
+            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
             for (String robot : c.robots()) {
-                departed(robot, Departure.Kind.LEFT, bye.reason());
+                departed(robot, Departure.Kind.LEFT, printable(bye.reason()));
                 drop(robot, null);
             }
             c.shut();
@@ -318,7 +318,7 @@ final class SessionRules {
         String declared = sim.world().robots().stream().filter(r -> r.name().equals(hello.name()))
                 .findFirst().orElseThrow().type();
         if (!declared.equalsIgnoreCase(hello.robotType())) {
-            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + hello.robotType();
+            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + printable(hello.robotType());
         }
         if (robots.containsKey(hello.name())) {
             return "robot " + hello.name() + " is already connected";
@@ -391,8 +391,9 @@ final class SessionRules {
     }
 
     private void viewerHello(Connection c, ViewerHello hello) {
-        String name = hello.name() != null ? RobotHello.printable(hello.name()) : "(unnamed)";
-        String refusal = access.publicView() ? null : secretRefusal("viewer " + name, hello.token());
+        String name = hello.name() != null ? hello.name() : "(unnamed)";
+        String refusal = access.publicView() ? null : secretRefusal("viewer " + RobotHello.printable(name),
+                hello.token());
         if (refusal == null) {
             viewers.removeIf(Connection::isClosed);
             if (viewers.size() >= limits.maxViewers()) {
@@ -408,12 +409,12 @@ final class SessionRules {
         viewers.add(c);
         c.send(sim.description());
         c.send(sim.snapshot());
-        LOG.info(() -> "viewer " + name + " attached at step " + sim.stepCount());
+        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
     }
 
     private void controlHello(Connection c, ControlHello hello) {
-        String name = hello.name() != null ? RobotHello.printable(hello.name()) : "(unnamed)";
-        String refusal = secretRefusal("control client " + name, hello.token());
+        String name = hello.name() != null ? hello.name() : "(unnamed)";
+        String refusal = secretRefusal("control client " + RobotHello.printable(name), hello.token());
         if (refusal == null) {
             controls.removeIf(Connection::isClosed);
             if (controls.size() >= limits.maxControls()) {
@@ -428,7 +429,7 @@ final class SessionRules {
         c.setName(name);
         c.becomeControl();
         controls.add(c);
-        LOG.info(() -> "control client " + name + " attached at step " + sim.stepCount());
+        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
     }
 
     private void commsUpdate(Connection c, CommsUpdate u) {
@@ -526,6 +527,11 @@ final class SessionRules {
         } else {
             c.sendAndClose(new Bye("goodbye"));
         }
+    }
+
+    /** @return text a peer chose, escaped for one log line (see {@link RobotHello#printable(String, int)}) */
+    private static String printable(String text) {
+        return RobotHello.printable(text, 300);
     }
 
     private static String typeOf(Message m) {

@@ -93,6 +93,19 @@ class DeparturesTest {
     }
 
     @Test
+    void aByesReasonCannotForgeALineOfTheRunReport() throws IOException {
+        Peer r1 = robot("r1");
+        robot("r2");
+        rules.openStep(3);
+
+        r1.send(new Bye("done\nrobot r2: pose (0, 0, 0.0) travelled 0 mm"));
+        deliver(r1);
+
+        String reason = rules.departures().get(0).reason();
+        assertTrue(!reason.contains("\n") && reason.startsWith("done\\u000a"), reason);
+    }
+
+    @Test
     void aRobotWhoseConnectionClosesWithoutAByeIsMarkedLost() throws IOException {
         Peer r1 = robot("r1");
         robot("r2");

@@ -25,7 +25,8 @@ import robosim.protocol.WorldDescription;
 public final class RecordingReader implements Closeable {
     private final InputStream in;
     private final String name;
-    private final MessageCodec codec = new MessageCodec();
+    /** One codec for all: Jackson builds its (de)serializers once per codec, which costs more than a short recording. */
+    private static final MessageCodec CODEC = new MessageCodec();
     private final RecordCodec records = new RecordCodec();
     private final int version;
     private final boolean sensors;
@@ -162,7 +163,7 @@ public final class RecordingReader implements Closeable {
         Message m;
         try {
             smile = records.decode(data, dictionary);
-            m = codec.decode(smile);
+            m = CODEC.decode(smile);
         } catch (DataFormatException | FrameException e) {
             throw corrupt(at, "the " + RecordingFormat.describe(kind) + " record cannot be decoded: " + e.getMessage(), e);
         }

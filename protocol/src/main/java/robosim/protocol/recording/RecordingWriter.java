@@ -23,7 +23,8 @@ public final class RecordingWriter implements SnapshotListener {
     private final OutputStream out;
     private final String name;
     private final boolean sensors;
-    private final MessageCodec codec = new MessageCodec();
+    /** One codec for all: Jackson builds its (de)serializers once per codec, which costs more than a short recording. */
+    private static final MessageCodec CODEC = new MessageCodec();
     private final RecordCodec records = new RecordCodec();
     private byte[] previousSnapshot;
     private long bytes;
@@ -74,7 +75,7 @@ public final class RecordingWriter implements SnapshotListener {
 
     @Override
     public void world(WorldDescription world) throws IOException {
-        put(records.encode(RecordingFormat.WORLD, codec.encode(world), null));
+        put(records.encode(RecordingFormat.WORLD, CODEC.encode(world), null));
         worldWritten = true;
     }
 
@@ -84,7 +85,7 @@ public final class RecordingWriter implements SnapshotListener {
             throw new IllegalStateException("snapshot of step " + snapshot.step() + " for " + name
                     + " before the world: a recording starts with its world");
         }
-        byte[] message = codec.encode(sensors ? snapshot : withoutSensors(snapshot));
+        byte[] message = CODEC.encode(sensors ? snapshot : withoutSensors(snapshot));
         put(records.encode(RecordingFormat.SNAPSHOT, message, previousSnapshot));
         previousSnapshot = message;
         snapshots++;
@@ -92,7 +93,7 @@ public final class RecordingWriter implements SnapshotListener {
 
     @Override
     public void end(String reason) throws IOException {
-        put(records.encode(RecordingFormat.END, codec.encode(new Bye(reason)), null));
+        put(records.encode(RecordingFormat.END, CODEC.encode(new Bye(reason)), null));
     }
 
     private void put(byte[] record) throws IOException {

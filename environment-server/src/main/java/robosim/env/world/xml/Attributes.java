@@ -2,6 +2,7 @@ package robosim.env.world.xml;
 
 import java.nio.file.Path;
 import java.util.regex.Pattern;
+import robosim.env.world.World;
 
 /**
  * Checks and converts attribute text for one world file, reporting each broken rule with the
@@ -62,6 +63,19 @@ final class Attributes {
     /** @return the value as a finite number, or {@code fallback} when it is absent */
     double number(Element element, String attribute, String value, double fallback) {
         return value == null ? fallback : number(element, attribute, value);
+    }
+
+    /**
+     * @return the value as a coordinate, a number from -{@link World#MAX_SIZE} to {@link World#MAX_SIZE};
+     *         it must be present (a single number of a list, such as a polygon's points, is named by the list)
+     */
+    double coordinate(Element element, String attribute, String value) {
+        double v = number(element, attribute, value);
+        if (Math.abs(v) > World.MAX_SIZE) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> holds " + format(v)
+                    + " but a coordinate must be from " + format(-World.MAX_SIZE) + " to " + format(World.MAX_SIZE));
+        }
+        return v;
     }
 
     /** @return the value as a number greater than 0; it must be present */

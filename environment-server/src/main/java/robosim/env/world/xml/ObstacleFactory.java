@@ -8,6 +8,7 @@ import org.locationtech.jts.operation.valid.IsValidOp;
 import org.locationtech.jts.operation.valid.TopologyValidationError;
 import robosim.geometry.GeometryClient;
 import robosim.env.world.Obstacle;
+import robosim.env.world.World;
 
 /**
  * Turns {@code <wall>} and {@code <polygon>} elements into {@link Obstacle}s, checking their
@@ -28,11 +29,12 @@ final class ObstacleFactory {
     }
 
     Obstacle wall(WallElement e) {
-        double x1 = attributes.number(e, "x1", e.x1);
-        double y1 = attributes.number(e, "y1", e.y1);
-        double x2 = attributes.number(e, "x2", e.x2);
-        double y2 = attributes.number(e, "y2", e.y2);
-        double thickness = attributes.positive(e, "thickness", e.thickness, WALL_THICKNESS);
+        double x1 = attributes.coordinate(e, "x1", e.x1);
+        double y1 = attributes.coordinate(e, "y1", e.y1);
+        double x2 = attributes.coordinate(e, "x2", e.x2);
+        double y2 = attributes.coordinate(e, "y2", e.y2);
+        double thickness = attributes.atMost(e, "thickness",
+                attributes.positive(e, "thickness", e.thickness, WALL_THICKNESS), World.MAX_SIZE);
         double height = attributes.positive(e, "height", e.height, HEIGHT);
         if (x1 == x2 && y1 == y2) {
             throw attributes.error(e, "wall from (" + Attributes.format(x1) + ", " + Attributes.format(y1)
@@ -96,7 +98,7 @@ final class ObstacleFactory {
         }
         double[] xy = new double[words.length];
         for (int i = 0; i < words.length; i++) {
-            xy[i] = attributes.number(e, "points", words[i]);
+            xy[i] = attributes.coordinate(e, "points", words[i]);
         }
         return xy;
     }

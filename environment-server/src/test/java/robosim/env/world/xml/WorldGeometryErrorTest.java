@@ -108,4 +108,23 @@ class WorldGeometryErrorTest {
         failsWith("<wall x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" thickness=\"-10\"/>",
                 "attribute thickness on <wall> is -10 but must be greater than 0");
     }
+
+    /** A point this far out made the reader's geometry grid infinitely large: it failed with an ArrayIndexOutOfBoundsException. */
+    @Test
+    void aPolygonPointBeyondAHundredKilometresIsRefused() {
+        failsWith("<polygon points=\"0,0 100,0 -5e8,100\"/>",
+                "attribute points on <polygon> holds -500000000 but a coordinate must be from -100000000 to 100000000");
+    }
+
+    @Test
+    void aWallEndBeyondAHundredKilometresIsRefused() {
+        failsWith("<wall x1=\"0\" y1=\"0\" x2=\"100\" y2=\"1e9\"/>",
+                "attribute y2 on <wall> holds 1000000000 but a coordinate must be from -100000000 to 100000000");
+    }
+
+    @Test
+    void aWallThickerThanAHundredKilometresIsRefused() {
+        failsWith("<wall x1=\"0\" y1=\"0\" x2=\"100\" y2=\"0\" thickness=\"2e8\"/>",
+                "attribute thickness on <wall> is 200000000 but must be at most 100000000");
+    }
 }
