@@ -159,6 +159,8 @@ class RobotProgramEndsTest {
             assertEquals(4, robot.awaitExit(60), robot.output());
             assertTrue(robot.lines().contains("robosim robot: robot r9 was refused by the Environment at 127.0.0.1:"
                     + h.robotPort() + " before step 1: world empty-room has no robot named 'r9'"), robot.output());
+            h.wanderers();
+            assertEquals("step limit 1 reached", h.await().endReason(), "the world's own robots ran");
         }
     }
 }

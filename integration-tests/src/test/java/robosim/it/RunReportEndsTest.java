@@ -44,20 +44,29 @@ class RunReportEndsTest {
         return ParameterFileReader.read(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.p"));
     }
 
-    /** Says hello as each robot, answers step 1 with nothing, and reads step 2 as it opens. */
-    private static void joinAndReachStep2(List<RawPeer> peers, List<String> names) throws IOException {
+    /**
+     * Says hello as each robot of {@code peers}, answers step 1 for them and for {@code welcomed}
+     * (robots already welcomed) with nothing, and reads step 2 as it opens, if the run goes on.
+     */
+    private static void joinAndAnswerStep1(List<RawPeer> peers, List<String> names, RawPeer... welcomed)
+            throws IOException {
         for (int i = 0; i < peers.size(); i++) {
             peers.get(i).send(new RobotHello(names.get(i), "pioneer", p3dx()));
         }
         for (RawPeer peer : peers) {
             assertInstanceOf(Welcome.class, nextStepOrWelcome(peer));
         }
-        for (RawPeer peer : peers) {
+        List<RawPeer> all = new java.util.ArrayList<>(peers);
+        all.addAll(List.of(welcomed));
+        for (RawPeer peer : all) {
             TimeStep first = assertInstanceOf(TimeStep.class, nextStepOrWelcome(peer));
             peer.send(new RobotRequests(first.step(), List.of()));
         }
-        for (RawPeer peer : peers) {
-            assertEquals(2, assertInstanceOf(TimeStep.class, nextStepOrWelcome(peer)).step());
+        for (RawPeer peer : all) {
+            Message next = nextStepOrWelcome(peer);
+            if (!(next instanceof Bye)) {
+                assertEquals(2, assertInstanceOf(TimeStep.class, next).step());
+            }
         }
     }
 
@@ -96,7 +105,7 @@ class RunReportEndsTest {
             }, "robot-r1");
             r1.setDaemon(true);
             r1.start();
-            joinAndReachStep2(List.of(r2, r3, r4), List.of("r2", "r3", "r4"));
+            joinAndAnswerStep1(List.of(r2, r3, r4), List.of("r2", "r3", "r4"));
 
             r2.send(new Bye("its work is done"));
             r3.close(); // gone without a bye, as a robot program that died
@@ -120,13 +129,18 @@ class RunReportEndsTest {
     @Test
     void aRobotWaitingForTheOthersToConnectHearsKeepAlivesMeanwhile() throws Exception {
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(1));
-             RawPeer r1 = new RawPeer(h.robotPort())) {
+             RawPeer r1 = new RawPeer(h.robotPort());
+             RawPeer r2 = new RawPeer(h.robotPort())) {
             r1.send(new RobotHello("r1", "pioneer", p3dx()));
             assertInstanceOf(Welcome.class, r1.read());
 
             // r2 has not connected: the run waits, and says so again and again (each read waits at most 20 s)
             assertEquals(new KeepAlive(0), r1.read());
             assertEquals(new KeepAlive(0), r1.read());
+
+            // then r2 comes, and the run of one step is run and ended (not cut off by closing the server)
+            joinAndAnswerStep1(List.of(r2), List.of("r2"), r1);
+            assertEquals("step limit 1 reached", h.await().endReason());
         }
     }
 }
