@@ -36,6 +36,22 @@ public record Access(String secret, boolean publicView) {
         return secret != null;
     }
 
+    /**
+     * What a hello's secret says.
+     *
+     * @param who       the peer, for the reason
+     * @param presented the secret it presented, or null
+     * @return why it is refused, or null if it may go on (always, when the run has no secret)
+     */
+    String refusal(String who, String presented) {
+        if (!guarded() || RunSecret.matches(secret, presented)) {
+            return null;
+        }
+        return who + (presented == null ? " presented no run secret" : " presented a wrong run secret")
+                + "; this Environment admits only those who present the secret it printed at its start (a --token"
+                + " option, the " + RunSecret.ENV + " variable, or the file it wrote)";
+    }
+
     /** @return the secret masked, so that the record never prints it */
     @Override
     public String toString() {

@@ -119,7 +119,7 @@ final class Connection {
         if (reason != null) {
             LOG.warning(() -> "closing robot " + robot + ": " + reason);
         }
-        send(new Bye(reason != null ? reason : "goodbye", robot));
+        send(new Bye(reason != null ? reason : Bye.GOODBYE, robot));
     }
 
     void setName(String name) {
@@ -231,6 +231,17 @@ final class Connection {
         } catch (IOException e) {
             close("write failed: " + e.getMessage());
         }
+    }
+
+    /**
+     * Refuses a peer that has not been admitted: one log line naming it and the reason, a
+     * {@link Bye} with the reason, and the connection closes once that is written.
+     *
+     * @param reason why
+     */
+    void refuse(String reason) {
+        LOG.warning(() -> "refusing " + peer() + ": " + reason);
+        sendAndClose(new Bye(Bye.REFUSED + reason));
     }
 
     /** Sends a last message, then closes once it is written. */

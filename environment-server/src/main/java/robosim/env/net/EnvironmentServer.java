@@ -2,13 +2,10 @@ package robosim.env.net;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
-import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
@@ -49,12 +46,6 @@ import robosim.protocol.recording.SnapshotListeners;
  */
 public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
-    private static final long MAX_QUEUED_ROBOT = 1 << 20;
-    /** How often the caps on waiting and idle connections are checked. */
-    private static final long HOUSEKEEPING_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
-    /** How long accepting pauses after it failed, so that a full file table does not spin the loop. */
-    private static final long ACCEPT_PAUSE_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
-    private static final long LOG_PERIOD_NANOS = TimeUnit.SECONDS.toNanos(10);
     /** Robots whose states share one {@link TimeSteps} frame. */
     static final int ROBOTS_PER_FRAME = 100;
     /** How long robots may hear nothing from the Environment before it sends them a {@link KeepAlive}, ms. */
@@ -66,18 +57,9 @@ public final class EnvironmentServer implements AutoCloseable {
     private final SessionRules rules;
     private final PooledParallel workers;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
-    private final List<Connection> all = new ArrayList<>();
+    private final Doorway doorway;
     private final SnapshotListeners listeners = new SnapshotListeners();
-    private final RateLimitedLog acceptFailures = new RateLimitedLog(LOG, "accept failures", LOG_PERIOD_NANOS);
-    private final RateLimitedLog turnedAway = new RateLimitedLog(LOG, "connections turned away or timed out",
-            LOG_PERIOD_NANOS);
-    private long nextHousekeeping;
-    private long acceptPausedUntil;
-    private boolean acceptPaused;
-    private boolean pausedForPending;
     private Selector selector;
-    private ServerSocketChannel robotChannel;
-    private ServerSocketChannel viewerChannel;
     private long sentToRobotsNanos = System.nanoTime();
 
     /**
@@ -94,6 +76,7 @@ public final class EnvironmentServer implements AutoCloseable {
         this.sim = sim;
         this.options = options;
         this.rules = new SessionRules(sim, options.access(), options.limits());
+        this.doorway = new Doorway(options, codec, rules);
         this.workers = new PooledParallel(options.threads());
         sim.setParallel(workers);
     }
@@ -106,23 +89,8 @@ public final class EnvironmentServer implements AutoCloseable {
      *                               secret: anyone who could reach the ports could join, watch and change the run
      */
     public void bind() throws IOException {
-        InetAddress addr = InetAddress.getByName(options.bindAddress());
-        if (!addr.isLoopbackAddress() && !options.access().guarded()) {
-            throw new IllegalStateException("refusing to listen on " + options.bindAddress() + " without a run secret:"
-                    + " anyone who can reach that address could join, watch and change the run; give the run a"
-                    + " secret, or listen on 127.0.0.1");
-        }
         selector = Selector.open();
-        robotChannel = listen(new InetSocketAddress(addr, options.robotPort()), Connection.Kind.ROBOT);
-        viewerChannel = listen(new InetSocketAddress(addr, options.viewerPort()), Connection.Kind.VIEWER);
-    }
-
-    private ServerSocketChannel listen(InetSocketAddress at, Connection.Kind kind) throws IOException {
-        ServerSocketChannel ch = ServerSocketChannel.open();
-        ch.bind(at, 128);
-        ch.configureBlocking(false);
-        ch.register(selector, SelectionKey.OP_ACCEPT, kind);
-        return ch;
+        doorway.bind(selector);
     }
 
     /**
@@ -139,12 +107,12 @@ public final class EnvironmentServer implements AutoCloseable {
 
     /** @return the port robots connect to */
     public int robotPort() {
-        return robotChannel.socket().getLocalPort();
+        return doorway.robotPort();
     }
 
     /** @return the port viewers connect to */
     public int viewerPort() {
-        return viewerChannel.socket().getLocalPort();
+        return doorway.viewerPort();
     }
 
     /**
@@ -164,13 +132,13 @@ public final class EnvironmentServer implements AutoCloseable {
         String reason = loop();
         List<Departure> departures = rules.departures();
         long wall = System.nanoTime() - started;
-        listeners.end("done: " + reason);
+        listeners.end(Bye.DONE + reason);
         listeners.close();
-        for (Connection c : all) {
-            c.sendAndClose(new Bye("done: " + reason));
+        for (Connection c : doorway.connections()) {
+            c.sendAndClose(new Bye(Bye.DONE + reason));
         }
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(2);
-        while (all.stream().anyMatch(c -> !c.isClosed()) && System.nanoTime() < deadline) {
+        while (doorway.connections().stream().anyMatch(c -> !c.isClosed()) && System.nanoTime() < deadline) {
             pump(deadline);
         }
         List<RobotSummary> summaries = new ArrayList<>();
@@ -287,11 +255,8 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Serves every ready connection once, waiting until something is ready or the deadline. */
     private void pump(long deadlineNanos) throws InterruptedException {
         long now = System.nanoTime();
-        if (now - nextHousekeeping >= 0) {
-            housekeeping(now);
-            nextHousekeeping = now + HOUSEKEEPING_NANOS;
-        }
-        long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(Math.min(deadlineNanos, nextHousekeeping) - now));
+        long nextCheck = doorway.check(now);
+        long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(Math.min(deadlineNanos, nextCheck) - now));
         try {
             selector.select(waitMs);
         } catch (IOException e) {
@@ -308,15 +273,12 @@ public final class EnvironmentServer implements AutoCloseable {
                 continue;
             }
             if (key.isAcceptable()) {
-                accept((ServerSocketChannel) key.channel(), (Connection.Kind) key.attachment());
+                doorway.accept((ServerSocketChannel) key.channel(), (Connection.Kind) key.attachment());
             } else {
                 serve((Connection) key.attachment(), key);
             }
         }
-        if (pausedForPending) {
-            // a burst of honest robots says hello at once: take the next ones as soon as these have
-            resumeAccepting(System.nanoTime());
-        }
+        doorway.served();
         keepRobotsAlive();
     }
 
@@ -333,134 +295,11 @@ public final class EnvironmentServer implements AutoCloseable {
         }
         sentToRobotsNanos = now;
         ByteBuffer frame = FrameWriter.frame(codec, new KeepAlive(sim.stepCount()));
-        for (Connection c : all) {
+        for (Connection c : doorway.connections()) {
             if (c.kind == Connection.Kind.ROBOT && (c.isLink() || c.name() != null)) {
                 c.sendFrame(frame.duplicate());
             }
         }
-    }
-
-    private void accept(ServerSocketChannel server, Connection.Kind kind) {
-        SocketChannel ch;
-        try {
-            ch = server.accept();
-        } catch (IOException e) {
-            // most often the file table is full: stop accepting a moment instead of spinning on it
-            long now = System.nanoTime();
-            acceptFailures.warn(now, () -> "accepting a " + kind.name().toLowerCase() + " connection failed: "
-                    + e.getMessage() + "; accepting pauses " + TimeUnit.NANOSECONDS.toMillis(ACCEPT_PAUSE_NANOS)
-                    + " ms");
-            pauseAccepting(now);
-            return;
-        }
-        if (ch == null) {
-            return;
-        }
-        all.removeIf(Connection::isClosed);
-        try {
-            long limit = kind == Connection.Kind.ROBOT ? MAX_QUEUED_ROBOT : options.limits().viewerBudget();
-            all.add(new Connection(kind, ch, selector, codec, options.maxFrame(), limit));
-            if (pending() >= options.limits().maxPending()) {
-                // the next connections wait in the listen backlog until these say hello or time out
-                pausedForPending = true;
-                setAccepting(false);
-                turnedAway.warn(System.nanoTime(), () -> pending() + " connections have not said hello yet, the most"
-                        + " this Environment allows (--max-pending); new connections wait until some do or are"
-                        + " closed after " + options.limits().helloDeadlineMs() + " ms");
-            }
-        } catch (IOException e) {
-            acceptFailures.warn(System.nanoTime(), () -> "setting up a " + kind.name().toLowerCase()
-                    + " connection failed: " + e.getMessage());
-            try {
-                ch.close();
-            } catch (IOException again) {
-                LOG.fine("closing a connection that failed: " + again.getMessage());
-            }
-        }
-    }
-
-    private static String addressOf(SocketChannel ch) {
-        try {
-            return String.valueOf(ch.getRemoteAddress());
-        } catch (IOException e) {
-            return "an unknown address";
-        }
-    }
-
-    private long pending() {
-        long n = 0;
-        for (Connection c : all) {
-            if (!c.isClosed() && !c.greeted()) {
-                n++;
-            }
-        }
-        return n;
-    }
-
-    private void pauseAccepting(long now) {
-        acceptPaused = true;
-        acceptPausedUntil = now + ACCEPT_PAUSE_NANOS;
-        setAccepting(false);
-    }
-
-    private void setAccepting(boolean on) {
-        for (ServerSocketChannel ch : List.of(robotChannel, viewerChannel)) {
-            SelectionKey key = ch.keyFor(selector);
-            if (key != null && key.isValid()) {
-                key.interestOps(on ? SelectionKey.OP_ACCEPT : 0);
-            }
-        }
-    }
-
-    /** Accepts again once neither a failure's pause nor the cap on connections without a hello holds it. */
-    private void resumeAccepting(long now) {
-        if (acceptPaused && now - acceptPausedUntil >= 0) {
-            acceptPaused = false;
-        }
-        if (pausedForPending && pending() < options.limits().maxPending()) {
-            pausedForPending = false;
-        }
-        if (!acceptPaused && !pausedForPending) {
-            setAccepting(true);
-        }
-    }
-
-    /**
-     * Keeps the caps on connections that wait: closes those that said no hello in time and viewers
-     * and control clients idle too long, resumes accepting after a pause, and logs the counts of
-     * warnings held back.
-     */
-    private void housekeeping(long now) {
-        Limits limits = options.limits();
-        long helloNanos = TimeUnit.MILLISECONDS.toNanos(limits.helloDeadlineMs());
-        long idleNanos = TimeUnit.MILLISECONDS.toNanos(limits.idleTimeoutMs());
-        for (Connection c : all) {
-            if (c.isClosed()) {
-                continue;
-            }
-            if (!c.greeted()) {
-                if (now - c.acceptedNanos() > helloNanos) {
-                    turnedAway.warn(now, () -> "closing a " + c.kind.name().toLowerCase() + " connection from "
-                            + c.address() + ": it said no hello within " + limits.helloDeadlineMs() + " ms");
-                    c.shut();
-                }
-            } else if (c.kind == Connection.Kind.VIEWER) {
-                if (c.queuedBytes() > 0 && now - c.lastWriteNanos() > idleNanos) {
-                    c.close("it took nothing of what was sent to it for " + limits.idleTimeoutMs()
-                            + " ms (--idle-timeout)");
-                    rules.closed(c, "idle");
-                } else if (c.isControl() && now - c.lastReadNanos() > idleNanos) {
-                    c.close("it sent nothing for " + limits.idleTimeoutMs() + " ms (--idle-timeout)");
-                    rules.closed(c, "idle");
-                }
-            }
-        }
-        all.removeIf(Connection::isClosed);
-        if (acceptPaused || pausedForPending) {
-            resumeAccepting(now);
-        }
-        acceptFailures.flush(now);
-        turnedAway.flush(now);
     }
 
     private void serve(Connection c, SelectionKey key) {
@@ -492,16 +331,12 @@ public final class EnvironmentServer implements AutoCloseable {
         // a simulation used after this reads on its caller's thread: a closed pool runs its loops there
         workers.close();
         listeners.close();
-        for (Connection c : all) {
-            c.shut();
-        }
-        for (java.io.Closeable ch : new java.io.Closeable[] {robotChannel, viewerChannel, selector}) {
-            if (ch != null) {
-                try {
-                    ch.close();
-                } catch (IOException e) {
-                    LOG.fine("closing: " + e.getMessage());
-                }
+        doorway.close();
+        if (selector != null) {
+            try {
+                selector.close();
+            } catch (IOException e) {
+                LOG.fine("closing: " + e.getMessage());
             }
         }
     }

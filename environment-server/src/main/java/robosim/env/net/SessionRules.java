@@ -1,7 +1,6 @@
 package robosim.env.net;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -12,21 +11,15 @@ import java.util.Set;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
-import robosim.comms.CommsSettings;
 import robosim.protocol.Command;
 import robosim.protocol.FrameException;
-import robosim.protocol.FrameWriter;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.CommsUpdate;
-import robosim.protocol.ControlHello;
-import robosim.protocol.RunSecret;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.Snapshot;
-import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
 
 /**
@@ -48,10 +41,8 @@ final class SessionRules {
 
     private final Simulation sim;
     private final Access access;
-    private final Limits limits;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
-    private final List<Connection> viewers = new ArrayList<>();
-    private final List<Connection> controls = new ArrayList<>();
+    private final ViewerPortRules viewerPort;
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
     private long openStep;
@@ -65,7 +56,7 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.sim = sim;
         this.access = access;
-        this.limits = limits;
+        this.viewerPort = new ViewerPortRules(sim, access, limits);
     }
 
     boolean allConnected() {
@@ -79,7 +70,7 @@ final class SessionRules {
     }
 
     int viewerCount() {
-        return viewers.size();
+        return viewerPort.viewerCount();
     }
 
     Map<String, Connection> connectedRobots() {
@@ -137,41 +128,7 @@ final class SessionRules {
 
     /** Sends a snapshot to every viewer, encoded once. */
     void broadcastSnapshot(Snapshot snapshot, MessageCodec codec) {
-        viewers.removeIf(Connection::isClosed);
-        if (viewers.isEmpty()) {
-            return;
-        }
-        ByteBuffer encoded = FrameWriter.frame(codec, snapshot);
-        makeRoomForViewers(encoded.remaining());
-        for (Connection v : viewers) {
-            v.sendFrame(encoded.duplicate());
-        }
-    }
-
-    /**
-     * Drops the viewer furthest behind, named, until all viewers' queues together, with a frame of
-     * the given size more for each, fit the budget (a frame queued for several viewers counts once
-     * for each).
-     */
-    private void makeRoomForViewers(int frameBytes) {
-        while (!viewers.isEmpty()) {
-            long total = 0;
-            Connection slowest = viewers.get(0);
-            for (Connection v : viewers) {
-                total += v.queuedBytes();
-                if (v.queuedBytes() > slowest.queuedBytes()) {
-                    slowest = v;
-                }
-            }
-            long after = total + (long) frameBytes * viewers.size();
-            if (after <= limits.viewerBudget()) {
-                return;
-            }
-            slowest.close("it is the viewer furthest behind (" + slowest.queuedBytes() + " bytes queued) and the"
-                    + " viewers' queues together would hold " + after + " bytes, over the budget of "
-                    + limits.viewerBudget() + " (--viewer-budget)");
-            viewers.remove(slowest);
-        }
+        viewerPort.broadcast(snapshot, codec);
     }
 
     /** A peer sent a message. */
@@ -179,30 +136,8 @@ final class SessionRules {
         if (from.kind == Connection.Kind.ROBOT) {
             fromRobot(from, m);
         } else {
-            fromViewer(from, m);
+            viewerPort.received(from, m);
         }
-    }
-
-    /**
-     * What a hello's secret says, when the run has one.
-     *
-     * @param who       the peer, for the reason
-     * @param presented the secret it presented, or null
-     * @return why it is refused, or null if it may go on
-     */
-    private String secretRefusal(String who, String presented) {
-        if (!access.guarded() || RunSecret.matches(access.secret(), presented)) {
-            return null;
-        }
-        return who + (presented == null ? " presented no run secret" : " presented a wrong run secret")
-                + "; this Environment admits only those who present the secret it printed at its start (a --token"
-                + " option, the " + RunSecret.ENV + " variable, or the file it wrote)";
-    }
-
-    /** Refuses a peer that has not been admitted: a Bye with the reason, a log line, and the connection closes. */
-    private static void refuse(Connection c, String reason) {
-        LOG.warning(() -> "refusing " + c.peer() + ": " + reason);
-        c.sendAndClose(new Bye("refused: " + reason));
     }
 
     private void fromRobot(Connection c, Message m) {
@@ -215,9 +150,9 @@ final class SessionRules {
             if (m instanceof RobotHello hello) {
                 hello(c, hello);
             } else if (m instanceof LinkHello hello) {
-                String refusal = secretRefusal("a shared link", hello.token());
+                String refusal = access.refusal("a shared link", hello.token());
                 if (refusal != null) {
-                    refuse(c, refusal);
+                    c.refuse(refusal);
                     return;
                 }
                 c.becomeLink(hello.client());
@@ -286,9 +221,9 @@ final class SessionRules {
         if (refusal != null) {
             LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
             if (c.isLink()) {
-                c.send(new Bye("refused: " + refusal, hello.name()));
+                c.send(new Bye(Bye.REFUSED + refusal, hello.name()));
             } else {
-                c.sendAndClose(new Bye("refused: " + refusal));
+                c.sendAndClose(new Bye(Bye.REFUSED + refusal));
             }
             return;
         }
@@ -305,7 +240,7 @@ final class SessionRules {
 
     private String refusal(Connection c, RobotHello hello) {
         // a link presented the secret when it opened
-        String secret = c.isLink() ? null : secretRefusal("robot " + RobotHello.printable(hello.name()), hello.token());
+        String secret = c.isLink() ? null : access.refusal("robot " + RobotHello.printable(hello.name()), hello.token());
         if (secret != null) {
             return secret;
         }
@@ -367,90 +302,6 @@ final class SessionRules {
         }
     }
 
-    private void fromViewer(Connection c, Message m) {
-        if (c.isClosed()) {
-            return;
-        }
-        if (!c.greeted() && m instanceof ViewerHello hello) {
-            viewerHello(c, hello);
-        } else if (!c.greeted() && m instanceof ControlHello hello) {
-            controlHello(c, hello);
-        } else if (c.isControl() && m instanceof CommsUpdate u) {
-            commsUpdate(c, u);
-        } else if (c.greeted() && !c.isControl() && m instanceof CommsUpdate) {
-            c.sendAndClose(new Bye("refused: a viewer cannot change the run; a control client that presents the"
-                    + " run secret can (robosim comms)"));
-            LOG.warning(() -> "closing " + c.peer() + ": it sent commsUpdate; a viewer cannot change the run");
-        } else if (c.isControl()) {
-            c.close("sent " + typeOf(m) + "; a control client sends controlHello once, then only commsUpdate");
-        } else if (!c.greeted()) {
-            c.close("sent " + typeOf(m) + "; the viewer port's first message is viewerHello or controlHello");
-        } else {
-            c.close("sent " + typeOf(m) + "; a viewer sends viewerHello once and then nothing");
-        }
-    }
-
-    private void viewerHello(Connection c, ViewerHello hello) {
-        String name = hello.name() != null ? hello.name() : "(unnamed)";
-        String refusal = access.publicView() ? null : secretRefusal("viewer " + RobotHello.printable(name),
-                hello.token());
-        if (refusal == null) {
-            viewers.removeIf(Connection::isClosed);
-            if (viewers.size() >= limits.maxViewers()) {
-                refusal = viewers.size() + " viewers are attached, the most this Environment allows (--max-viewers)";
-            }
-        }
-        if (refusal != null) {
-            refuse(c, refusal);
-            return;
-        }
-        // a hello without a name still counts: the next one is a second hello
-        c.setName(name);
-        viewers.add(c);
-        c.send(sim.description());
-        c.send(sim.snapshot());
-        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
-    }
-
-    private void controlHello(Connection c, ControlHello hello) {
-        String name = hello.name() != null ? hello.name() : "(unnamed)";
-        String refusal = secretRefusal("control client " + RobotHello.printable(name), hello.token());
-        if (refusal == null) {
-            controls.removeIf(Connection::isClosed);
-            if (controls.size() >= limits.maxControls()) {
-                refusal = controls.size() + " control clients are attached, the most this Environment allows"
-                        + " (--max-controls)";
-            }
-        }
-        if (refusal != null) {
-            refuse(c, refusal);
-            return;
-        }
-        c.setName(name);
-        c.becomeControl();
-        controls.add(c);
-        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
-    }
-
-    private void commsUpdate(Connection c, CommsUpdate u) {
-        CommsSettings now = sim.commsSettings();
-        try {
-            CommsSettings next = new CommsSettings(
-                    u.maxRange() != null ? u.maxRange() : now.maxRange(),
-                    u.wallsBlock() != null ? u.wallsBlock() : now.wallsBlock(),
-                    u.latencySteps() != null ? u.latencySteps() : now.latencySteps(),
-                    u.lossProbability() != null ? u.lossProbability() : now.lossProbability(),
-                    u.maxMessageBytes() != null ? u.maxMessageBytes() : now.maxMessageBytes());
-            sim.setCommsSettings(next);
-            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim.stepCount() + " to " + next);
-            c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
-                    next.maxMessageBytes()));
-        } catch (IllegalArgumentException e) {
-            LOG.warning(() -> "closing " + c.peer() + ": it sent comms settings that break a rule: " + e.getMessage());
-            c.sendAndClose(new Bye("refused: the comms settings break a rule: " + e.getMessage()));
-        }
-    }
-
     /**
      * A peer's connection failed. A frame that breaks the rules drops the robots on it, told why as
      * far as the connection still carries it; any other failure (a reset, a stream that ends inside a
@@ -473,8 +324,7 @@ final class SessionRules {
             c.shut();
         }
         if (c.kind == Connection.Kind.VIEWER) {
-            viewers.remove(c);
-            controls.remove(c);
+            viewerPort.closed(c);
             if (!DISCONNECTED.equals(reason)) {
                 c.close(reason);
             }
@@ -525,7 +375,7 @@ final class SessionRules {
             c.send(new Bye(reason));
             c.close(reason);
         } else {
-            c.sendAndClose(new Bye("goodbye"));
+            c.sendAndClose(new Bye(Bye.GOODBYE));
         }
     }
 
