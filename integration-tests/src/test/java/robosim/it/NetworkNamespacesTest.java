@@ -103,8 +103,9 @@ class NetworkNamespacesTest {
         return env.findOption("--token") != null ? List.of("--token", TOKEN) : List.of();
     }
 
-    private static Map<String, String> secretEnvironment() {
-        return Map.of("ROBOSIM_TOKEN", TOKEN);
+    private Map<String, String> secretEnvironment() {
+        // the Environment's secret files go to the test's folder, not the user's home
+        return Map.of("ROBOSIM_TOKEN", TOKEN, "ROBOSIM_TOKEN_DIR", dir.resolve("tokens").toString());
     }
 
     @Test

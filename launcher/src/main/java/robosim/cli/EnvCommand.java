@@ -117,6 +117,10 @@ final class EnvCommand implements Callable<Integer> {
             if (secret != null) {
                 try {
                     secretFiles = access.publish(secret, out, server.robotPort(), server.viewerPort());
+                    List<Path> written = secretFiles;
+                    // an env stopped by Ctrl-C or kill removes them too
+                    Runtime.getRuntime().addShutdownHook(new Thread(() -> AccessOptions.unpublish(written, secret),
+                            "remove-run-secret"));
                 } catch (IOException e) {
                     err.println("robosim env: cannot write the run secret: " + e.getMessage());
                     return 1;
