@@ -124,7 +124,7 @@ class ReplayCommandTest {
         Path cut = dir.resolve("cut.rsr");
         Files.write(cut, java.util.Arrays.copyOf(bytes, bytes.length / 2));
         Path png = dir.resolve("png");
-        Run r = execute("replay", cut.toString(), "--png-dir", png.toString());
+        Run r = execute("replay", cut.toString(), "--png-dir", png.toString(), "--every", "1");
         assertEquals(0, r.exit(), "a run that ended abruptly is still a run: " + r.err());
         Matcher m = Pattern.compile("warning: " + Pattern.quote(cut.toString())
                 + ": the recording ends inside the record at byte offset (\\d+) .*, after step (\\d+); steps up to \\2 are readable")
@@ -142,7 +142,7 @@ class ReplayCommandTest {
         Path bad = dir.resolve("bad.rsr");
         Files.write(bad, bytes);
         Path png = dir.resolve("png");
-        Run r = execute("replay", bad.toString(), "--png-dir", png.toString());
+        Run r = execute("replay", bad.toString(), "--png-dir", png.toString(), "--every", "1");
         assertEquals(1, r.exit(), r.err());
         Matcher m = Pattern.compile(Pattern.quote(bad.toString()) + ": bad record at byte offset (\\d+), after step (\\d+): ")
                 .matcher(r.err());

@@ -14,8 +14,8 @@ import robosim.protocol.RunSecret;
 
 /** {@code env}'s run secret and caps: who may use the ports, and how many of what. */
 final class AccessOptions {
-    @Option(names = "--token", paramLabel = "SECRET", description = "the run secret (16 to 128 letters, digits, '-' or"
-            + " '_'); default: a new random one each run")
+    @Option(names = "--token", paramLabel = "SECRET", description = OptionTexts.TOKEN + "; 16 to 128 letters, digits,"
+            + " '-' or '_'; default: a new random one each run")
     String token;
 
     @Option(names = "--no-token", description = "run without a secret: anyone on this machine may join, watch and"

@@ -45,7 +45,8 @@ final class BenchCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--robots", split = ",", defaultValue = "1,10,100", paramLabel = "N",
-            description = "robot counts to measure, 1 to " + MAX_ROBOTS + "; default ${DEFAULT-VALUE}")
+            description = OptionTexts.ROBOTS + "; the counts to measure, comma-separated, 1 to " + MAX_ROBOTS
+                    + " each; default ${DEFAULT-VALUE}")
     List<Integer> robots;
 
     @Option(names = "--sensors", split = ",", defaultValue = "sonar", paramLabel = "S",
@@ -58,16 +59,21 @@ final class BenchCommand implements Callable<Integer> {
                     + " default ${DEFAULT-VALUE}")
     int clients;
 
-    @Option(names = "--threads", paramLabel = "T",
-            description = "threads that read the robots' sensors each step, in the core-only runs and in the"
+    @Option(names = "--threads", paramLabel = "N",
+            description = OptionTexts.THREADS + "; in the core-only runs and in the"
                     + " Environment (its --threads); default: the machine's processors")
     Integer threads;
 
-    @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = "steps per measurement; default ${DEFAULT-VALUE}")
+    @Option(names = "--steps", defaultValue = "600", paramLabel = "N", description = OptionTexts.STEPS
+            + "; in each measurement; default ${DEFAULT-VALUE}")
     long steps;
 
-    @Option(names = "--out", defaultValue = "out/bench", paramLabel = "DIR", description = "where worlds and client logs go; default ${DEFAULT-VALUE}")
+    @Option(names = "--out-dir", defaultValue = "out/bench", paramLabel = "DIR", description = OptionTexts.OUT_DIR
+            + "; worlds and client logs; default ${DEFAULT-VALUE}")
     Path out;
+
+    @Option(names = "--out", hidden = true, paramLabel = "DIR", description = OptionTexts.OLD_NAME + "--out-dir")
+    Path oldOut;
 
     @Option(names = "--skip-codec", description = "do not measure the wire formats")
     boolean skipCodec;
@@ -94,11 +100,15 @@ final class BenchCommand implements Callable<Integer> {
                     + " (none forced) and print the samples with its memory figures; 0 for none; default ${DEFAULT-VALUE}")
     long heapEvery;
 
-    @Option(names = "--window", defaultValue = "0", paramLabel = "N",
+    @Option(names = "--rates-every", defaultValue = "0", paramLabel = "N",
             description = "print, after each run, for every N steps from the first on: the steps per second, and each"
                     + " JVM's CPU time and heap allocated per step (the core alone's, and over TCP the Environment's and"
                     + " each client's); 0 for none; default ${DEFAULT-VALUE}")
     long window;
+
+    // not --window, which shows a run in a window in viewer and replay
+    @Option(names = "--window", hidden = true, paramLabel = "N", description = OptionTexts.OLD_NAME + "--rates-every")
+    Long oldWindow;
 
     @Option(names = "--repeat", defaultValue = "1", paramLabel = "R",
             description = "runs over TCP per robot count and sensors; the median and range are printed too; default ${DEFAULT-VALUE}")
@@ -106,6 +116,8 @@ final class BenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        out = oldOut != null ? oldOut : out;
+        window = oldWindow != null ? oldWindow : window;
         PrintWriter o = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         for (int n : robots) {
@@ -136,7 +148,7 @@ final class BenchCommand implements Callable<Integer> {
             return 2;
         }
         if (window < 0) {
-            err.println("robosim bench: " + window + " was supplied for --window: it must be 0 (none) or more");
+            err.println("robosim bench: " + window + " was supplied for --rates-every: it must be 0 (none) or more");
             return 2;
         }
         int sensingThreads = threads != null ? threads : ServerOptions.defaultThreads();

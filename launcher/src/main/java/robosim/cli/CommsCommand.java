@@ -58,13 +58,13 @@ final class CommsCommand implements Callable<Integer> {
             if (bad != null) {
                 throw new IllegalArgumentException(bad);
             }
-            token = RunSecret.find(null, at.port);
+            token = RunSecret.find(null, at.port());
         } catch (IllegalArgumentException e) {
             spec.commandLine().getErr().println("robosim comms: " + e.getMessage());
             return 2;
         }
         try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(at.host, at.port), 10_000);
+            s.connect(new InetSocketAddress(at.host, at.port()), 10_000);
             s.setSoTimeout(10_000);
             MessageCodec codec = new MessageCodec();
             FrameWriter w = new FrameWriter(s.getOutputStream(), codec);
@@ -88,7 +88,7 @@ final class CommsCommand implements Callable<Integer> {
                     + " (its log says why)");
             return 1;
         } catch (IOException e) {
-            spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + at.host + ":" + at.port
+            spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + at.host + ":" + at.port()
                     + ": " + e.getMessage());
             return 1;
         }

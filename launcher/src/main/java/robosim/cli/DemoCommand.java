@@ -21,13 +21,21 @@ final class DemoCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--out", defaultValue = "out/demo", paramLabel = "DIR", description = "where the frames go; default ${DEFAULT-VALUE}")
+    @Option(names = "--out-dir", defaultValue = "out/demo", paramLabel = "DIR", description = OptionTexts.OUT_DIR
+            + "; frames in DIR/frames, each robot's log in DIR/rN.log; default ${DEFAULT-VALUE}")
     Path out;
 
-    @Option(names = "--max-steps", defaultValue = "20000", paramLabel = "N", description = "step limit; default ${DEFAULT-VALUE}")
+    @Option(names = "--out", hidden = true, paramLabel = "DIR", description = OptionTexts.OLD_NAME + "--out-dir")
+    Path oldOut;
+
+    @Option(names = "--steps", defaultValue = "20000", paramLabel = "N", description = OptionTexts.STEPS
+            + "; the search stops there if the gold is not found; default ${DEFAULT-VALUE}")
     long maxSteps;
 
-    @Option(names = "--every", defaultValue = "20", paramLabel = "K", description = "write a frame every K steps; default ${DEFAULT-VALUE}")
+    @Option(names = "--max-steps", hidden = true, paramLabel = "N", description = OptionTexts.OLD_NAME + "--steps")
+    Long oldMaxSteps;
+
+    @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
     @Override
@@ -38,8 +46,8 @@ final class DemoCommand implements Callable<Integer> {
         gold.robots = 3;
         gold.separateJvms = true;
         gold.seed = 1;
-        gold.out = out;
-        gold.maxSteps = maxSteps;
+        gold.out = oldOut != null ? oldOut : out;
+        gold.maxSteps = oldMaxSteps != null ? oldMaxSteps : maxSteps;
         gold.every = every;
         gold.cellSize = 1500;
         return gold.call();

@@ -35,28 +35,35 @@ final class EnvCommand implements Callable<Integer> {
     @Parameters(paramLabel = "WORLD", description = "the world file (XML)")
     Path world;
 
-    @Option(names = "--port", defaultValue = "5000", description = "port for robots (0: any free port); default ${DEFAULT-VALUE}")
+    @Option(names = "--robot-port", defaultValue = "5000", paramLabel = "PORT", description = OptionTexts.ROBOT_PORT
+            + "; where robots connect (0: any free port); default ${DEFAULT-VALUE}")
     int port;
 
-    @Option(names = "--viewer-port", defaultValue = "3000", description = "port for viewers (0: any free port); default ${DEFAULT-VALUE}")
+    @Option(names = "--port", hidden = true, paramLabel = "PORT", description = OptionTexts.OLD_NAME + "--robot-port")
+    Integer oldPort;
+
+    @Option(names = "--viewer-port", defaultValue = "3000", paramLabel = "PORT", description = OptionTexts.VIEWER_PORT
+            + "; where viewers connect (0: any free port); default ${DEFAULT-VALUE}")
     int viewerPort;
 
-    @Option(names = "--bind", defaultValue = "127.0.0.1", description = "address to listen on; default ${DEFAULT-VALUE}")
+    @Option(names = "--bind", defaultValue = "127.0.0.1", paramLabel = "ADDRESS", description = "address to listen on; default ${DEFAULT-VALUE}")
     String bind;
 
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the run's randomness; default ${DEFAULT-VALUE}")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "SEED", description = OptionTexts.SEED
+            + "; the same world, seed and robots give the same run; default ${DEFAULT-VALUE}")
     long seed;
 
-    @Option(names = "--steps", defaultValue = "0", description = "steps to run; 0 runs until every robot has disconnected")
+    @Option(names = "--steps", defaultValue = "0", paramLabel = "N", description = OptionTexts.STEPS
+            + "; 0 runs until every robot has disconnected; default ${DEFAULT-VALUE}")
     long steps;
 
     @Option(names = "--realtime", description = "pace steps at the world's step length instead of as fast as possible")
     boolean realtime;
 
-    @Option(names = "--step-timeout", defaultValue = "10000", description = "ms to wait for a robot's requests before dropping it; default ${DEFAULT-VALUE}")
+    @Option(names = "--step-timeout", defaultValue = "10000", paramLabel = "MS", description = "ms to wait for a robot's requests before dropping it; default ${DEFAULT-VALUE}")
     long stepTimeoutMs;
 
-    @Option(names = "--connect-timeout", defaultValue = "600", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
+    @Option(names = "--connect-timeout", defaultValue = "600", paramLabel = "S", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
     long connectTimeoutS;
 
     @Mixin
@@ -65,10 +72,10 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     AccessOptions access;
 
-    @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
+    @Option(names = "--wait-viewers", defaultValue = "0", paramLabel = "N", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
-    @Option(names = "--threads", paramLabel = "N", description = "threads that read the robots' sensors each step; "
+    @Option(names = "--threads", paramLabel = "N", description = OptionTexts.THREADS + "; "
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
 
@@ -84,6 +91,7 @@ final class EnvCommand implements Callable<Integer> {
             return 1;
         }
         ServerOptions options;
+        port = oldPort != null ? oldPort : port;
         try {
             checkFlags();
             options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
@@ -110,8 +118,8 @@ final class EnvCommand implements Callable<Integer> {
                 err.println("robosim env: " + e.getMessage() + " (leave out --no-token)");
                 return 2;
             } catch (IOException e) {
-                err.println("robosim env: cannot listen on " + bind + " ports " + port + " and " + viewerPort + ": "
-                        + e.getMessage());
+                err.println("robosim env: " + e.getMessage() + " (--robot-port and --viewer-port choose others;"
+                        + " 0 takes any free port)");
                 return 1;
             }
             if (secret != null) {
@@ -160,7 +168,7 @@ final class EnvCommand implements Callable<Integer> {
 
     /** Names the flag the user typed, with the value and the server's rule, before the server checks them. */
     private void checkFlags() {
-        ServerOptions.requirePort("--port", port);
+        ServerOptions.requirePort(oldPort != null ? "--port" : "--robot-port", port);
         ServerOptions.requirePort("--viewer-port", viewerPort);
         ServerOptions.requireAtLeast("--steps", steps, 0);
         ServerOptions.requireAtLeast("--step-timeout", stepTimeoutMs, 1);

@@ -45,32 +45,45 @@ final class GoldfinderCommand implements Callable<Integer> {
     @Parameters(paramLabel = "WORLD", description = "a maze world with <gold> (see robosim maze)")
     Path world;
 
-    @Option(names = "--robots", defaultValue = "3", paramLabel = "N", description = "team size; default ${DEFAULT-VALUE}")
+    @Option(names = "--robots", defaultValue = "3", paramLabel = "N", description = OptionTexts.ROBOTS
+            + "; the team: the world's first N robots; default ${DEFAULT-VALUE}")
     int robots;
 
     @Option(names = "--separate-jvms", description = "run each robot in a JVM of its own")
     boolean separateJvms;
 
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the run and the team's tie-breaks; default ${DEFAULT-VALUE}")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "SEED", description = OptionTexts.SEED
+            + "; the run's and the team's tie-breaks; default ${DEFAULT-VALUE}")
     long seed;
 
-    @Option(names = "--out", defaultValue = "out/goldfinder", paramLabel = "DIR", description = "frames and logs go here; default ${DEFAULT-VALUE}")
+    @Option(names = "--out-dir", defaultValue = "out/goldfinder", paramLabel = "DIR", description = OptionTexts.OUT_DIR
+            + "; frames in DIR/frames, each robot's log in DIR/rN.log; default ${DEFAULT-VALUE}")
     Path out;
 
-    @Option(names = "--max-steps", defaultValue = "20000", paramLabel = "N", description = "step limit; default ${DEFAULT-VALUE}")
+    @Option(names = "--out", hidden = true, paramLabel = "DIR", description = OptionTexts.OLD_NAME + "--out-dir")
+    Path oldOut;
+
+    @Option(names = "--steps", defaultValue = "20000", paramLabel = "N", description = OptionTexts.STEPS
+            + "; the search stops there if the gold is not found; default ${DEFAULT-VALUE}")
     long maxSteps;
 
-    @Option(names = "--every", defaultValue = "20", paramLabel = "K", description = "write a frame every K steps; default ${DEFAULT-VALUE}")
+    @Option(names = "--max-steps", hidden = true, paramLabel = "N", description = OptionTexts.OLD_NAME + "--steps")
+    Long oldMaxSteps;
+
+    @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
-    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = "the maze's cell size; default ${DEFAULT-VALUE}")
-    double cellSize;
+    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = OptionTexts.CELL_SIZE
+            + "; the maze's own (see robosim maze); default ${DEFAULT-VALUE}")
+    int cellSize;
 
     @Option(names = "--no-frames", description = "run without a viewer")
     boolean noFrames;
 
     @Override
     public Integer call() throws Exception {
+        out = oldOut != null ? oldOut : out;
+        maxSteps = oldMaxSteps != null ? oldMaxSteps : maxSteps;
         PrintWriter o = spec.commandLine().getOut();
         World w;
         try {

@@ -23,9 +23,12 @@ public final class Main implements Callable<Integer> {
         System.exit(commandLine().execute(args));
     }
 
-    /** @return the launcher's command line, for tests to execute with captured writers */
+    /**
+     * @return the launcher's command line, for tests to execute with captured writers; a bad command
+     *         line gets a one-line error and a pointer to {@code --help} (see {@link ShortErrors})
+     */
     public static CommandLine commandLine() {
-        return new CommandLine(new Main());
+        return new CommandLine(new Main()).setParameterExceptionHandler(new ShortErrors());
     }
 
     @Override

@@ -23,16 +23,18 @@ final class MazeCommand implements Callable<Integer> {
     @Option(names = "--cells", arity = "2", required = true, paramLabel = "N", description = "cells across and up, e.g. --cells 10 10")
     int[] cells;
 
-    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = "cell size in mm, at least 1000; default ${DEFAULT-VALUE}")
+    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = OptionTexts.CELL_SIZE + "; at least 1000; default ${DEFAULT-VALUE}")
     int cellSize;
 
-    @Option(names = "--seed", defaultValue = "1", description = "the maze's seed; default ${DEFAULT-VALUE}")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "SEED", description = OptionTexts.SEED
+            + "; the same seed and size give the same maze; default ${DEFAULT-VALUE}")
     long seed;
 
-    @Option(names = "--robots", defaultValue = "8", paramLabel = "N", description = "robot places r1..rN; default ${DEFAULT-VALUE}")
+    @Option(names = "--robots", defaultValue = "8", paramLabel = "N", description = OptionTexts.ROBOTS
+            + "; the world's robots r1..rN, in the start cells; default ${DEFAULT-VALUE}")
     int robots;
 
-    @Option(names = "--out", required = true, paramLabel = "FILE", description = "the world file to write")
+    @Option(names = "--out", required = true, paramLabel = "FILE", description = "the world file to write (a file: --out names one file in every command)")
     Path out;
 
     @Override

@@ -37,7 +37,7 @@ final class ReplayCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "the recording")
     Path file;
 
-    @Option(names = "--png-dir", paramLabel = "DIR", description = "write frame-NNNNNN.png files here")
+    @Option(names = "--png-dir", paramLabel = "DIR", description = OptionTexts.PNG_DIR)
     Path pngDir;
 
     @Option(names = "--gif", paramLabel = "FILE", description = "write an animated GIF that loops")
@@ -46,7 +46,7 @@ final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--info", description = "print the world, robots, steps, distance travelled and collisions")
     boolean info;
 
-    @Option(names = "--window", description = "play the recording in a window with play, pause, step and speed")
+    @Option(names = "--window", description = OptionTexts.WINDOW + "; with play, pause, step and speed")
     boolean window;
 
     @Option(names = "--from", defaultValue = "0", paramLabel = "STEP", description = "first step drawn; default ${DEFAULT-VALUE}")
@@ -55,7 +55,7 @@ final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--to", paramLabel = "STEP", description = "last step drawn; default the last")
     Long to;
 
-    @Option(names = "--every", defaultValue = "1", paramLabel = "K", description = "draw every K-th step (and the last); default ${DEFAULT-VALUE}")
+    @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
     @Option(names = "--speed", defaultValue = "1", paramLabel = "X",

@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -91,6 +92,13 @@ final class RobotCommand implements Callable<Integer> {
         if (classpath != null) {
             List<URL> urls = new ArrayList<>();
             for (String p : classpath.split(File.pathSeparator)) {
+                if (p.isEmpty()) {
+                    continue;
+                }
+                if (!new File(p).exists()) {
+                    throw new ParameterException(spec.commandLine(), "'" + p + "' was supplied for --classpath: there is no"
+                            + " such directory or jar");
+                }
                 urls.add(new File(p).toURI().toURL());
             }
             loader = new URLClassLoader(urls.toArray(new URL[0]), loader);

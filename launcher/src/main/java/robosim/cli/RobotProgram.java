@@ -108,7 +108,7 @@ final class RobotProgram {
                 out.println(e.describe());
             }
         }
-        if (failure != null) {
+        if (failure != null && !toldAlready(failure, ends)) {
             err.println("robosim robot: robot " + name + "'s program failed: " + failure);
         }
         out.flush();
@@ -119,6 +119,13 @@ final class RobotProgram {
             }
         }
         return failure != null ? 1 : 0;
+    }
+
+    /** @return whether the program failed only by passing on why its robot could not connect, which the log told */
+    private static boolean toldAlready(Throwable failure, List<RunEnd> ends) {
+        String message = String.valueOf(failure.getMessage());
+        return ends.stream().anyMatch(e -> e.kind() == RunEnd.Kind.NOT_CONNECTED && e.reason() != null
+                && message.contains(e.reason()));
     }
 
     /** @return the exit code for a robot's part that ended this way */

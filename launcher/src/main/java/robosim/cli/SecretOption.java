@@ -5,7 +5,7 @@ import robosim.protocol.RunSecret;
 
 /** The run secret a client command presents: shared by {@code robot}, {@code viewer} and {@code comms}. */
 final class SecretOption {
-    @Option(names = "--token", paramLabel = "SECRET", description = "the run secret env printed; default: $"
+    @Option(names = "--token", paramLabel = "SECRET", description = OptionTexts.TOKEN + "; the one env printed; default: $"
             + RunSecret.ENV + ", then the file $" + RunSecret.FILE_ENV + " names, then the file env wrote for the port"
             + " (~/.robosim/tokens/PORT). On a shared machine prefer the variable or the file: others can read a"
             + " command line")

@@ -42,16 +42,16 @@ final class ViewerCommand implements Callable<Integer> {
     @Mixin
     SecretOption secret;
 
-    @Option(names = "--png-dir", paramLabel = "DIR", description = "where to write frame-NNNNNN.png")
+    @Option(names = "--png-dir", paramLabel = "DIR", description = OptionTexts.PNG_DIR)
     Path pngDir;
 
-    @Option(names = "--every", defaultValue = "1", paramLabel = "K", description = "write every K-th step; default ${DEFAULT-VALUE}")
+    @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
     @Mixin
     RecordOptions recording;
 
-    @Option(names = "--window", description = "show the run in a window: wheel zooms, drag pans (turns the camera in 3D)")
+    @Option(names = "--window", description = OptionTexts.WINDOW + "; wheel zooms, drag pans (turns the camera in 3D)")
     boolean window;
 
     @Mixin
@@ -74,7 +74,7 @@ final class ViewerCommand implements Callable<Integer> {
                 throw new IllegalArgumentException(bad);
             }
             RenderedImages.requireEvery(every);
-            options = ViewerOptions.of(at.host, at.port).withName(name())
+            options = ViewerOptions.of(at.host, at.port()).withName(name())
                     .withReadTimeout(Duration.ofMinutes(10));
         } catch (IllegalArgumentException e) {
             err.println("robosim viewer: " + e.getMessage());

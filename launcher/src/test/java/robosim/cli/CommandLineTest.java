@@ -144,7 +144,8 @@ class CommandLineTest {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
             Run r = execute("env", "--port", Integer.toString(taken.getLocalPort()), "--viewer-port", "0", emptyRoom());
             assertEquals(1, r.exit(), r.err());
-            assertTrue(r.err().startsWith("robosim env: cannot listen on 127.0.0.1 ports " + taken.getLocalPort()), r.err());
+            assertTrue(r.err().startsWith("robosim env: cannot listen on the robot port 127.0.0.1:" + taken.getLocalPort()),
+                    r.err());
             r.assertNoStackTrace();
         }
     }
@@ -173,9 +174,9 @@ class CommandLineTest {
             "--clients 0         | 0 was supplied for --clients: client JVMs are 1 to 64",
             "--repeat 0          | 0 was supplied for --repeat: it must be at least 1",
             "--heap-every -1     | -1 was supplied for --heap-every: it must be 0 (none) or more",
-            "--window -1         | -1 was supplied for --window: it must be 0 (none) or more"})
+            "--rates-every -1    | -1 was supplied for --rates-every: it must be 0 (none) or more"})
     void benchWithAnInvalidOptionExitsWith2AndSaysWhyBeforeMeasuringAnything(String args, String message) {
-        java.util.List<String> line = new java.util.ArrayList<>(java.util.List.of("bench", "--out", dir.toString()));
+        java.util.List<String> line = new java.util.ArrayList<>(java.util.List.of("bench", "--out-dir", dir.toString()));
         line.addAll(java.util.List.of(args.split(" ")));
         Run r = execute(line.toArray(String[]::new));
         assertEquals(2, r.exit(), r.err());

@@ -1,6 +1,7 @@
 package robosim.env.net;
 
 import java.io.IOException;
+import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.SelectionKey;
@@ -54,7 +55,7 @@ final class Doorway {
     /**
      * Opens both listening sockets on the selector.
      *
-     * @throws IOException           if a port cannot be bound
+     * @throws IOException           if a port cannot be bound; its message names the port (robot or viewer)
      * @throws IllegalStateException if the address is not a loopback address and the run has no secret
      */
     void bind(Selector on) throws IOException {
@@ -71,7 +72,14 @@ final class Doorway {
 
     private ServerSocketChannel listen(InetSocketAddress at, Connection.Kind kind) throws IOException {
         ServerSocketChannel ch = ServerSocketChannel.open();
-        ch.bind(at, 128);
+        try {
+            ch.bind(at, 128);
+        } catch (IOException e) {
+            ch.close();
+            // two ports are listened on: say which one could not be had
+            throw new BindException("cannot listen on the " + (kind == Connection.Kind.ROBOT ? "robot" : "viewer")
+                    + " port " + at.getAddress().getHostAddress() + ":" + at.getPort() + ": " + e.getMessage());
+        }
         ch.configureBlocking(false);
         ch.register(selector, SelectionKey.OP_ACCEPT, kind);
         return ch;

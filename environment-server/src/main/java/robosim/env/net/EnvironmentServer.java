@@ -149,13 +149,18 @@ public final class EnvironmentServer implements AutoCloseable {
                 departures);
     }
 
+    /** @return a time as seconds when it is whole seconds (as {@code env --connect-timeout} gives it), else ms */
+    static String inUnitGiven(long ms) {
+        return ms % 1000 == 0 ? ms / 1000 + " s" : ms + " ms";
+    }
+
     private void awaitRobots() throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
             if (System.nanoTime() >= deadline) {
                 throw new IllegalStateException("robots " + rules.missing() + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
-                        + options.connectTimeoutMs() + " ms");
+                        + inUnitGiven(options.connectTimeoutMs()));
             }
             pump(deadline);
         }
