@@ -159,7 +159,8 @@ class ReplayCommandTest {
         assertTrue(none.err().contains("Missing required option") && none.err().contains("--png-dir"), none.err());
         Run backwards = execute("replay", recording.toString(), "--info", "--png-dir", dir.toString(), "--from", "5", "--to", "2");
         assertEquals(2, backwards.exit());
-        assertEquals("robosim replay: 2 was supplied for --to: it must be at least --from (5)", backwards.err().strip());
+        assertEquals(List.of("robosim replay: 2 was supplied for --to: it must be at least --from (5)",
+                "Try 'robosim replay --help'."), backwards.err().strip().lines().toList());
         Run light = execute("replay", recording.toString(), "--info", "--light", "east");
         assertEquals(2, light.exit());
         assertTrue(light.err().contains("'east' was supplied for --light"), light.err());

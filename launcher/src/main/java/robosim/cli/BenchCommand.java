@@ -14,6 +14,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.bench.BenchSensors;
@@ -122,43 +123,43 @@ final class BenchCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         for (int n : robots) {
             if (n < 1 || n > MAX_ROBOTS) {
-                err.println("robosim bench: " + n + " was supplied for --robots: counts are 1 to " + MAX_ROBOTS);
-                return 2;
+                throw new ParameterException(spec.commandLine(),
+                        n + " was supplied for --robots: counts are 1 to " + MAX_ROBOTS);
             }
         }
         Set<BenchSensors> sensorSets = new LinkedHashSet<>();
         for (String s : sensors) {
             Optional<BenchSensors> named = BenchSensors.named(s);
             if (named.isEmpty()) {
-                err.println("robosim bench: " + s + " was supplied for --sensors: sensors are sonar or laser");
-                return 2;
+                throw new ParameterException(spec.commandLine(),
+                        s + " was supplied for --sensors: sensors are sonar or laser");
             }
             sensorSets.add(named.get());
         }
         if (clients < 1 || clients > MAX_CLIENTS) {
-            err.println("robosim bench: " + clients + " was supplied for --clients: client JVMs are 1 to " + MAX_CLIENTS);
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    clients + " was supplied for --clients: client JVMs are 1 to " + MAX_CLIENTS);
         }
         if (repeat < 1) {
-            err.println("robosim bench: " + repeat + " was supplied for --repeat: it must be at least 1");
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    repeat + " was supplied for --repeat: it must be at least 1");
         }
         if (heapEvery < 0) {
-            err.println("robosim bench: " + heapEvery + " was supplied for --heap-every: it must be 0 (none) or more");
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    heapEvery + " was supplied for --heap-every: it must be 0 (none) or more");
         }
         if (window < 0) {
-            err.println("robosim bench: " + window + " was supplied for --rates-every: it must be 0 (none) or more");
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    window + " was supplied for --rates-every: it must be 0 (none) or more");
         }
         int sensingThreads = threads != null ? threads : ServerOptions.defaultThreads();
         if (sensingThreads < 1) {
-            err.println("robosim bench: " + sensingThreads + " was supplied for --threads: it must be at least 1");
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    sensingThreads + " was supplied for --threads: it must be at least 1");
         }
         if (steps < 10) {
-            err.println("robosim bench: " + steps + " was supplied for --steps: it must be at least 10");
-            return 2;
+            throw new ParameterException(spec.commandLine(),
+                    steps + " was supplied for --steps: it must be at least 10");
         }
         Path root = RobotParameterFiles.root();
         Path p3dx = RobotParameterFiles.resolve("p3dx").toAbsolutePath();

@@ -7,6 +7,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.CommsUpdate;
@@ -49,8 +50,7 @@ final class CommsCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (range == null && wallsBlock == null && latency == null && loss == null && maxBytes == null) {
-            spec.commandLine().getErr().println("robosim comms: give at least one setting to change (see --help)");
-            return 2;
+            throw new ParameterException(spec.commandLine(), "give at least one setting to change: --range, --walls-block, --latency, --loss or --max-bytes");
         }
         String token;
         try {
@@ -60,8 +60,7 @@ final class CommsCommand implements Callable<Integer> {
             }
             token = RunSecret.find(null, at.port());
         } catch (IllegalArgumentException e) {
-            spec.commandLine().getErr().println("robosim comms: " + e.getMessage());
-            return 2;
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         try (Socket s = new Socket()) {
             s.connect(new InetSocketAddress(at.host, at.port()), 10_000);

@@ -9,6 +9,7 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -98,8 +99,7 @@ final class EnvCommand implements Callable<Integer> {
                     connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME, threads(), access.limits(),
                     access.access());
         } catch (IllegalArgumentException e) {
-            err.println("robosim env: " + e.getMessage());
-            return 2;
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         Simulation sim = new Simulation(w, seed);
         EnvironmentServer made;
@@ -115,8 +115,7 @@ final class EnvCommand implements Callable<Integer> {
             try {
                 server.bind();
             } catch (IllegalStateException e) {
-                err.println("robosim env: " + e.getMessage() + " (leave out --no-token)");
-                return 2;
+                throw new ParameterException(spec.commandLine(), e.getMessage() + " (leave out --no-token)");
             } catch (IOException e) {
                 err.println("robosim env: " + e.getMessage() + " (--robot-port and --viewer-port choose others;"
                         + " 0 takes any free port)");

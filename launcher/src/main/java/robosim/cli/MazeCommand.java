@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.world.xml.WorldReader;
@@ -45,8 +46,7 @@ final class MazeCommand implements Callable<Integer> {
                     + " mm, seed " + seed + ", written to " + written.toAbsolutePath());
             return 0;
         } catch (IllegalArgumentException e) {
-            spec.commandLine().getErr().println("robosim maze: " + e.getMessage());
-            return 2;
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
     }
 

@@ -82,8 +82,7 @@ final class ReplayCommand implements Callable<Integer> {
             }
             drawing.validate();
         } catch (IllegalArgumentException e) {
-            err.println("robosim replay: " + e.getMessage());
-            return 2;
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         if (window && !Windows.prepare(err, "robosim replay")) {
             return 1;

@@ -67,25 +67,21 @@ final class RobotCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (port <= 0 || port > 65535) {
-            spec.commandLine().getErr().println("robosim robot: " + port + " was supplied for PORT: a port is 1 to 65535");
-            return 2;
+            throw new ParameterException(spec.commandLine(), port + " was supplied for PORT: a port is 1 to 65535");
         }
         String bad = secret.apply();
         if (bad != null) {
-            spec.commandLine().getErr().println("robosim robot: " + bad);
-            return 2;
+            throw new ParameterException(spec.commandLine(), bad);
         }
         if (lostAfterMs != null && (lostAfterMs < 1 || lostAfterMs > Integer.MAX_VALUE)) {
-            spec.commandLine().getErr().println("robosim robot: " + lostAfterMs + " was supplied for --lost-after: it is 1 to "
+            throw new ParameterException(spec.commandLine(), lostAfterMs + " was supplied for --lost-after: it is 1 to "
                     + Integer.MAX_VALUE + " ms");
-            return 2;
         }
         if (lostAfterMs == null) {
             try {
                 HardwareOptions.configuredLostAfterMs();
             } catch (IllegalArgumentException e) {
-                spec.commandLine().getErr().println("robosim robot: " + e.getMessage());
-                return 2;
+                throw new ParameterException(spec.commandLine(), e.getMessage());
             }
         }
         ClassLoader loader = getClass().getClassLoader();
@@ -96,7 +92,8 @@ final class RobotCommand implements Callable<Integer> {
                     continue;
                 }
                 if (!new File(p).exists()) {
-                    throw new ParameterException(spec.commandLine(), "'" + p + "' was supplied for --classpath: there is no"
+                    throw new ParameterException(spec.commandLine(),
+                            "'" + p + "' was supplied for --classpath: there is no"
                             + " such directory or jar");
                 }
                 urls.add(new File(p).toURI().toURL());

@@ -77,8 +77,7 @@ final class ViewerCommand implements Callable<Integer> {
             options = ViewerOptions.of(at.host, at.port()).withName(name())
                     .withReadTimeout(Duration.ofMinutes(10));
         } catch (IllegalArgumentException e) {
-            err.println("robosim viewer: " + e.getMessage());
-            return 2;
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         if (window && !Windows.prepare(err, "robosim viewer")) {
             return 1;

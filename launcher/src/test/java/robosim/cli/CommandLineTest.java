@@ -10,6 +10,7 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -33,6 +34,15 @@ class CommandLineTest {
         /** Fails if standard error holds a stack trace. */
         void assertNoStackTrace() {
             assertFalse(err.contains("\tat ") || err.contains("Exception"), "a one-line error, not a stack trace:\n" + err);
+        }
+
+        String firstLine() {
+            return err.lines().findFirst().orElse("");
+        }
+
+        /** Checks that a bad value is one line, then the pointer to --help. */
+        void assertHintToHelp(String command) {
+            assertEquals(List.of(firstLine(), "Try '" + command + " --help'."), err.strip().lines().toList(), err);
         }
     }
 
@@ -125,9 +135,9 @@ class CommandLineTest {
     void envWithAnInvalidOptionExitsWith2AndSaysWhy(String option, String value, String named) {
         Run r = execute("env", option, value, emptyRoom());
         assertEquals(2, r.exit(), r.err());
-        assertEquals("robosim env: " + value + " was supplied for " + named, r.err().strip().replaceAll(":[^:]*$", ""),
+        assertEquals("robosim env: " + value + " was supplied for " + named, r.firstLine().replaceAll(":[^:]*$", ""),
                 r.err());
-        assertEquals(1, r.err().strip().lines().count(), r.err());
+        r.assertHintToHelp("robosim env");
         r.assertNoStackTrace();
     }
 
@@ -135,7 +145,8 @@ class CommandLineTest {
     void envWithNoThreadsExitsWith2AndSaysWhy() {
         Run r = execute("env", "--threads", "0", emptyRoom());
         assertEquals(2, r.exit(), r.err());
-        assertEquals("robosim env: 0 was supplied for --threads: it must be at least 1", r.err().strip(), r.err());
+        assertEquals("robosim env: 0 was supplied for --threads: it must be at least 1", r.firstLine(), r.err());
+        r.assertHintToHelp("robosim env");
         r.assertNoStackTrace();
     }
 
@@ -162,7 +173,8 @@ class CommandLineTest {
     void robotWithPort70000ExitsWith2AndNamesTheRule() {
         Run r = execute("robot", "no.such.RobotProgram", "r1", "127.0.0.1", "70000");
         assertEquals(2, r.exit(), r.err());
-        assertEquals("robosim robot: 70000 was supplied for PORT: a port is 1 to 65535", r.err().strip());
+        assertEquals("robosim robot: 70000 was supplied for PORT: a port is 1 to 65535", r.firstLine());
+        r.assertHintToHelp("robosim robot");
     }
 
     @ParameterizedTest
@@ -180,7 +192,8 @@ class CommandLineTest {
         line.addAll(java.util.List.of(args.split(" ")));
         Run r = execute(line.toArray(String[]::new));
         assertEquals(2, r.exit(), r.err());
-        assertEquals("robosim bench: " + message, r.err().strip());
+        assertEquals("robosim bench: " + message, r.firstLine());
+        r.assertHintToHelp("robosim bench");
         assertEquals("", r.out(), "nothing was measured");
         r.assertNoStackTrace();
     }
