@@ -187,11 +187,25 @@ class OptionErrorsTest {
         assertEquals(4000, comms.at.port());
     }
 
+    @Test
+    void goldfinderTakesItsOldNamesForTheFolderAndTheStepLimit() {
+        Path old = dir.resolve("old-out");
+        Run r = execute("goldfinder", root().resolve("testLoadFiles/environment/maze-small.xml").toString(), "--robots", "1",
+                "--no-frames", "--out", old.toString(), "--max-steps", "2");
+        assertEquals(GoldfinderCommand.NOT_FOUND, r.exit(), r.out() + r.err());
+        assertTrue(Files.isDirectory(old.resolve("frames")), "--out still names the folder");
+        assertTrue(r.out().contains("Gold not found: step limit 2 reached"), "--max-steps is still the limit:\n" + r.out());
+    }
+
     private static String emptyRoom() {
+        return root().resolve("testLoadFiles/environment/empty-room.xml").toString();
+    }
+
+    private static Path root() {
         Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
         while (p != null && !Files.isDirectory(p.resolve("testLoadFiles"))) {
             p = p.getParent();
         }
-        return p.resolve("testLoadFiles/environment/empty-room.xml").toString();
+        return p;
     }
 }
