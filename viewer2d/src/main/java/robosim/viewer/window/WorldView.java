@@ -16,7 +16,8 @@ import robosim.viewer.view3d.SolidRenderer;
 
 /**
  * The drawing area: the world in 2D through the {@link WorldRenderer} or in 3D through the
- * {@link SolidRenderer}, exactly as the PNG snapshots are drawn, placed by the {@link ViewState}.
+ * {@link SolidRenderer}, exactly as the PNG snapshots are drawn, placed by the {@link ViewState};
+ * in 2D the key (step, scale bar, legend) runs along the bottom, as under the PNG images.
  * The mouse wheel zooms about the pointer; a drag pans the 2D view or turns the 3D camera.
  */
 public final class WorldView extends JComponent {
@@ -66,17 +67,27 @@ public final class WorldView extends JComponent {
             }
             g.setColor(SURROUND);
             g.fill(new Rectangle2D.Double(0, 0, w, h));
-            ViewState.Placement place = state.place(world, snapshot, w, h);
-            Graphics2D inner = (Graphics2D) g.create();
+            int area = worldHeight(world);
+            ViewState.Placement place = state.place(world, snapshot, w, area);
+            Graphics2D inner = (Graphics2D) g.create(0, 0, w, area);
             inner.translate(place.originX(), place.originY());
             renderer.draw(inner, place.view(), world, snapshot, state.render(), model.trails());
             inner.dispose();
-            if (snapshot != null) {
-                WorldRenderer.drawCaption(g, Math.min(w, place.view().width()), WorldRenderer.caption(snapshot));
-            }
+            renderer.drawKey(g, area, w, place.view().scale(), world, snapshot, state.render());
         } finally {
             g.dispose();
         }
+    }
+
+    /**
+     * The height of the part of the view the world is drawn in: in 2D the key (step, scale bar,
+     * legend) takes a strip at the bottom, as under the PNG images, so it never hides the world.
+     */
+    private int worldHeight(WorldDescription world) {
+        if (state.threeD() || world == null) {
+            return getHeight();
+        }
+        return Math.max(1, getHeight() - WorldRenderer.keyHeight(world, state.render(), Math.max(1, getWidth())));
     }
 
     /** Wheel, press and drag. */
@@ -105,7 +116,8 @@ public final class WorldView extends JComponent {
                 return;
             }
             double factor = Math.pow(WHEEL_STEP, -e.getPreciseWheelRotation());
-            state.zoomAbout(factor, e.getX(), e.getY(), model.world(), model.snapshot(), getWidth(), getHeight());
+            state.zoomAbout(factor, e.getX(), e.getY(), model.world(), model.snapshot(), getWidth(),
+                    worldHeight(model.world()));
             repaint();
         }
     }
