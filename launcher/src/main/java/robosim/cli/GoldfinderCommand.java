@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -75,6 +76,9 @@ final class GoldfinderCommand implements Callable<Integer> {
     @Option(names = "--gif", paramLabel = "FILE",
             description = "also write the frames as an animated GIF that loops, played at " + GIF_SPEED + "x simulated time")
     Path gif;
+
+    /** How long the viewer may take, after the run, to write the frames it has not written yet, s. */
+    static final int VIEWER_WAIT_S = 300;
 
     /** How much faster than simulated time the GIF plays: the demo's search fits in half a minute. */
     static final int GIF_SPEED = 20;
@@ -148,7 +152,13 @@ final class GoldfinderCommand implements Callable<Integer> {
                 RunReport report = server.run();
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
-                    viewer.get(60, TimeUnit.SECONDS);
+                    try {
+                        viewer.get(VIEWER_WAIT_S, TimeUnit.SECONDS);
+                    } catch (TimeoutException e) {
+                        spec.commandLine().getErr().println("robosim goldfinder: the viewer had not written its frames "
+                                + VIEWER_WAIT_S + " s after the run ended; the files may be incomplete");
+                        return 1;
+                    }
                 }
                 int written = outputs.report(o, spec.commandLine().getErr(), "goldfinder");
                 if (written != 0) {

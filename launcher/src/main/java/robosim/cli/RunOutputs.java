@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Locale;
 import robosim.protocol.recording.RecordingWriter;
 import robosim.protocol.recording.SnapshotListener;
-import robosim.viewer.draw.ImageSink;
 import robosim.viewer.draw.PngImageWriter;
 import robosim.viewer.draw.RenderOptions;
 import robosim.viewer.draw.RenderedImages;
@@ -66,23 +65,22 @@ final class RunOutputs implements AutoCloseable {
         return new RunOutputs(frames == null ? null : new PngImageWriter(frames), gif, recorder, recording);
     }
 
+    /** The GIF's width, px: small enough to share, and to encode while the run goes on. */
+    static final int GIF_WIDTH = 480;
+
     /**
      * @param every draw every K-th step
-     * @param width image width, px
-     * @return the viewer's listeners: one drawing for the PNG files and the GIF, and the recorder
+     * @param width the PNG images' width, px
+     * @return the viewer's listeners: the PNG drawing, the GIF's drawing of the same steps
+     *         {@value #GIF_WIDTH} px wide, and the recorder
      */
     List<SnapshotListener> listeners(int every, int width) {
         List<SnapshotListener> listeners = new ArrayList<>();
-        if (png != null || gif != null) {
-            ImageSink sink = (step, image) -> {
-                if (png != null) {
-                    png.accept(step, image);
-                }
-                if (gif != null) {
-                    gif.accept(step, image);
-                }
-            };
-            listeners.add(RenderedImages.flat(sink, new RenderOptions(width, false, true), every));
+        if (png != null) {
+            listeners.add(RenderedImages.flat(png, new RenderOptions(width, false, true), every));
+        }
+        if (gif != null) {
+            listeners.add(RenderedImages.flat(gif, new RenderOptions(GIF_WIDTH, false, true), every));
         }
         if (recorder != null) {
             listeners.add(recorder);

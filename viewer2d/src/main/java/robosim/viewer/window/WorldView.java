@@ -10,7 +10,10 @@ import java.awt.event.MouseWheelEvent;
 import java.awt.geom.Rectangle2D;
 import javax.swing.JComponent;
 import robosim.protocol.Snapshot;
+import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
+import robosim.protocol.WorldDescription.RobotInfo;
+import robosim.viewer.draw.BodyOutline;
 import robosim.viewer.draw.WorldRenderer;
 import robosim.viewer.view3d.SolidRenderer;
 
@@ -90,7 +93,60 @@ public final class WorldView extends JComponent {
         return Math.max(1, getHeight() - WorldRenderer.keyHeight(world, state.render(), Math.max(1, getWidth())));
     }
 
-    /** Wheel, press and drag. */
+    /**
+     * The world point under a point of the view, in 2D.
+     *
+     * @param x the view's x, px
+     * @param y the view's y, px
+     * @return {x, y} in mm, or {@code null} in 3D, before the world comes, or off the world
+     */
+    public double[] worldPoint(int x, int y) {
+        WorldDescription world = model.world();
+        if (world == null || state.threeD() || y >= worldHeight(world)) {
+            return null;
+        }
+        ViewState.Placement place = state.place(world, model.snapshot(), getWidth(), worldHeight(world));
+        double scale = place.view().scale();
+        double wx = (x - place.originX()) / scale;
+        double wy = world.height() - (y - place.originY()) / scale;
+        return wx < 0 || wy < 0 || wx > world.width() || wy > world.height() ? null : new double[] {wx, wy};
+    }
+
+    /**
+     * The robot drawn under a point of the view: the nearest whose body's circle holds it.
+     *
+     * @param x the view's x, px
+     * @param y the view's y, px
+     * @return its name, or {@code null}
+     */
+    public String robotAt(int x, int y) {
+        double[] p = worldPoint(x, y);
+        Snapshot snapshot = model.snapshot();
+        if (p == null || snapshot == null) {
+            return null;
+        }
+        String best = null;
+        double bestDistance = Double.POSITIVE_INFINITY;
+        for (RobotView r : snapshot.robots()) {
+            double d = Math.hypot(r.x() - p[0], r.y() - p[1]);
+            if (d <= radius(r.name()) && d < bestDistance) {
+                best = r.name();
+                bestDistance = d;
+            }
+        }
+        return best;
+    }
+
+    private double radius(String name) {
+        for (RobotInfo info : model.world().robots()) {
+            if (info.name().equals(name)) {
+                return BodyOutline.radius(info.parameters());
+            }
+        }
+        return BodyOutline.radius(null);
+    }
+
+    /** Wheel, press, drag, click (chooses the robot whose panel is shown) and the cursor readout. */
     private final class Gestures extends MouseAdapter {
         private int lastX;
         private int lastY;
@@ -99,6 +155,23 @@ public final class WorldView extends JComponent {
         public void mousePressed(MouseEvent e) {
             lastX = e.getX();
             lastY = e.getY();
+        }
+
+        @Override
+        public void mouseClicked(MouseEvent e) {
+            if (model.world() != null && !state.threeD()) {
+                model.select(robotAt(e.getX(), e.getY()));
+            }
+        }
+
+        @Override
+        public void mouseMoved(MouseEvent e) {
+            model.cursor(worldPoint(e.getX(), e.getY()));
+        }
+
+        @Override
+        public void mouseExited(MouseEvent e) {
+            model.cursor(null);
         }
 
         @Override
