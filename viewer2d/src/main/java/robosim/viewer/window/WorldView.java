@@ -1,5 +1,6 @@
 package robosim.viewer.window;
 
+import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.Graphics;
@@ -7,6 +8,8 @@ import java.awt.Graphics2D;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
+import java.awt.RenderingHints;
+import java.awt.geom.Ellipse2D;
 import java.awt.geom.Rectangle2D;
 import javax.swing.JComponent;
 import robosim.protocol.Snapshot;
@@ -27,6 +30,8 @@ public final class WorldView extends JComponent {
     private static final long serialVersionUID = 1L;
     /** The colour around the world in the 2D view. */
     public static final Color SURROUND = new Color(200, 200, 196);
+    /** The ring round the robot whose panel is open. */
+    public static final Color SELECTED = new Color(230, 0, 170);
     private static final double WHEEL_STEP = 1.2;
 
     private final transient ViewModel model;
@@ -75,11 +80,27 @@ public final class WorldView extends JComponent {
             Graphics2D inner = (Graphics2D) g.create(0, 0, w, area);
             inner.translate(place.originX(), place.originY());
             renderer.draw(inner, place.view(), world, snapshot, state.render(), model.trails());
+            markSelected(inner, place);
             inner.dispose();
             renderer.drawKey(g, area, w, place.view().scale(), world, snapshot, state.render());
         } finally {
             g.dispose();
         }
+    }
+
+    /** Rings the robot whose panel is open, so it is clear which one the panel describes. */
+    private void markSelected(Graphics2D g, ViewState.Placement place) {
+        RobotView robot = RobotPanel.chosen(model);
+        if (robot == null) {
+            return;
+        }
+        double r = radius(robot.name()) * place.view().scale() * 1.5 + 3;
+        double x = place.view().px(robot.x());
+        double y = place.view().py(robot.y());
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(SELECTED);
+        g.setStroke(new BasicStroke(2.5f));
+        g.draw(new Ellipse2D.Double(x - r, y - r, 2 * r, 2 * r));
     }
 
     /**
