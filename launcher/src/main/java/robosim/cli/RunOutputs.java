@@ -72,15 +72,17 @@ final class RunOutputs implements AutoCloseable {
      * @param every draw every K-th step
      * @param width the PNG images' width, px
      * @return the viewer's listeners: the PNG drawing, the GIF's drawing of the same steps
-     *         {@value #GIF_WIDTH} px wide, and the recorder
+     *         {@value #GIF_WIDTH} px wide (each on a thread of its own), and the recorder
      */
     List<SnapshotListener> listeners(int every, int width) {
         List<SnapshotListener> listeners = new ArrayList<>();
         if (png != null) {
-            listeners.add(RenderedImages.flat(png, new RenderOptions(width, false, true), every));
+            listeners.add(new QueuedListener("png frames",
+                    RenderedImages.flat(png, new RenderOptions(width, false, true), every)));
         }
         if (gif != null) {
-            listeners.add(RenderedImages.flat(gif, new RenderOptions(GIF_WIDTH, false, true), every));
+            listeners.add(new QueuedListener("gif frames",
+                    RenderedImages.flat(gif, new RenderOptions(GIF_WIDTH, false, true), every)));
         }
         if (recorder != null) {
             listeners.add(recorder);
