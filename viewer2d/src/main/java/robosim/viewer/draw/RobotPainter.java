@@ -43,12 +43,12 @@ final class RobotPainter {
     }
 
     /**
-     * The heading mark: a triangle whose tip is the body's front, half as long as the front reaches
-     * and at most 0.6 of the half width wide each side, so it reads at a glance which way the robot faces.
+     * The heading mark: a triangle whose tip is the body's front, 0.6 as long as the front reaches
+     * and at most 0.75 of the half width wide each side, so it reads at a glance which way the robot faces.
      */
     private static Shape arrowhead(ViewTransform view, Pose2D pose, double front, double halfWidth) {
-        double length = front * 0.5;
-        double half = Math.min(length * 0.6, halfWidth * 0.6);
+        double length = front * 0.6;
+        double half = Math.min(length * 0.7, halfWidth * 0.75);
         double[][] corners = {{front, 0}, {front - length, half}, {front - length, -half}};
         return ClosedPath.of(corners.length, i -> view.px(pose.worldX(corners[i][0], corners[i][1])),
                 i -> view.py(pose.worldY(corners[i][0], corners[i][1])));

@@ -187,7 +187,7 @@ class WorldRendererTest {
     @Test
     void theHeadingMarkIsATriangleAtTheNose() {
         BufferedImage east = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
-        // Nose at pixel (640, 280); the mark reaches 20 px back and 12 px to each side.
+        // Nose at pixel (640, 280); the mark reaches 24 px back and 17 px to each side.
         assertTrue(brightness(at(east, 632, 284)) < 80, "dark beside the heading line, inside the mark");
         assertEquals(RobotPalette.colour(0), at(east, 610, 284), "the body's colour behind the mark");
     }
