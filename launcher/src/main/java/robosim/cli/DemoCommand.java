@@ -3,6 +3,7 @@ package robosim.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -10,7 +11,7 @@ import robosim.params.RobotParameterFiles;
 
 /**
  * {@code robosim demo}: GoldFinder with 3 Pioneers, each in a JVM of its own, on the medium maze;
- * images written as PNG, the summary printed.
+ * images written as PNG (and, if asked, a recording and an animated GIF), the summary printed.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "Run the demo: GoldFinder with 3 robots, each in its own JVM, on the medium maze; frames written as PNG.")
@@ -38,6 +39,13 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
+    @Mixin
+    RecordOptions recording = new RecordOptions();
+
+    @Option(names = "--gif", paramLabel = "FILE",
+            description = "also write the frames as an animated GIF that loops, played at " + GoldfinderCommand.GIF_SPEED + "x simulated time")
+    Path gif;
+
     @Override
     public Integer call() throws Exception {
         GoldfinderCommand gold = new GoldfinderCommand();
@@ -50,6 +58,8 @@ final class DemoCommand implements Callable<Integer> {
         gold.maxSteps = oldMaxSteps != null ? oldMaxSteps : maxSteps;
         gold.every = every;
         gold.cellSize = 1500;
+        gold.recording = recording;
+        gold.gif = gif;
         return gold.call();
     }
 }

@@ -24,6 +24,9 @@ final class DrawingOptions {
     @Option(names = "--trails", description = "draw the path each robot has taken")
     boolean trails;
 
+    @Option(names = "--grid", description = "draw a light grid of round-length squares (2D)")
+    boolean grid;
+
     @Option(names = "--3d", description = "draw the 3D view: walls extruded to their heights, robots as solids")
     boolean threeD;
 
@@ -44,7 +47,7 @@ final class DrawingOptions {
 
     /** @return the 2D options; throws IllegalArgumentException naming a bad value */
     RenderOptions render() {
-        return new RenderOptions(width, sonar, !noNames).withTrails(trails);
+        return new RenderOptions(width, sonar, !noNames).withTrails(trails).withGrid(grid);
     }
 
     /** @return the 3D options; throws IllegalArgumentException naming a bad value */

@@ -10,7 +10,9 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -26,7 +28,6 @@ import robosim.protocol.RunSecret;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
-import robosim.viewer.draw.PngImageWriter;
 import robosim.viewer.net.ViewerSummary;
 
 /**
@@ -77,8 +78,21 @@ final class GoldfinderCommand implements Callable<Integer> {
             + "; the maze's own (see robosim maze); default ${DEFAULT-VALUE}")
     int cellSize;
 
-    @Option(names = "--no-frames", description = "run without a viewer")
+    @Option(names = "--no-frames", description = "write no PNG frames")
     boolean noFrames;
+
+    @Mixin
+    RecordOptions recording = new RecordOptions();
+
+    @Option(names = "--gif", paramLabel = "FILE",
+            description = "also write the frames as an animated GIF that loops, played at " + GIF_SPEED + "x simulated time")
+    Path gif;
+
+    /** How long the viewer may take, after the run, to write the frames it has not written yet, s. */
+    static final int VIEWER_WAIT_S = 300;
+
+    /** How much faster than simulated time the GIF plays: the demo's search fits in half a minute. */
+    static final int GIF_SPEED = 20;
 
     @Override
     public Integer call() throws Exception {
@@ -102,7 +116,7 @@ final class GoldfinderCommand implements Callable<Integer> {
         Simulation sim = new Simulation(w, seed);
         // the run's own secret: the team and the viewer present it, nobody else can join or watch
         String secret = RunSecret.create();
-        ServerOptions options = ServerOptions.loopback().withMaxSteps(maxSteps).withWaitViewers(noFrames ? 0 : 1)
+        ServerOptions options = ServerOptions.loopback().withMaxSteps(maxSteps).withWaitViewers(watched() ? 1 : 0)
                 .withAccess(Access.secret(secret));
         String before = System.getProperty(RunSecret.PROPERTY);
         System.setProperty(RunSecret.PROPERTY, secret);
@@ -122,13 +136,17 @@ final class GoldfinderCommand implements Callable<Integer> {
         o.printf(Locale.ROOT, "Seed: %d%nGoldFinder: world %s, %d robots%s, gold at (%.0f, %.0f)%n", seed, w.name(),
                 robots, separateJvms ? " in separate JVMs" : " as threads", w.gold().x(), w.gold().y());
         o.flush();
-        try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
+        try (EnvironmentServer server = new EnvironmentServer(sim, options);
+             RunOutputs outputs = RunOutputs.open(spec.commandLine().getErr(), "goldfinder", noFrames ? null : frames,
+                     gif, Math.max(1, Math.round(w.stepMs() * (double) every / GIF_SPEED)), recording)) {
+            if (outputs == null) {
+                return 1;
+            }
             server.bind();
-            PngImageWriter png = new PngImageWriter(frames);
-            CompletableFuture<ViewerSummary> viewer = noFrames ? null : Background.supply("png viewer", () -> {
+            CompletableFuture<ViewerSummary> viewer = !watched() ? null : Background.supply("png viewer", () -> {
                 try {
-                    return Viewers.pngClient("127.0.0.1", server.viewerPort(), png, every, 800, false, true,
-                            Duration.ofMinutes(5)).run();
+                    return Viewers.client("127.0.0.1", server.viewerPort(), "png:" + frames.getFileName(),
+                            outputs.listeners(every, 800), Duration.ofMinutes(5)).run();
                 } catch (java.io.IOException e) {
                     throw new IllegalStateException(e.getMessage(), e);
                 }
@@ -147,14 +165,28 @@ final class GoldfinderCommand implements Callable<Integer> {
                 RunReport report = server.run();
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
-                    viewer.get(60, TimeUnit.SECONDS);
-                    o.printf(Locale.ROOT, "Frames: %d PNG files in %s%n", png.imagesWritten(), frames.toAbsolutePath());
+                    try {
+                        viewer.get(VIEWER_WAIT_S, TimeUnit.SECONDS);
+                    } catch (TimeoutException e) {
+                        spec.commandLine().getErr().println("robosim goldfinder: the viewer had not written its frames "
+                                + VIEWER_WAIT_S + " s after the run ended; the files may be incomplete");
+                        return 1;
+                    }
+                }
+                int written = outputs.report(o, spec.commandLine().getErr(), "goldfinder");
+                if (written != 0) {
+                    return written;
                 }
                 return report.find() != null ? 0 : NOT_FOUND;
             } finally {
                 RobotProcesses.stop(processes);
             }
         }
+    }
+
+    /** @return whether a viewer attaches: for the PNG frames, the recording or the GIF */
+    private boolean watched() {
+        return !noFrames || recording.requested() || gif != null;
     }
 
     static void summary(PrintWriter o, RunReport report, int stepMs) {

@@ -65,6 +65,22 @@ final class HeatPainter {
         }
     }
 
+    /** Draws a source for the legend: a glow of the given diameter round a marker. */
+    static void drawSample(Graphics2D g, double cx, double cy, double diameter) {
+        double r = diameter * 0.75;
+        float[] stops = {0f, 0.3f, 1f};
+        Color[] colours = {withAlpha(CORE, MAX_ALPHA), withAlpha(GLOW, MAX_ALPHA / 2), withAlpha(GLOW, 0)};
+        g.setPaint(new RadialGradientPaint(new Point2D.Double(cx, cy), (float) r, stops, colours));
+        g.fill(new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r));
+        double d = MARKER_PX;
+        Ellipse2D marker = new Ellipse2D.Double(cx - d / 2, cy - d / 2, d, d);
+        g.setStroke(new BasicStroke(1f));
+        g.setColor(MARKER);
+        g.fill(marker);
+        g.setColor(MARKER_RING);
+        g.draw(marker);
+    }
+
     /**
      * @param intensity a source's intensity, greater than 0
      * @param strongest the greatest intensity in the world

@@ -11,10 +11,11 @@ package robosim.viewer.draw;
  * @param showOdometry whether to draw, as a dashed outline, where a robot believes it is when its
  *                     odometry is more than 1 mm or 0.5° away from its true pose
  * @param showTrails   whether to draw the path each robot has taken, when a {@link Trails} is given
- * @param showCaption  whether to write the step and simulated time in the top left corner
+ * @param showCaption  whether to write the step and simulated time in the key under the world
+ * @param showGrid     whether to draw a light grid of round-length squares (see {@link ScaleBar#gridSpacing})
  */
 public record RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser,
-                            boolean showOdometry, boolean showTrails, boolean showCaption) {
+                            boolean showOdometry, boolean showTrails, boolean showCaption, boolean showGrid) {
     /** The widest image drawn, so that a bad option cannot exhaust the heap. */
     public static final int MAX_WIDTH = 8192;
 
@@ -28,6 +29,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @param showOdometry whether to draw the odometry pose when it is off the true pose
      * @param showTrails   whether to draw the robots' paths
      * @param showCaption  whether to write the step and time
+     * @param showGrid     whether to draw the grid
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions {
@@ -48,7 +50,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser, boolean showOdometry) {
-        this(width, showSonar, showNames, showLaser, showOdometry, false, true);
+        this(width, showSonar, showNames, showLaser, showOdometry, false, true, false);
     }
 
     /**
@@ -79,7 +81,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with laser scans shown or hidden
      */
     public RenderOptions withLaser(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, show, showOdometry, showTrails, showCaption);
+        return new RenderOptions(width, showSonar, showNames, show, showOdometry, showTrails, showCaption, showGrid);
     }
 
     /**
@@ -87,7 +89,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the odometry pose shown or hidden
      */
     public RenderOptions withOdometry(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, show, showTrails, showCaption);
+        return new RenderOptions(width, showSonar, showNames, showLaser, show, showTrails, showCaption, showGrid);
     }
 
     /**
@@ -95,7 +97,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with sonar rays shown or hidden
      */
     public RenderOptions withSonar(boolean show) {
-        return new RenderOptions(width, show, showNames, showLaser, showOdometry, showTrails, showCaption);
+        return new RenderOptions(width, show, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid);
     }
 
     /**
@@ -103,7 +105,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with names shown or hidden
      */
     public RenderOptions withNames(boolean show) {
-        return new RenderOptions(width, showSonar, show, showLaser, showOdometry, showTrails, showCaption);
+        return new RenderOptions(width, showSonar, show, showLaser, showOdometry, showTrails, showCaption, showGrid);
     }
 
     /**
@@ -111,7 +113,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with trails shown or hidden
      */
     public RenderOptions withTrails(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, show, showCaption);
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, show, showCaption, showGrid);
     }
 
     /**
@@ -119,7 +121,15 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the caption shown or hidden
      */
     public RenderOptions withCaption(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, show);
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, show, showGrid);
+    }
+
+    /**
+     * @param show whether to draw a light grid of round-length squares
+     * @return these options with the grid shown or hidden
+     */
+    public RenderOptions withGrid(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, show);
     }
 
     /**
@@ -127,6 +137,6 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options at that width
      */
     public RenderOptions withWidth(int newWidth) {
-        return new RenderOptions(newWidth, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption);
+        return new RenderOptions(newWidth, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid);
     }
 }

@@ -2,6 +2,7 @@ package robosim.viewer.draw;
 
 import java.awt.BasicStroke;
 import java.awt.Color;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
@@ -13,11 +14,10 @@ import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
 
 /**
- * Draws one robot's body, heading line, sonar rays, name and odometry ghost; the
+ * Draws one robot's body, heading line and mark, sonar rays, name and odometry ghost; the
  * {@link WorldRenderer}'s helper.
  */
 final class RobotPainter {
-    /** Radius drawn for a robot whose body the world does not describe. */
     /** How far the odometry may be from the true position before its ghost is drawn, mm. */
     static final double ODOMETRY_TOLERANCE_MM = 1;
     /** How far the odometry's heading may be from the true heading before its ghost is drawn, degrees. */
@@ -39,6 +39,19 @@ final class RobotPainter {
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
                 view.px(pose.worldX(front, 0)), view.py(pose.worldY(front, 0))));
+        g.fill(arrowhead(view, pose, front, BodyOutline.isRectangle(p) ? p.robotWidth() / 2 : BodyOutline.radius(p)));
+    }
+
+    /**
+     * The heading mark: a triangle whose tip is the body's front, 0.6 as long as the front reaches
+     * and at most 0.75 of the half width wide each side, so it reads at a glance which way the robot faces.
+     */
+    private static Shape arrowhead(ViewTransform view, Pose2D pose, double front, double halfWidth) {
+        double length = front * 0.6;
+        double half = Math.min(length * 0.7, halfWidth * 0.75);
+        double[][] corners = {{front, 0}, {front - length, half}, {front - length, -half}};
+        return ClosedPath.of(corners.length, i -> view.px(pose.worldX(corners[i][0], corners[i][1])),
+                i -> view.py(pose.worldY(corners[i][0], corners[i][1])));
     }
 
     /**
@@ -99,14 +112,28 @@ final class RobotPainter {
         }
     }
 
-    /** Writes the name just above and right of the body. */
+    /**
+     * Writes the name just above and right of the body, or below it or to its left where the
+     * world's edge would cut the name off.
+     */
     void drawName(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
         if (robot.name() == null) {
             return;
         }
         double r = view.scale() * BodyOutline.radius(info == null ? null : info.parameters());
+        FontMetrics metrics = g.getFontMetrics();
+        double cx = view.px(robot.x());
+        double cy = view.py(robot.y());
+        double x = cx + r * 0.8;
+        if (x + metrics.stringWidth(robot.name()) > view.width() - 2) {
+            x = cx - r * 0.8 - metrics.stringWidth(robot.name());
+        }
+        double baseline = cy - r * 0.8;
+        if (baseline - metrics.getAscent() < 2) {
+            baseline = cy + r * 0.8 + metrics.getAscent();
+        }
         g.setColor(colour);
-        g.drawString(robot.name(), (float) (view.px(robot.x()) + r * 0.8), (float) (view.py(robot.y()) - r * 0.8));
+        g.drawString(robot.name(), (float) x, (float) baseline);
     }
 
     private static Pose2D pose(RobotView robot) {

@@ -6,6 +6,7 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
@@ -20,9 +21,9 @@ import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
- * Draws one snapshot of the world: background, heat sources, obstacles, border, robots, optional
- * laser scans, sonar rays, odometry ghosts and names, and a caption with the step and the
- * simulated time. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
+ * Draws one snapshot of the world: background, optional grid, heat sources, obstacles, border,
+ * robots, optional laser scans, sonar rays, odometry ghosts and names; and under the world a key
+ * with the step and the simulated time, a scale bar and a legend. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
  * renderer may serve several threads, and the window, recorder and replay views can share it.
  *
  * <p>World coordinates are mm with +y up and headings in degrees counter-clockwise from +x; the
@@ -36,8 +37,11 @@ public final class WorldRenderer {
     /** The colour of the world's border. */
     public static final Color BORDER = Color.BLACK;
 
-    private static final Color OUTLINE = new Color(20, 20, 20);
-    private static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
+    /** The colour of the grid's lines. */
+    public static final Color GRID = new Color(214, 218, 226);
+
+    static final Color OUTLINE = new Color(20, 20, 20);
+    static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
     private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
 
     private final RobotPainter robots = new RobotPainter();
@@ -49,8 +53,8 @@ public final class WorldRenderer {
     }
 
     /**
-     * Draws a snapshot into a new image as wide as the options say and as high as the world's aspect
-     * ratio makes it.
+     * Draws a snapshot into a new image as wide as the options say: the world, as high as its
+     * aspect ratio makes it, and under it the key (see {@link #keyHeight}).
      *
      * @param world   the static world
      * @param snapshot   the robots after one step, or {@code null} to draw the world alone
@@ -75,10 +79,12 @@ public final class WorldRenderer {
      */
     public BufferedImage render(WorldDescription world, Snapshot snapshot, RenderOptions options, Trails trails) {
         ViewTransform view = ViewTransform.fit(world, options.width());
-        BufferedImage image = new BufferedImage(view.width(), view.height(), BufferedImage.TYPE_INT_RGB);
+        int key = keyHeight(world, options, view.width());
+        BufferedImage image = new BufferedImage(view.width(), view.height() + key, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
             draw(g, view, world, snapshot, options, trails);
+            drawKey(g, view.height(), view.width(), view.scale(), world, snapshot, options);
         } finally {
             g.dispose();
         }
@@ -87,8 +93,9 @@ public final class WorldRenderer {
 
     /**
      * Draws a snapshot onto any surface, such as a window's component or an image. Only the
-     * rectangle from (0, 0) to the transform's width and height is drawn; the options' width is
-     * ignored in favour of the transform's. The graphics' settings are left as they were.
+     * rectangle from (0, 0) to the transform's width and height is drawn, without the key; the
+     * options' width is ignored in favour of the transform's. The graphics' settings are left as
+     * they were.
      *
      * @param target  where to draw
      * @param view    the mapping from world mm to pixels
@@ -119,7 +126,7 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
-            drawWorld(g, view, world);
+            drawWorld(g, view, world, options.showGrid());
             if (trails != null && options.showTrails()) {
                 TrailPainter.draw(g, trails, name -> colourOf(world, snapshot, name), (x, y, out) -> {
                     out[0] = view.px(x);
@@ -128,9 +135,6 @@ public final class WorldRenderer {
             }
             if (snapshot != null) {
                 drawRobots(g, view, world, snapshot, options);
-                if (options.showCaption()) {
-                    drawCaption(g, view.width(), caption(snapshot));
-                }
             }
         } finally {
             g.dispose();
@@ -147,9 +151,55 @@ public final class WorldRenderer {
         return String.format(Locale.ROOT, "step %d  t=%.1f s", snapshot.step(), snapshot.timeMs() / 1000.0);
     }
 
-    private void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world) {
+    /**
+     * The height of the key drawn under the world: a row with the step, the time and the scale
+     * bar, then the legend's rows. It depends on the world, the options and the width only, so
+     * every frame of a run is the same size.
+     *
+     * @param world   the world
+     * @param options what is shown, which the legend explains
+     * @param width   the key's width, px
+     * @return its height, px
+     */
+    public static int keyHeight(WorldDescription world, RenderOptions options, int width) {
+        return KeyPainter.layout(world, options, width).height();
+    }
+
+    /**
+     * Draws the key, {@link #keyHeight} high, across a surface: the step and simulated time (when
+     * the options show the caption) and a scale bar on its first row, then the legend.
+     *
+     * @param target   where to draw; its settings are left as they were
+     * @param top      the key's top edge on the surface, px
+     * @param width    the key's width, px
+     * @param scale    pixels per mm of the world as drawn beside it, for the scale bar
+     * @param world    the world
+     * @param snapshot the snapshot drawn, or {@code null}
+     * @param options  what is shown
+     */
+    public void drawKey(Graphics2D target, int top, int width, double scale, WorldDescription world,
+                        Snapshot snapshot, RenderOptions options) {
+        KeyPainter.draw(target, top, width, scale, world, snapshot, options);
+    }
+
+    /**
+     * The words of the legend drawn for a world with these options, in order: one entry per robot
+     * of the world (its name beside its colour), then the robots' states and what else is drawn.
+     *
+     * @param world   the world
+     * @param options what is shown
+     * @return the entries' words
+     */
+    public static List<String> legend(WorldDescription world, RenderOptions options) {
+        return Legend.entries(world, options).stream().map(Legend.Entry::label).toList();
+    }
+
+    private void drawWorld(Graphics2D g, ViewTransform view, WorldDescription world, boolean grid) {
         g.setColor(BACKGROUND);
         g.fill(new Rectangle2D.Double(0, 0, view.width(), view.height()));
+        if (grid) {
+            drawGrid(g, view, world);
+        }
         heat.drawGlow(g, view, world.heat());
         g.setColor(OBSTACLE);
         for (Obstacle obstacle : world.obstacles()) {
@@ -163,6 +213,19 @@ public final class WorldRenderer {
         g.setColor(BORDER);
         g.setStroke(new BasicStroke(2f));
         g.draw(new Rectangle2D.Double(1, 1, view.width() - 2.0, view.height() - 2.0));
+    }
+
+    /** Light lines at every multiple of the grid's spacing, from the world's origin. */
+    private static void drawGrid(Graphics2D g, ViewTransform view, WorldDescription world) {
+        double spacing = ScaleBar.gridSpacing(Math.max(world.width(), world.height()));
+        g.setColor(GRID);
+        g.setStroke(new BasicStroke(1f));
+        for (double x = spacing; x < world.width(); x += spacing) {
+            g.draw(new Line2D.Double(view.px(x), view.py(0), view.px(x), view.py(world.height())));
+        }
+        for (double y = spacing; y < world.height(); y += spacing) {
+            g.draw(new Line2D.Double(view.px(0), view.py(y), view.px(world.width()), view.py(y)));
+        }
     }
 
     /** @return the ring as a closed pixel path, or {@code null} if it has fewer than 3 points */
@@ -283,7 +346,7 @@ public final class WorldRenderer {
     }
 
     /** Text grows with the image but stays readable on small ones. */
-    private static int fontSize(int imageWidth) {
+    static int fontSize(int imageWidth) {
         return Math.max(10, Math.min(24, imageWidth / 70));
     }
 }

@@ -46,6 +46,7 @@ public final class DisplayControls extends JPanel {
         toggle("Laser", r.showLaser(), (o, on) -> o.withLaser(on));
         toggle("Names", r.showNames(), (o, on) -> o.withNames(on));
         toggle("Trails", r.showTrails(), (o, on) -> o.withTrails(on));
+        toggle("Grid", r.showGrid(), (o, on) -> o.withGrid(on));
         JCheckBox threeD = new JCheckBox("3D", state.threeD());
         threeD.addActionListener(e -> {
             state.setThreeD(threeD.isSelected());

@@ -1,7 +1,11 @@
 package robosim.viewer.window;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
+import java.util.Locale;
 import java.util.List;
+import robosim.protocol.MessageDelivery;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.viewer.draw.Trails;
@@ -16,8 +20,14 @@ public final class ViewModel {
     private final Trails trails = new Trails();
     private WorldDescription world;
     private Snapshot snapshot;
+    private final Deque<String> messages = new ArrayDeque<>();
     private String source = "";
     private String ended;
+    private String selected;
+    private double[] cursor;
+
+    /** How many of the latest messages are kept for the robot panel. */
+    public static final int MESSAGES_KEPT = 50;
 
     /** @param observer called after every change */
     public void observe(Runnable observer) {
@@ -39,6 +49,7 @@ public final class ViewModel {
         world = newWorld;
         snapshot = null;
         trails.clear();
+        messages.clear();
         changed();
     }
 
@@ -53,6 +64,7 @@ public final class ViewModel {
         }
         for (Snapshot f : snapshots) {
             trails.add(f);
+            keepMessages(f);
         }
         snapshot = snapshots.get(snapshots.size() - 1);
         changed();
@@ -66,8 +78,10 @@ public final class ViewModel {
      */
     public void jump(List<Snapshot> history) {
         trails.clear();
+        messages.clear();
         for (Snapshot f : history) {
             trails.add(f);
+            keepMessages(f);
         }
         snapshot = history.isEmpty() ? null : history.get(history.size() - 1);
         changed();
@@ -89,6 +103,64 @@ public final class ViewModel {
     public void ended(String reason) {
         ended = reason;
         changed();
+    }
+
+    /** Keeps the snapshot's messages and speech, each as one line naming the step and who. */
+    private void keepMessages(Snapshot f) {
+        for (MessageDelivery m : f.messages()) {
+            keep(String.format(Locale.ROOT, "step %d: %s to %s: %s %s", f.step(), m.from(),
+                    m.to() == null || m.to().isEmpty() ? "all" : m.to(), m.kind(), m.body()));
+        }
+        for (Snapshot.Said said : f.said()) {
+            keep(String.format(Locale.ROOT, "step %d: %s said \"%s\"", f.step(), said.robot(), said.text()));
+        }
+    }
+
+    private void keep(String line) {
+        messages.addLast(line);
+        while (messages.size() > MESSAGES_KEPT) {
+            messages.removeFirst();
+        }
+    }
+
+    /**
+     * Chooses the robot whose panel is shown, as a click on it does.
+     *
+     * @param name the robot's name, or {@code null} for none
+     */
+    public void select(String name) {
+        selected = name;
+        changed();
+    }
+
+    /** @return the robot whose panel is shown, or {@code null} */
+    public String selected() {
+        return selected;
+    }
+
+    /**
+     * Where the mouse is over the 2D world.
+     *
+     * @param xy the world point in mm, {x, y}, or {@code null} when the mouse is off the world
+     */
+    public void cursor(double[] xy) {
+        cursor = xy == null ? null : xy.clone();
+        changed();
+    }
+
+    /** @return the world point under the mouse in mm, {x, y}, or {@code null} */
+    public double[] cursor() {
+        return cursor == null ? null : cursor.clone();
+    }
+
+    /**
+     * The latest messages sent and things said, oldest first, at most {@value #MESSAGES_KEPT}, such
+     * as {@code step 120: r1 to r2: wall 3 4}.
+     *
+     * @return the lines
+     */
+    public List<String> messages() {
+        return List.copyOf(messages);
     }
 
     /** @return the world, or {@code null} before it has come */

@@ -24,7 +24,7 @@ public final class ViewState {
     /** The largest 2D zoom. */
     public static final double MAX_ZOOM = 200;
 
-    private RenderOptions render = RenderOptions.of(800).withTrails(true).withCaption(false);
+    private RenderOptions render = RenderOptions.of(800).withTrails(true);
     private boolean threeD;
     private Camera camera = Camera.DEFAULT;
     private Light light = Light.DEFAULT;
@@ -42,14 +42,14 @@ public final class ViewState {
      */
     public record Placement(ViewTransform view, double originX, double originY) { }
 
-    /** @return the 2D drawing options (the caption is the window's own) */
+    /** @return the 2D drawing options */
     public RenderOptions render() {
         return render;
     }
 
     /** @param options the new drawing options; the width is ignored */
     public void setRender(RenderOptions options) {
-        render = options.withCaption(false);
+        render = options;
     }
 
     /** @return whether the 3D view is shown */

@@ -5,8 +5,8 @@ import java.awt.image.BufferedImage;
 import javax.swing.JPanel;
 
 /**
- * The window's content: the display controls above the world view, then the replay controls when
- * replaying, and the status bar. It needs no screen: {@link #screenshot(int, int)} paints it into
+ * The window's content: the display controls above the world view, the panel of the robot last
+ * clicked beside it, then the replay controls when replaying, and the status bar. It needs no screen: {@link #screenshot(int, int)} paints it into
  * an image, as the tests do.
  */
 public final class ViewerPane extends JPanel {
@@ -16,6 +16,7 @@ public final class ViewerPane extends JPanel {
     private final DisplayControls controls;
     private final StatusBar status;
     private final PlaybackControls playback;
+    private final RobotPanel robot;
 
     /**
      * A pane for a live run.
@@ -42,6 +43,8 @@ public final class ViewerPane extends JPanel {
         playback = player == null ? null : new PlaybackControls(player);
         add(controls, BorderLayout.NORTH);
         add(view, BorderLayout.CENTER);
+        robot = new RobotPanel(model);
+        add(robot, BorderLayout.EAST);
         JPanel south = new JPanel(new BorderLayout());
         if (playback != null) {
             south.add(playback, BorderLayout.NORTH);
@@ -87,6 +90,11 @@ public final class ViewerPane extends JPanel {
     /** @return the display controls */
     public DisplayControls displayControls() {
         return controls;
+    }
+
+    /** @return the panel of the robot last clicked (hidden while none is) */
+    public RobotPanel robotPanel() {
+        return robot;
     }
 
     /** @return the status bar */

@@ -84,6 +84,6 @@ class HeatDrawingTest {
         BufferedImage none = render();
         BufferedImage broken = render(new HeatSource(Double.NaN, 1500, 40), new HeatSource(1000, 1500, 0),
                 new HeatSource(1000, 1500, Double.POSITIVE_INFINITY));
-        assertEquals(0, Pixels.differing(none, broken));
+        assertEquals(0, Pixels.differing(none, broken, 0, 0, 800, 400), "the world is drawn alike");
     }
 }

@@ -42,7 +42,8 @@ class PngImageWriterTest {
                 Fixtures.snapshot(120, Fixtures.robotAtRest()), RenderOptions.of(Fixtures.WIDTH_PX)));
         BufferedImage back = ImageIO.read(writer.fileFor(120).toFile());
         assertEquals(800, back.getWidth());
-        assertEquals(400, back.getHeight());
+        assertEquals(400 + WorldRenderer.keyHeight(Fixtures.world(), RenderOptions.of(800), 800), back.getHeight(),
+                "the world and the key under it");
     }
 
     @Test

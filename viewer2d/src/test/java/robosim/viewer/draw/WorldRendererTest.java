@@ -27,16 +27,18 @@ class WorldRendererTest {
     }
 
     @Test
-    void imageIsAsWideAsAskedAndAsHighAsTheWorldsAspect() {
+    void imageIsAsWideAsAskedAndAsHighAsTheWorldsAspectPlusTheKey() {
         BufferedImage image = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), true, true);
         assertEquals(BufferedImage.TYPE_INT_RGB, image.getType());
         assertEquals(800, image.getWidth());
-        assertEquals(400, image.getHeight());
+        int key = WorldRenderer.keyHeight(Fixtures.world(), new RenderOptions(800, true, true), 800);
+        assertTrue(key >= 2 * 15, "a row for the step and scale bar, and the legend's: " + key);
+        assertEquals(400 + key, image.getHeight());
 
         WorldDescription tall = new WorldDescription("tall", 1000, 3000, 100, List.of(), List.of());
         BufferedImage portrait = renderer.render(tall, null, RenderOptions.of(300));
         assertEquals(300, portrait.getWidth());
-        assertEquals(900, portrait.getHeight());
+        assertEquals(900 + WorldRenderer.keyHeight(tall, RenderOptions.of(300), 300), portrait.getHeight());
     }
 
     @Test
@@ -117,7 +119,87 @@ class WorldRendererTest {
         assertEquals("step 120  t=12.0 s", WorldRenderer.caption(new Snapshot(120, 12_000, List.of())));
         BufferedImage captioned = render(Fixtures.snapshot(120), false, false);
         BufferedImage bare = render(null, false, false);
-        assertTrue(differingPixels(captioned, bare, 0, 0, 200, 40) > 0);
+        assertEquals(0, differingPixels(captioned, bare, 0, 0, 800, 400), "the caption is not on the world");
+        assertTrue(differingPixels(captioned, bare, 0, 400, 200, 420) > 0, "it is in the key's first row");
+    }
+
+    @Test
+    void theKeyHasAScaleBarOfARoundLength() {
+        // 1 px is 5 mm; a quarter of 800 px is 1000 mm: the bar is 1 m, 200 px, ending 8 px from the right.
+        assertEquals(1000, ScaleBar.barLength(0.2, 800));
+        assertEquals("1 m", ScaleBar.label(1000));
+        assertEquals("500 mm", ScaleBar.label(500));
+        assertEquals("2 m", ScaleBar.label(ScaleBar.roundLength(4999)));
+        BufferedImage image = render(null, false, false);
+        int barRow = -1;
+        for (int y = 400; y < 420 && barRow < 0; y++) {
+            if (at(image, 700, y).equals(new Color(20, 20, 20))) {
+                barRow = y;
+            }
+        }
+        assertTrue(barRow > 0, "a dark bar in the key's first row at x = 700");
+        assertEquals(new Color(20, 20, 20), at(image, 600, barRow), "it reaches 200 px left of its end");
+        assertEquals(Color.WHITE, at(image, 580, barRow), "and no further");
+    }
+
+    @Test
+    void theLegendNamesEachRobotAndWhatTheStatesAndMarksMean() {
+        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet", "red edge: stalled",
+                        "dashed: where it believes it is (odometry)", "sonar rays", "laser scan", "wall"),
+                WorldRenderer.legend(Fixtures.world(), new RenderOptions(800, true, true)));
+        WorldDescription gold = Fixtures.world(Fixtures.params(150, 0, 0, 8000),
+                List.of(new WorldDescription.HeatSource(500, 500, 40)));
+        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet", "red edge: stalled", "laser scan",
+                        "trail", "heat source (the gold)", "wall", "grid: 500 mm squares"),
+                WorldRenderer.legend(gold, new RenderOptions(800, false, false).withOdometry(false).withTrails(true)
+                        .withGrid(true)));
+    }
+
+    @Test
+    void theLegendShowsEachRobotsColourAndTheGreyOfARobotNotYetConnected() {
+        BufferedImage image = render(Fixtures.snapshot(1), false, false);
+        assertTrue(count(image, RobotPalette.colour(0), 400) > 20, "r1's colour in the legend");
+        assertTrue(count(image, RobotPalette.DISCONNECTED, 400) > 20, "the grey of a robot not connected yet");
+        assertTrue(count(image, RobotPalette.STALLED, 400) > 10, "the red edge of a stalled robot");
+        assertTrue(count(image, WorldRenderer.OBSTACLE, 400) > 20, "a wall");
+    }
+
+    @Test
+    void theGridIsDrawnOnlyWhenAsked() {
+        RenderOptions plain = new RenderOptions(800, false, false);
+        BufferedImage without = renderer.render(Fixtures.world(), null, plain);
+        BufferedImage with = renderer.render(Fixtures.world(), null, plain.withGrid(true));
+        // 4000 mm wide: 500 mm squares; the line x = 2000 mm is pixel column 400, free space at y = 100.
+        assertEquals(WorldRenderer.BACKGROUND, at(without, 400, 100));
+        assertNotEquals(WorldRenderer.BACKGROUND, at(with, 400, 100));
+        assertEquals(WorldRenderer.BACKGROUND, at(with, 450, 150), "between the lines");
+    }
+
+    @Test
+    void aNameNearTheTopEdgeIsWrittenBelowTheRobotNotCutOff() {
+        Snapshot top = Fixtures.snapshot(1, Fixtures.robot(3000, 1950, 0, false, true));
+        BufferedImage on = render(top, false, true);
+        BufferedImage off = render(top, false, false);
+        // centre at pixel row 10: the name goes under the body (rows 30 to 60)
+        assertTrue(differingPixels(on, off, 620, 30, 720, 60) > 0, "the name under the robot");
+    }
+
+    @Test
+    void theHeadingMarkIsATriangleAtTheNose() {
+        BufferedImage east = render(Fixtures.snapshot(1, Fixtures.robotAtRest()), false, false);
+        // Nose at pixel (640, 280); the mark reaches 24 px back and 17 px to each side.
+        assertTrue(brightness(at(east, 632, 284)) < 80, "dark beside the heading line, inside the mark");
+        assertEquals(RobotPalette.colour(0), at(east, 610, 284), "the body's colour behind the mark");
+    }
+
+    private static int count(BufferedImage image, Color colour, int fromRow) {
+        int n = 0;
+        for (int y = fromRow; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                n += image.getRGB(x, y) == colour.getRGB() ? 1 : 0;
+            }
+        }
+        return n;
     }
 
     @Test

@@ -30,6 +30,7 @@ import robosim.viewer.draw.PngImageWriter;
 import robosim.viewer.draw.RenderOptions;
 import robosim.viewer.draw.Fixtures;
 import robosim.viewer.draw.RenderedImages;
+import robosim.viewer.draw.WorldRenderer;
 import robosim.protocol.recording.SnapshotListener;
 
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
@@ -91,7 +92,8 @@ class ViewerClientTest {
                     files(tmp));
             BufferedImage image = ImageIO.read(png.fileFor(6).toFile());
             assertEquals(400, image.getWidth());
-            assertEquals(200, image.getHeight());
+            assertEquals(200 + WorldRenderer.keyHeight(Fixtures.world(), new RenderOptions(400, true, true), 400),
+                    image.getHeight(), "the world and the key under it");
         }
     }
 
@@ -125,7 +127,9 @@ class ViewerClientTest {
             assertEquals(new ViewerSummary("reloaded", 5, 2, "done"), summary);
             assertEquals(2, png.imagesWritten());
             assertEquals(List.of("frame-000002.png", "frame-000003.png"), files(tmp));
-            assertEquals(400, ImageIO.read(png.fileFor(2).toFile()).getHeight(), "drawn with the square world");
+            WorldDescription square = new WorldDescription("reloaded", 2000, 2000, 100, List.of(), List.of());
+            assertEquals(400 + WorldRenderer.keyHeight(square, new RenderOptions(400, true, true), 400),
+                    ImageIO.read(png.fileFor(2).toFile()).getHeight(), "drawn with the square world");
         }
     }
 

@@ -62,11 +62,12 @@ class WindowTest {
     @Test
     void theViewDrawsThePixelsOfThePngImage() throws Exception {
         ViewModel model = new ViewModel();
+        int height = 400 + WorldRenderer.keyHeight(Scenes.world(), RenderOptions.of(800).withTrails(true), 800);
         BufferedImage window = Scenes.onEdt(() -> {
             ViewerPane pane = livePane(model);
             WorldView view = pane.worldView();
-            view.setSize(800, 400);
-            BufferedImage image = new BufferedImage(800, 400, BufferedImage.TYPE_INT_RGB);
+            view.setSize(800, height);
+            BufferedImage image = new BufferedImage(800, height, BufferedImage.TYPE_INT_RGB);
             Graphics2D g = image.createGraphics();
             view.paint(g);
             g.dispose();
@@ -74,7 +75,7 @@ class WindowTest {
         });
         BufferedImage png = new WorldRenderer().render(Scenes.world(), Scenes.snapshot(7),
                 RenderOptions.of(800).withTrails(true), model.trails());
-        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG image");
+        assertArrayEquals(pixels(png), pixels(window), "the window at zoom 1 equals the PNG image, key and all");
     }
 
     @Test
