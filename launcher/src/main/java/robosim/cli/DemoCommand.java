@@ -43,7 +43,7 @@ final class DemoCommand implements Callable<Integer> {
     RecordOptions recording = new RecordOptions();
 
     @Option(names = "--gif", paramLabel = "FILE",
-            description = "also write the frames as an animated GIF that loops, played at " + GoldfinderCommand.GIF_SPEED + "x simulated time")
+            description = "write an animated GIF that loops; of the frames, played at " + GoldfinderCommand.GIF_SPEED + "x simulated time")
     Path gif;
 
     @Override

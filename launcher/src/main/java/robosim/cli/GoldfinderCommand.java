@@ -85,7 +85,7 @@ final class GoldfinderCommand implements Callable<Integer> {
     RecordOptions recording = new RecordOptions();
 
     @Option(names = "--gif", paramLabel = "FILE",
-            description = "also write the frames as an animated GIF that loops, played at " + GIF_SPEED + "x simulated time")
+            description = "write an animated GIF that loops; of the frames, played at " + GIF_SPEED + "x simulated time")
     Path gif;
 
     /** How long the viewer may take, after the run, to write the frames it has not written yet, s. */

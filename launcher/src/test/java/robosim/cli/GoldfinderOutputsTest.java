@@ -42,7 +42,7 @@ class GoldfinderOutputsTest {
     private Path maze() {
         Path world = dir.resolve("maze.xml");
         String[] made = run("maze", "--cells", "4", "4", "--cell-size", "1500", "--seed", "3", "--robots", "2",
-                "--out-dir", world.toString());
+                "--out", world.toString());
         assertEquals("0", made[0], made[2]);
         return world;
     }
