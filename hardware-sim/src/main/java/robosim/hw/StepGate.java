@@ -9,7 +9,7 @@ import java.util.function.LongPredicate;
 /**
  * Where a robot's code and its {@link HardwareSimulator} hand simulated time to each other. The
  * robot code's threads (its participants) run between steps and then yield: they wait for a
- * condition on simulated time ({@link #await}). The hardware simulator publishes each new step
+ * condition on simulated time ({@link #yieldUntil}, then {@link #awaitWake}). The hardware simulator publishes each new step
  * ({@link #advance}), which wakes the participants whose condition now holds. Once every
  * participant has yielded again, the step's requests are sent, exactly once, by whichever thread
  * saw that moment: the last participant to yield, or the hardware thread itself when nobody woke.

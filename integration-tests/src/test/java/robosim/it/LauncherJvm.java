@@ -90,6 +90,13 @@ final class LauncherJvm implements AutoCloseable {
         return String.join("\n", lines());
     }
 
+    /** Writes text to the JVM's standard input and closes it, as a pipe from a file would. */
+    void input(String text) throws IOException {
+        try (var in = process.getOutputStream()) {
+            in.write(text.getBytes(StandardCharsets.UTF_8));
+        }
+    }
+
     /** Ends the JVM at once, as a crash or {@code kill -9} would. */
     void kill() throws InterruptedException {
         process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);

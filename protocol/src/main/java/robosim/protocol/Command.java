@@ -48,8 +48,9 @@ public sealed interface Command {
     sealed interface RunEvent extends Command { }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param vel translational velocity, mm/s
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetVel(double vel) implements Motion {
         public SetVel {
@@ -58,8 +59,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param rotVel rotational velocity, deg/s, positive counter-clockwise
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetRotVel(double rotVel) implements Motion {
         public SetRotVel {
@@ -68,9 +70,10 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if either is not finite.
+     *
      * @param left  left wheel velocity, mm/s
      * @param right right wheel velocity, mm/s
-     * @throws IllegalArgumentException if either is not finite
      */
     record SetVel2(double left, double right) implements Motion {
         public SetVel2 {
@@ -80,8 +83,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param distance mm to travel from the current pose; negative is backwards
-     * @throws IllegalArgumentException if it is not finite
      */
     record Move(double distance) implements Motion {
         public Move {
@@ -90,8 +94,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param heading absolute heading to turn to, degrees
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetHeading(double heading) implements Motion {
         public SetHeading {
@@ -100,8 +105,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param delta degrees to turn from the current heading
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetDeltaHeading(double delta) implements Motion {
         public SetDeltaHeading {
@@ -113,8 +119,9 @@ public sealed interface Command {
     record Stop() implements Motion { }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param vel new translational limit, mm/s, within the parameter file's maximum
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetMaxTransVel(double vel) implements Motion {
         public SetMaxTransVel {
@@ -123,8 +130,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is not finite.
+     *
      * @param rotVel new rotational limit, deg/s, within the parameter file's maximum
-     * @throws IllegalArgumentException if it is not finite
      */
     record SetMaxRotVel(double rotVel) implements Motion {
         public SetMaxRotVel {
@@ -138,11 +146,12 @@ public sealed interface Command {
     /**
      * Switches the robot's laser (a SICK LMS200 at the parameter file's laser pose) on or off.
      *
+     * Its constructor throws IllegalArgumentException if the increment is neither, or the range is not
+     * a finite number greater than 0.
+     *
      * @param on        whether it scans
      * @param increment degrees between readings over its 180° field: 1 (181 readings) or 0.5 (361)
      * @param maxRange  its maximum range, mm
-     * @throws IllegalArgumentException if the increment is neither, or the range is not a finite
-     *                                  number greater than 0
      */
     record ConfigureLaser(boolean on, double increment, double maxRange) implements SensorSetting {
         public ConfigureLaser {
@@ -168,11 +177,12 @@ public sealed interface Command {
     /**
      * Switches the robot's heat sensor on or off.
      *
+     * Its constructor throws IllegalArgumentException if the field of view is not above 0 and at most
+     * 360, or the range is not a finite number greater than 0.
+     *
      * @param on          whether it senses
      * @param fieldOfView its field of view, degrees, centred on the robot's heading
      * @param maxRange    the farthest source it senses, mm
-     * @throws IllegalArgumentException if the field of view is not above 0 and at most 360, or the
-     *                                  range is not a finite number greater than 0
      */
     record ConfigureHeatSensor(boolean on, double fieldOfView, double maxRange) implements SensorSetting {
         public ConfigureHeatSensor {
@@ -198,13 +208,14 @@ public sealed interface Command {
     /**
      * Sends a message through the Environment's CommunicationsSystem.
      *
+     * Its constructor throws IllegalArgumentException if the mode, kind or body is missing, or a
+     * message to a robot or a group names none.
+     *
      * @param id   the sender's number for it, named in any error about it
      * @param mode how it is addressed
      * @param to   the robot or group; ignored for {@link Addressing#ALL}
      * @param kind {@code text}, or the name of the type the JSON body encodes
      * @param body the payload
-     * @throws IllegalArgumentException if the mode, kind or body is missing, or a message to a robot
-     *                                  or a group names none
      */
     record SendMessage(long id, Addressing mode, String to, String kind, String body) implements Messaging {
         public SendMessage {
@@ -219,8 +230,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is missing or blank.
+     *
      * @param group a group to join: multicasts to it reach this robot
-     * @throws IllegalArgumentException if it is missing or blank
      */
     record JoinGroup(String group) implements Messaging {
         public JoinGroup {
@@ -229,8 +241,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is missing or blank.
+     *
      * @param group a group to leave
-     * @throws IllegalArgumentException if it is missing or blank
      */
     record LeaveGroup(String group) implements Messaging {
         public LeaveGroup {
@@ -242,8 +255,9 @@ public sealed interface Command {
      * The robot reports that it has found an object of the world, for the Environment to check
      * against the object's true position (GoldFinder's gold).
      *
+     * Its constructor throws IllegalArgumentException if it is missing or blank.
+     *
      * @param object what was found, for example {@code gold}
-     * @throws IllegalArgumentException if it is missing or blank
      */
     record ReportFound(String object) implements RunEvent {
         public ReportFound {
@@ -252,8 +266,9 @@ public sealed interface Command {
     }
 
     /**
+     * Its constructor throws IllegalArgumentException if it is missing or longer than 1000 characters.
+     *
      * @param text text the robot says: shown by viewers, kept in recordings and the log
-     * @throws IllegalArgumentException if it is missing or longer than 1000 characters
      */
     record Say(String text) implements RunEvent {
         public Say {
@@ -267,9 +282,10 @@ public sealed interface Command {
     /**
      * Moves each wheel by a distance (the Nomad's {@code pr}): both wheels start and finish together.
      *
+     * Its constructor throws IllegalArgumentException if either is not finite.
+     *
      * @param left  mm for the left wheel, negative backwards
      * @param right mm for the right wheel
-     * @throws IllegalArgumentException if either is not finite
      */
     record MoveWheels(double left, double right) implements Motion {
         public MoveWheels {
@@ -281,9 +297,10 @@ public sealed interface Command {
     /**
      * Sets the accelerations, within nothing but being positive (the Nomad's {@code ac}).
      *
+     * Its constructor throws IllegalArgumentException if either is not a finite number greater than 0.
+     *
      * @param trans translational acceleration and deceleration, mm/s²
      * @param rot   rotational acceleration and deceleration, deg/s²
-     * @throws IllegalArgumentException if either is not a finite number greater than 0
      */
     record SetAccel(double trans, double rot) implements Motion {
         public SetAccel {

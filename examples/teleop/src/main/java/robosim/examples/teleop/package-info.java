@@ -1,0 +1,2 @@
+/** A Pioneer driven from the keyboard: one command a line on standard input. */
+package robosim.examples.teleop;

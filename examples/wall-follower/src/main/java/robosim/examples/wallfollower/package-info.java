@@ -1,0 +1,2 @@
+/** A Pioneer that follows the wall on its right by its laser. */
+package robosim.examples.wallfollower;
