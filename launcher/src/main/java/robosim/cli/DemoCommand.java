@@ -3,6 +3,7 @@ package robosim.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -30,9 +31,13 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--every", defaultValue = "20", paramLabel = "K", description = "write a frame every K steps; default ${DEFAULT-VALUE}")
     int every;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
         GoldfinderCommand gold = new GoldfinderCommand();
+        gold.quiet = quiet;
         gold.spec = spec;
         gold.world = RobotParameterFiles.root().resolve("testLoadFiles/environment/maze-medium.xml");
         gold.robots = 3;

@@ -68,6 +68,9 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--wait-viewers", defaultValue = "0", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
+    @Mixin
+    QuietOption quiet;
+
     @Option(names = "--threads", paramLabel = "N", description = "threads that read the robots' sensors each step; "
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
@@ -142,7 +145,8 @@ final class EnvCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
             out.flush();
             RunReport report;
-            try {
+            // the progress line is closed (a terminal's line cleared) before the error or the report
+            try (RunProgressLine progress = RunProgressLine.follow(server, err, quiet.quiet, false)) {
                 report = server.run();
             } catch (IllegalStateException e) {
                 err.println("robosim env: " + e.getMessage());

@@ -11,6 +11,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -68,6 +69,9 @@ final class GoldfinderCommand implements Callable<Integer> {
 
     @Option(names = "--no-frames", description = "run without a viewer")
     boolean noFrames;
+
+    @Mixin
+    QuietOption quiet = new QuietOption();
 
     @Override
     public Integer call() throws Exception {
@@ -131,7 +135,10 @@ final class GoldfinderCommand implements Callable<Integer> {
                 } else {
                     GoldFinder.start("127.0.0.1", server.robotPort(), robots, cellSize, seed);
                 }
-                RunReport report = server.run();
+                RunReport report;
+                try (RunProgressLine progress = RunProgressLine.follow(server, spec.commandLine().getErr(), quiet.quiet, true)) {
+                    report = server.run();
+                }
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
                     viewer.get(60, TimeUnit.SECONDS);
