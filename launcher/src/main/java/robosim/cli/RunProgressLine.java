@@ -117,19 +117,21 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
         }
     }
 
-    /** Steps per second and times real time over the last {@link #RATE_WINDOW_NANOS} or so. */
+    /**
+     * Steps per second and times real time over the last {@link #RATE_WINDOW_NANOS} or so; until
+     * the first such window has passed, over the run so far.
+     */
     private void rates(Status s) {
         long dt = s.runNanos() - refRunNanos;
-        if (Double.isNaN(stepsPerS) && s.runNanos() > 0) {
-            stepsPerS = s.step() * 1e9 / s.runNanos();
-            realTimes = s.timeMs() * 1e6 / s.runNanos();
-        }
         if (dt >= RATE_WINDOW_NANOS) {
             stepsPerS = (s.step() - refStep) * 1e9 / dt;
             realTimes = (s.timeMs() - refTimeMs) * 1e6 / dt;
             refRunNanos = s.runNanos();
             refStep = s.step();
             refTimeMs = s.timeMs();
+        } else if (refRunNanos == 0 && s.step() > 0 && s.runNanos() > 0) {
+            stepsPerS = s.step() * 1e9 / s.runNanos();
+            realTimes = s.timeMs() * 1e6 / s.runNanos();
         }
     }
 
@@ -144,7 +146,7 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
         } else {
             b.append("step ").append(s.step()).append("  ").append(stepsPerSecond()).append(" steps/s");
         }
-        b.append("  ").append(realTime()).append("x real time  ").append(robots(s, "  "));
+        b.append("  ").append(realTime()).append("x real time  ").append(robots(s, null));
         b.append("  ").append(eta(s) != null ? etaLabel + eta(s) : duration(s.runNanos()));
         return b.toString();
     }
@@ -164,10 +166,11 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
         return b.toString();
     }
 
+    /** @return the robots connected, and after {@code sep} the viewers if any (none if {@code sep} is null) */
     private static String robots(Status s, String sep) {
         String robots = s.connected() == s.robots() ? plural(s.robots(), "robot")
                 : s.connected() + " of " + s.robots() + " robots";
-        return s.viewers() > 0 ? robots + sep + plural(s.viewers(), "viewer") : robots;
+        return s.viewers() > 0 && sep != null ? robots + sep + plural(s.viewers(), "viewer") : robots;
     }
 
     /** @return the time left until the step limit at the run's average pace (steadier than the last seconds'), or null */

@@ -59,7 +59,8 @@ final class StatusLine implements AutoCloseable {
 
     /** @return a status line on standard error as the launcher's {@code err} writer has it */
     static StatusLine on(PrintWriter err) {
-        return new StatusLine(err, Terminal.stderrIsTerminal(), Terminal.width());
+        boolean terminal = Terminal.stderrIsTerminal();
+        return new StatusLine(err, terminal, terminal ? Terminal.width() : Terminal.DEFAULT_WIDTH);
     }
 
     /** @return whether the line is redrawn in place */

@@ -1,10 +1,13 @@
 package robosim.cli;
 
 import java.io.Console;
+import java.io.File;
 import java.io.IOException;
 import java.lang.reflect.Method;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
 
 /**
  * Whether standard error is a terminal, so that progress may be one line that updates in place
@@ -53,19 +56,46 @@ final class Terminal {
         }
     }
 
-    /** @return the terminal's width from {@code COLUMNS}, or {@value #DEFAULT_WIDTH} */
+    /**
+     * @return the terminal's width: {@code COLUMNS} if the shell exports it, else what {@code stty size}
+     *         says of the terminal (shells seldom export {@code COLUMNS}), else {@value #DEFAULT_WIDTH}
+     */
     static int width() {
-        String columns = System.getenv("COLUMNS");
+        Integer columns = parseWidth(System.getenv("COLUMNS"));
         if (columns != null) {
+            return columns;
+        }
+        File tty = new File("/dev/tty");
+        if (tty.exists()) {
             try {
-                int w = Integer.parseInt(columns.trim());
-                if (w >= 20 && w <= 1000) {
-                    return w;
+                Process stty = new ProcessBuilder("stty", "size").redirectInput(tty)
+                        .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+                String size = new String(stty.getInputStream().readAllBytes(), StandardCharsets.US_ASCII).trim();
+                if (stty.waitFor(2, TimeUnit.SECONDS) && stty.exitValue() == 0) {
+                    String[] rowsColumns = size.split("\\s+");
+                    Integer w = rowsColumns.length == 2 ? parseWidth(rowsColumns[1]) : null;
+                    if (w != null) {
+                        return w;
+                    }
                 }
-            } catch (NumberFormatException e) {
-                // the default below
+            } catch (IOException e) {
+                // no stty: the default below
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
         }
         return DEFAULT_WIDTH;
+    }
+
+    private static Integer parseWidth(String text) {
+        if (text == null) {
+            return null;
+        }
+        try {
+            int w = Integer.parseInt(text.trim());
+            return w >= 20 && w <= 1000 ? w : null;
+        } catch (NumberFormatException e) {
+            return null;
+        }
     }
 }
