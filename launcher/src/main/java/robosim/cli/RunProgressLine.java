@@ -1,5 +1,6 @@
 package robosim.cli;
 
+import java.io.PrintWriter;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
@@ -67,7 +68,7 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
      * @param limitIsCap whether the step limit is only a cap, which the run is expected to end before
      * @return the progress line to close when the run has ended (it clears a terminal's line), or null if quiet
      */
-    static RunProgressLine follow(EnvironmentServer server, java.io.PrintWriter err, boolean quiet, boolean limitIsCap) {
+    static RunProgressLine follow(EnvironmentServer server, PrintWriter err, boolean quiet, boolean limitIsCap) {
         if (quiet) {
             return null;
         }
