@@ -56,6 +56,8 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private volatile RunEnd runEnd;
     private volatile long openStep;
     private volatile Thread keeper;
+    private volatile long joinedNanos;
+    private volatile boolean welcomed;
     private long warnedStep = -1;
 
     /**
@@ -95,9 +97,11 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         // joined first: a step that comes before the welcome returns waits for this thread's yield
         gate.join(me);
         this.link = link;
+        joinedNanos = System.nanoTime();
         RunEndWatch.joining(this);
         try {
             Welcome w = link.open(hello, this);
+            welcomed = true;
             WATCHED.add(this);
             return w;
         } catch (IOException | RuntimeException e) {
@@ -200,6 +204,19 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
             l.bye(reason);
         }
         close();
+    }
+
+    /**
+     * @return where the robot is before its first step, for a {@link RunEndWatch}: null once a step
+     *         has come, or once its part has ended
+     */
+    RunEndWatch.BeforeFirstStep beforeFirstStep() {
+        EnvironmentLink l = link;
+        if (openStep > 0 || runEnd != null || l == null) {
+            return null;
+        }
+        return new RunEndWatch.BeforeFirstStep(hello.name(), l.environment(), welcomed,
+                System.nanoTime() - joinedNanos);
     }
 
     @Override

@@ -59,6 +59,34 @@ public final class RunEndWatch implements AutoCloseable {
         return running.size();
     }
 
+    /**
+     * A robot followed that has had no step yet: it is still connecting, or it is in the run and the
+     * Environment has not begun it (it starts once every robot its world names has connected).
+     *
+     * @param robot       the robot's name
+     * @param environment the Environment's host and port, {@code host:port}
+     * @param welcomed    whether the Environment has welcomed the robot into its world
+     * @param waitedNanos since the robot began to connect, ns
+     */
+    public record BeforeFirstStep(String robot, String environment, boolean welcomed, long waitedNanos) {
+    }
+
+    /** @return the robots followed that are connecting or connected and have had no step yet */
+    public List<BeforeFirstStep> beforeFirstStep() {
+        List<HardwareSimulator> robots;
+        synchronized (this) {
+            robots = new ArrayList<>(running);
+        }
+        List<BeforeFirstStep> waiting = new ArrayList<>();
+        for (HardwareSimulator hw : robots) {
+            BeforeFirstStep b = hw.beforeFirstStep();
+            if (b != null) {
+                waiting.add(b);
+            }
+        }
+        return waiting;
+    }
+
     /** @return how the robots followed ended, in the order they ended */
     public synchronized List<RunEnd> ends() {
         return List.copyOf(ends);

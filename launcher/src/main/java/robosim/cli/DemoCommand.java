@@ -46,9 +46,13 @@ final class DemoCommand implements Callable<Integer> {
             description = "write an animated GIF that loops; of the frames, played at " + GoldfinderCommand.GIF_SPEED + "x simulated time")
     Path gif;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
         GoldfinderCommand gold = new GoldfinderCommand();
+        gold.quiet = quiet;
         gold.spec = spec;
         gold.world = RobotParameterFiles.root().resolve("testLoadFiles/environment/maze-medium.xml");
         gold.robots = 3;

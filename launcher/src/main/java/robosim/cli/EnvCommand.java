@@ -76,6 +76,9 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--wait-viewers", defaultValue = "0", paramLabel = "N", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
+    @Mixin
+    QuietOption quiet;
+
     @Option(names = "--threads", paramLabel = "N", description = OptionTexts.THREADS + "; "
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
@@ -149,7 +152,8 @@ final class EnvCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
             out.flush();
             RunReport report;
-            try {
+            // the progress line is closed (a terminal's line cleared) before the error or the report
+            try (RunProgressLine progress = RunProgressLine.follow(server, err, quiet.quiet, false)) {
                 report = server.run();
             } catch (IllegalStateException e) {
                 err.println("robosim env: " + e.getMessage());

@@ -94,6 +94,9 @@ final class GoldfinderCommand implements Callable<Integer> {
     /** How much faster than simulated time the GIF plays: the demo's search fits in half a minute. */
     static final int GIF_SPEED = 20;
 
+    @Mixin
+    QuietOption quiet = new QuietOption();
+
     @Override
     public Integer call() throws Exception {
         out = oldOut != null ? oldOut : out;
@@ -162,7 +165,10 @@ final class GoldfinderCommand implements Callable<Integer> {
                 } else {
                     GoldFinder.start("127.0.0.1", server.robotPort(), robots, cellSize, seed);
                 }
-                RunReport report = server.run();
+                RunReport report;
+                try (RunProgressLine progress = RunProgressLine.follow(server, spec.commandLine().getErr(), quiet.quiet, true)) {
+                    report = server.run();
+                }
                 summary(o, report, w.stepMs());
                 if (viewer != null) {
                     try {

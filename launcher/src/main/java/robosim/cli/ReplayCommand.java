@@ -65,6 +65,9 @@ final class ReplayCommand implements Callable<Integer> {
     @Mixin
     DrawingOptions drawing;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -141,12 +144,16 @@ final class ReplayCommand implements Callable<Integer> {
         PngImageWriter png = pngDir == null ? null : new PngImageWriter(pngDir);
         Replay.Result result;
         GifWriter gifWriter = null;
+        FrameProgress progress = FrameProgress.on(err, quiet.quiet, "replay", () -> 0);
         try (RecordingReader reader = RecordingReader.open(file)) {
             if (gif != null) {
                 gifWriter = new GifWriter(gif, Math.round(reader.world().stepMs() * (double) every / speed));
             }
             GifWriter g = gifWriter;
             ImageSink sink = (step, image) -> {
+                if (progress != null) {
+                    progress.step(step);
+                }
                 if (png != null) {
                     png.accept(step, image);
                 }
@@ -156,6 +163,9 @@ final class ReplayCommand implements Callable<Integer> {
             };
             result = Replay.run(reader, new RenderedImages(drawing.painter(), sink, every, drawing.trails), range);
         } finally {
+            if (progress != null) {
+                progress.close();
+            }
             if (gifWriter != null) {
                 gifWriter.close();
             }

@@ -64,6 +64,9 @@ final class RobotCommand implements Callable<Integer> {
                     + HardwareOptions.LOST_AFTER_PROPERTY + " if set, else " + HardwareOptions.DEFAULT_LOST_AFTER_MS)
     Long lostAfterMs;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
         if (port <= 0 || port > 65535) {
@@ -107,6 +110,16 @@ final class RobotCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim robot: no class " + className
                     + " with a public static main(String[]) on the classpath" + (classpath == null ? " (see --classpath)" : ""));
             return 1;
+        } catch (ExceptionInInitializerError e) {
+            // the program's own code failed as its class loaded: a static initializer threw
+            spec.commandLine().getErr().println("robosim robot: robot " + name + "'s program failed as its class "
+                    + className + " was initialized:");
+            ProgramTrace.print(e.getCause() != null ? e.getCause() : e, spec.commandLine().getErr());
+            return 1;
+        } catch (LinkageError e) {
+            spec.commandLine().getErr().println("robosim robot: the class " + className + " cannot be loaded: " + e
+                    + (e instanceof NoClassDefFoundError ? " (a class it needs is not on the classpath; see --classpath)" : ""));
+            return 1;
         }
         if (!Modifier.isStatic(main.getModifiers())) {
             spec.commandLine().getErr().println("robosim robot: " + className + ".main is not static");
@@ -120,7 +133,7 @@ final class RobotCommand implements Callable<Integer> {
             System.setProperty(HardwareOptions.LOST_AFTER_PROPERTY, Long.toString(lostAfterMs));
         }
         try {
-            return new RobotProgram(main, args.toArray(new String[0]), loader, name)
+            return new RobotProgram(main, args.toArray(new String[0]), loader, name, quiet.quiet)
                     .run(spec.commandLine().getOut(), spec.commandLine().getErr());
         } finally {
             if (lostAfterMs != null) {

@@ -3,9 +3,12 @@ package robosim.cli;
 import java.io.PrintWriter;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 import robosim.hw.RunEnd;
 import robosim.hw.RunEndWatch;
 
@@ -31,6 +34,8 @@ final class RobotProgram {
     private final String[] args;
     private final ClassLoader loader;
     private final String name;
+    private final boolean quiet;
+    private final Map<String, WaitSchedule> waits = new HashMap<>();
     private volatile Throwable failure;
 
     /**
@@ -38,17 +43,22 @@ final class RobotProgram {
      * @param args   its arguments
      * @param loader where its classes come from
      * @param name   the robot's name, for messages
+     * @param quiet  whether to keep quiet while the program's robots wait for the Environment
      */
-    RobotProgram(Method main, String[] args, ClassLoader loader, String name) {
+    RobotProgram(Method main, String[] args, ClassLoader loader, String name, boolean quiet) {
         this.main = main;
         this.args = args;
         this.loader = loader;
         this.name = name;
+        this.quiet = quiet;
     }
 
     /**
      * Runs the program until it and its robots are done, then prints a line for each robot's end
-     * (the run's end or the program's own leave on {@code out}, anything else on {@code err}).
+     * (the run's end or the program's own leave on {@code out}, anything else on {@code err}), and
+     * the program's failure with its stack trace. Meanwhile, unless quiet, says on {@code err} every few
+     * seconds what a robot that has had no step yet waits for: the Environment's answer, or the
+     * first step (the Environment begins once every robot of its world has connected).
      *
      * @return 0 if every robot ran to the end of the run or left it, {@link #LOST},
      *         {@link #REFUSED_OR_DROPPED}, or 1 if a robot could not connect or {@code main} threw
@@ -59,12 +69,58 @@ final class RobotProgram {
             Thread program = new Thread(this::invoke, "robot-program-" + name);
             program.setContextClassLoader(loader);
             program.start();
-            awaitProgram(program, watch);
-            while (!watch.awaitNoneRunning(POLL_MS * 20)) {
+            awaitProgram(program, watch, err);
+            while (!watch.awaitNoneRunning(POLL_MS * 4)) {
                 // robots kept in the run after main returned; each ends with the run, or lost
+                sayWhatRobotsWaitFor(watch, err);
             }
             return report(watch.ends(), out, err);
         }
+    }
+
+    /**
+     * Says, as {@link WaitSchedule} has it, what the robots that have had no step yet wait for: one
+     * line for those still waiting for the Environment's answer, one for those waiting for step 1
+     * (per Environment), however many robots the program has.
+     */
+    private void sayWhatRobotsWaitFor(RunEndWatch watch, PrintWriter err) {
+        if (quiet) {
+            return;
+        }
+        Map<String, List<RunEndWatch.BeforeFirstStep>> byState = new TreeMap<>();
+        for (RunEndWatch.BeforeFirstStep w : watch.beforeFirstStep()) {
+            byState.computeIfAbsent((w.welcomed() ? "welcomed " : "connecting ") + w.environment(),
+                    k -> new ArrayList<>()).add(w);
+        }
+        for (Map.Entry<String, List<RunEndWatch.BeforeFirstStep>> state : byState.entrySet()) {
+            List<RunEndWatch.BeforeFirstStep> robots = state.getValue();
+            long waited = robots.stream().mapToLong(RunEndWatch.BeforeFirstStep::waitedNanos).max().orElse(0);
+            if (waits.computeIfAbsent(state.getKey(), k -> new WaitSchedule()).due(waited)) {
+                err.println(describe(robots, waited));
+                err.flush();
+            }
+        }
+        waits.keySet().retainAll(byState.keySet());
+    }
+
+    /**
+     * @param robots robots in the same state, before their first step, of one Environment
+     * @param waited how long the first of them has waited, ns
+     * @return what they wait for, and for how long
+     */
+    static String describe(List<RunEndWatch.BeforeFirstStep> robots, long waited) {
+        List<String> names = robots.stream().map(RunEndWatch.BeforeFirstStep::robot).sorted().toList();
+        String who = names.size() == 1 ? "robot " + names.get(0) + " is"
+                : "robots " + (names.size() <= 6 ? String.join(", ", names)
+                        : String.join(", ", names.subList(0, 6)) + " and " + (names.size() - 6) + " more") + " are";
+        RunEndWatch.BeforeFirstStep first = robots.get(0);
+        String time = " - " + WaitSchedule.seconds(waited) + " s";
+        if (!first.welcomed()) {
+            return "robosim robot: " + who + " waiting for the Environment at " + first.environment()
+                    + " to answer (is robosim env running there?)" + time;
+        }
+        return "robosim robot: " + who + " connected to the Environment at " + first.environment()
+                + ", waiting for step 1: the run starts once every robot of the world has connected" + time;
     }
 
     private void invoke() {
@@ -78,9 +134,10 @@ final class RobotProgram {
     }
 
     /** Waits until main returns, or until the Environment has ended every robot and main had its grace. */
-    private static void awaitProgram(Thread program, RunEndWatch watch) throws InterruptedException {
+    private void awaitProgram(Thread program, RunEndWatch watch, PrintWriter err) throws InterruptedException {
         while (program.isAlive()) {
             program.join(POLL_MS);
+            sayWhatRobotsWaitFor(watch, err);
             if (program.isAlive() && watch.running() == 0 && endedByEnvironment(watch.ends())) {
                 program.join(GRACE_MS);
                 if (watch.running() == 0) {
@@ -109,7 +166,9 @@ final class RobotProgram {
             }
         }
         if (failure != null && !toldAlready(failure, ends)) {
-            err.println("robosim robot: robot " + name + "'s program failed: " + failure);
+            out.flush();
+            err.println("robosim robot: robot " + name + "'s program failed:");
+            ProgramTrace.print(failure, err);
         }
         out.flush();
         err.flush();

@@ -57,6 +57,9 @@ final class ViewerCommand implements Callable<Integer> {
     @Mixin
     DrawingOptions drawing;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
@@ -98,13 +101,23 @@ final class ViewerCommand implements Callable<Integer> {
         if (window) {
             listeners.add(new LiveFeed(model));
         }
+        FrameProgress progress = FrameProgress.on(err, quiet.quiet, "viewer", () -> png == null ? 0 : png.imagesWritten());
+        if (progress != null) {
+            listeners.add(progress);
+        }
         ViewerClient client = new ViewerClient(options, listeners);
         ViewerSummary s;
         try {
             s = window ? runWithWindow(client, model) : client.run();
         } catch (ViewerException | IllegalStateException e) {
+            if (progress != null) {
+                progress.close();
+            }
             err.println("robosim viewer: " + e.getMessage());
             return 1;
+        }
+        if (progress != null) {
+            progress.close();
         }
         if (png != null) {
             out.printf(Locale.ROOT, "Viewer: world %s, %d frames received, %d PNG frames written to %s (%s)%n",
