@@ -97,6 +97,23 @@ class AccessAndCapsTest {
     }
 
     @Test
+    void aRobotWaitingForARunThatNeverStartsIsToldWhy() throws Exception {
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 0, false, 10_000, 1_000, 0, 4 << 20);
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options);
+             RawPeer r1 = new RawPeer(h.robotPort())) {
+            r1.send(hello(h.sim, "r1", null));
+            assertInstanceOf(Welcome.class, r1.read());
+
+            robosim.protocol.Message m;
+            do {
+                m = r1.read();
+            } while (m instanceof robosim.protocol.KeepAlive);
+            assertEquals("the run did not start: robots [r2] and 0 viewer(s) did not connect within 1 s",
+                    assertInstanceOf(Bye.class, m).reason());
+        }
+    }
+
+    @Test
     void aConnectionThatSaysNoHelloIsClosedAtTheDeadline() throws Exception {
         ServerOptions options = ServerOptions.loopback().withLimits(Limits.defaults().withHelloDeadlineMs(300));
         try (LogCapture log = new LogCapture("robosim.env.net");

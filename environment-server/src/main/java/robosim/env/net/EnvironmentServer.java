@@ -184,9 +184,14 @@ public final class EnvironmentServer implements AutoCloseable {
                 report(RunProgress.Phase.CONNECTING, now);
             }
             if (now >= deadline) {
-                throw new IllegalStateException("robots " + rules.missing() + " and " + Math.max(0,
+                String why = "robots " + rules.missing() + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
-                        + inUnitGiven(options.connectTimeoutMs()));
+                        + inUnitGiven(options.connectTimeoutMs());
+                // the robots that came are told why the run they waited for will not start
+                for (Connection c : doorway.connections()) {
+                    c.sendAndClose(new Bye("the run did not start: " + why));
+                }
+                throw new IllegalStateException(why);
             }
             pump(deadline);
         }
