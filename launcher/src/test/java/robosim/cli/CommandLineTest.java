@@ -1,11 +1,10 @@
 package robosim.cli;
 
+import static robosim.cli.Run.execute;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.file.Files;
@@ -18,7 +17,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
-import picocli.CommandLine;
 
 /**
  * The launcher's command line, executed in this JVM with captured writers: help, exit codes 0/1/2,
@@ -29,32 +27,7 @@ class CommandLineTest {
     @TempDir
     Path dir;
 
-    /** What one execution printed and returned. */
-    private record Run(int exit, String out, String err) {
-        /** Fails if standard error holds a stack trace. */
-        void assertNoStackTrace() {
-            assertFalse(err.contains("\tat ") || err.contains("Exception"), "a one-line error, not a stack trace:\n" + err);
-        }
 
-        String firstLine() {
-            return err.lines().findFirst().orElse("");
-        }
-
-        /** Checks that a bad value is one line, then the pointer to --help. */
-        void assertHintToHelp(String command) {
-            assertEquals(List.of(firstLine(), "Try '" + command + " --help'."), err.strip().lines().toList(), err);
-        }
-    }
-
-    private static Run execute(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        int exit = cl.execute(args);
-        return new Run(exit, out.toString(), err.toString());
-    }
 
     private static String emptyRoom() {
         return root().resolve("testLoadFiles/environment/empty-room.xml").toString();

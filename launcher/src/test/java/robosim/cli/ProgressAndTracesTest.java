@@ -1,11 +1,11 @@
 package robosim.cli;
 
+import static robosim.cli.Run.execute;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -13,7 +13,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import picocli.CommandLine;
 import robosim.hw.RunEndWatch;
 
 /**
@@ -22,18 +21,7 @@ import robosim.hw.RunEndWatch;
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class ProgressAndTracesTest {
-    private record Run(int exit, String out, String err) {
-    }
 
-    private static Run execute(String... args) {
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        int exit = cl.execute(args);
-        return new Run(exit, out.toString(), err.toString());
-    }
 
     private static String emptyRoom() {
         Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
