@@ -16,8 +16,9 @@ import robosim.protocol.MessageCodec;
 
 /**
  * The Environment's two listening sockets and the connections they bring in, held to the caps of
- * {@link Limits}: at most {@link Limits#maxPending()} connections without a hello (past it,
- * accepting waits and new connections wait in the listen backlog), each closed if it says no
+ * {@link Limits}: at most {@link Limits#maxPending()} connections without a hello (at the cap the
+ * oldest silent one makes room, or, in a burst of new ones, accepting waits and new connections
+ * wait in the listen backlog), each closed if it says no
  * hello by the deadline; viewers and control clients closed when idle; accepting paused a moment
  * after it fails (a full file table) instead of spinning, with the failures logged once a period.
  * Served by the step loop's thread; the list of connections may be read from any thread.
@@ -30,6 +31,8 @@ final class Doorway {
     /** How long accepting pauses after it failed, so that a full file table does not spin the loop. */
     private static final long ACCEPT_PAUSE_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
     private static final long LOG_PERIOD_NANOS = TimeUnit.SECONDS.toNanos(10);
+    /** How long a connection may be silent before it may be closed to make room for another. */
+    private static final long SILENT_NANOS = TimeUnit.SECONDS.toNanos(1);
 
     private final ServerOptions options;
     private final MessageCodec codec;
@@ -131,14 +134,45 @@ final class Doorway {
             }
             return;
         }
-        if (pending() >= options.limits().maxPending()) {
-            // the next connections wait in the listen backlog until these say hello or time out
+        long now = System.nanoTime();
+        if (!makeRoomForHellos(now) && !pausedForPending) {
+            // the next connections wait in the listen backlog until these say hello
             pausedForPending = true;
             setAccepting(false);
-            turnedAway.warn(System.nanoTime(), () -> pending() + " connections have not said hello yet, the most"
-                    + " this Environment allows (--max-pending); new connections wait until some do or are"
-                    + " closed after " + options.limits().helloDeadlineMs() + " ms");
+            turnedAway.warn(now, () -> pending() + " connections have not said hello yet, the most this"
+                    + " Environment allows (--max-pending); new connections wait until some do");
         }
+    }
+
+    /**
+     * Keeps the cap on connections without a hello. An honest client says hello within
+     * milliseconds of connecting, so at the cap the oldest connection that has been silent for
+     * {@link #SILENT_NANOS} is closed to make room, which keeps a flood of silent connections from
+     * holding the slots; if all are younger (a burst of honest robots), accepting waits and the
+     * next connections wait in the listen backlog until these say hello.
+     *
+     * @return whether there is room for one more
+     */
+    private boolean makeRoomForHellos(long now) {
+        long max = options.limits().maxPending();
+        while (pending() >= max) {
+            Connection oldest = null;
+            for (Connection c : all) {
+                if (!c.isClosed() && !c.greeted() && (oldest == null || c.acceptedNanos() < oldest.acceptedNanos())) {
+                    oldest = c;
+                }
+            }
+            if (oldest == null || now - oldest.acceptedNanos() < SILENT_NANOS) {
+                return false;
+            }
+            Connection closing = oldest;
+            turnedAway.warn(now, () -> "closing a " + closing.kind.name().toLowerCase() + " connection from "
+                    + closing.address() + " that said no hello for " + TimeUnit.NANOSECONDS.toMillis(now
+                    - closing.acceptedNanos()) + " ms, to make room: " + max + " connections without a hello is the"
+                    + " most this Environment allows (--max-pending)");
+            closing.shut();
+        }
+        return true;
     }
 
     /** After the ready connections were served: takes the next waiting ones once these have said hello. */
@@ -223,7 +257,7 @@ final class Doorway {
         if (acceptPaused && now - acceptPausedUntil >= 0) {
             acceptPaused = false;
         }
-        if (pausedForPending && pending() < options.limits().maxPending()) {
+        if (pausedForPending && makeRoomForHellos(now)) {
             pausedForPending = false;
         }
         if (!acceptPaused && !pausedForPending) {

@@ -5,8 +5,9 @@ package robosim.env.net;
  * default ({@link #defaults()}) and an {@code env} option; docs/SECURITY.md says why each default is
  * what it is.
  *
- * @param maxPending      connections that have not yet said hello, on both ports together; one more
- *                        is accepted and closed at once
+ * @param maxPending      connections that have not yet said hello, on both ports together; at the cap
+ *                        the oldest that has been silent a second is closed to make room, and
+ *                        while all are younger new connections wait in the listen backlog
  * @param maxRobots       robots in one run; a world that names more is refused
  * @param maxViewers      viewers attached at once
  * @param maxControls     control clients attached at once
