@@ -89,7 +89,7 @@ public abstract class AbstractRobot {
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
         HardwareSimulator hw = new HardwareSimulator(
-                new RobotHello(name, robotType, parameters, RunSecret.find(null, port)), this::responded,
+                new RobotHello(name, robotType, parameters, RunSecret.find(null, host, port)), this::responded,
                 options);
         // the hardware may deliver the first step before connect returns; it waits for the first yield
         hardware = hw;

@@ -97,7 +97,7 @@ final class SharedLink {
             socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), RunSecret.find(null, port)));
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), RunSecret.find(null, host, port)));
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;

@@ -245,7 +245,7 @@ class AccessAndCapsTest {
             if (file.getFileSystem().supportedFileAttributeViews().contains("posix")) {
                 assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(file)));
             }
-            String found = RunSecret.find(null, port);
+            String found = RunSecret.find(null, "127.0.0.1", port);
             Simulation sim = new Simulation(LocalEnvironment.shipped("empty-room.xml"), 1);
             try (RawPeer r1 = new RawPeer(port); RawPeer r2 = new RawPeer(port)) {
                 r1.send(hello(sim, "r1", found));

@@ -58,7 +58,7 @@ final class CommsCommand implements Callable<Integer> {
             if (bad != null) {
                 throw new IllegalArgumentException(bad);
             }
-            token = RunSecret.find(null, at.port());
+            token = RunSecret.find(null, at.host, at.port());
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

@@ -1,6 +1,8 @@
 package robosim.protocol;
 
 import java.io.IOException;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -21,8 +23,9 @@ import java.util.regex.Pattern;
  * <p>A client finds the secret in this order: an explicit value (a {@code --token} option, or the
  * system property {@value #PROPERTY}); the environment variable {@value #ENV}; the file the
  * environment variable {@value #FILE_ENV} names; the file the Environment wrote for the port the
- * client connects to, {@code ~/.robosim/tokens/PORT} (the folder may be moved with the system
- * property {@value #DIR_PROPERTY} or the environment variable {@value #DIR_ENV}). So a robot program
+ * client connects to on this machine (a loopback host), {@code ~/.robosim/tokens/PORT} (the folder
+ * may be moved with the system property {@value #DIR_PROPERTY} or the environment variable
+ * {@value #DIR_ENV}). So a robot program
  * on the Environment's machine, run by the same user, needs nothing at all.
  */
 public final class RunSecret {
@@ -136,15 +139,30 @@ public final class RunSecret {
      * description.
      *
      * @param explicit a value given on the command line, or null
+     * @param host     the host the client connects to: the file the Environment wrote for a port is
+     *                 read only for a loopback host, so a secret of this machine never goes elsewhere
      * @param port     the port the client connects to
      * @return the secret, or null if there is none (an Environment without a secret needs none)
      * @throws IllegalArgumentException if a secret found breaks {@link #RULE_TEXT}, or the file
      *                                  {@value #FILE_ENV} names cannot be read; the message says where it came from
      */
-    public static String find(String explicit, int port) {
-        return find(explicit, port, System.getProperties(), System.getenv());
+    public static String find(String explicit, String host, int port) {
+        return find(explicit, isLoopback(host) ? port : -1, System.getProperties(), System.getenv());
     }
 
+    /**
+     * @param host a host name or address
+     * @return whether it names this machine's loopback interface (a name that cannot be resolved does not)
+     */
+    static boolean isLoopback(String host) {
+        try {
+            return InetAddress.getByName(host).isLoopbackAddress();
+        } catch (UnknownHostException | SecurityException e) {
+            return false;
+        }
+    }
+
+    /** @param port the port, or -1 for a host that is not this machine's loopback: no port's file is read */
     static String find(String explicit, int port, Properties properties, Map<String, String> env) {
         if (explicit != null) {
             return checked(explicit, "the --token option");
@@ -160,6 +178,9 @@ public final class RunSecret {
         String named = env.get(FILE_ENV);
         if (named != null && !named.isBlank()) {
             return read(Path.of(named), "the file " + named + " (named by " + FILE_ENV + ")", true);
+        }
+        if (port < 0) {
+            return null;
         }
         Path file = folder(properties, env).resolve(Integer.toString(port));
         return Files.isRegularFile(file) ? read(file, "the file " + file, false) : null;

@@ -62,6 +62,20 @@ class RunSecretTest {
     }
 
     @Test
+    void theFileForAPortIsReadOnlyForThisMachine() throws IOException {
+        RunSecret.write(dir.resolve("tokens/5000"), A);
+        System.setProperty(RunSecret.DIR_PROPERTY, dir.resolve("tokens").toString());
+        try {
+            assertEquals(A, RunSecret.find(null, "127.0.0.1", 5000));
+            assertEquals(A, RunSecret.find(null, "localhost", 5000));
+            // a secret of this machine never goes to another host at the same port
+            assertNull(RunSecret.find(null, "192.0.2.7", 5000));
+        } finally {
+            System.clearProperty(RunSecret.DIR_PROPERTY);
+        }
+    }
+
+    @Test
     void theFolderOfTheFilesCanBeMoved() throws IOException {
         RunSecret.write(dir.resolve("elsewhere/7000"), A);
 

@@ -87,7 +87,7 @@ public final class ViewerClient {
         Session session = new Session();
         String token;
         try {
-            token = RunSecret.find(null, options.port());
+            token = RunSecret.find(null, options.host(), options.port());
         } catch (IllegalArgumentException e) {
             throw new ViewerException("cannot attach to the environment at " + options.peer() + ": " + e.getMessage(), e);
         }
