@@ -14,6 +14,7 @@ import java.util.concurrent.TimeoutException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
@@ -101,6 +102,14 @@ final class GoldfinderCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         out = oldOut != null ? oldOut : out;
         maxSteps = oldMaxSteps != null ? oldMaxSteps : maxSteps;
+        try {
+            // checked before the run: a value the viewer or the server would refuse mid-run costs a wait
+            ServerOptions.requireAtLeast("--steps", maxSteps, 0);
+            ServerOptions.requireAtLeast("--robots", robots, 1);
+            ServerOptions.requireAtLeast("--every", every, 1);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
         PrintWriter o = spec.commandLine().getOut();
         World w;
         try {

@@ -56,8 +56,9 @@ final class QueuedListener implements SnapshotListener {
                     call.on(target);
                 } catch (IOException e) {
                     failure = failure == null ? e : failure;
-                } catch (RuntimeException e) {
-                    failure = failure == null ? new IOException(e.getMessage(), e) : failure;
+                } catch (RuntimeException | Error e) {
+                    // an Error too (a font or native library a headless JDK lacks): it is reported, not lost
+                    failure = failure == null ? new IOException(e.toString(), e) : failure;
                 }
             }
             if (call == CLOSE) {

@@ -35,9 +35,26 @@ final class Terminal {
         Path fd2 = Path.of("/proc/self/fd/2");
         try {
             String target = Files.readSymbolicLink(fd2).toString();
-            return target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
+            boolean tty = target.startsWith("/dev/pts/") || target.startsWith("/dev/tty") || target.equals("/dev/console");
+            return tty && !inBackground();
         } catch (IOException | UnsupportedOperationException | SecurityException e) {
             return consoleIsTerminal();
+        }
+    }
+
+    /**
+     * Whether this process runs as a background job of its terminal ({@code robosim env ... &}):
+     * its process group is not the terminal's foreground group, so a line redrawn in place would
+     * land in the middle of what the foreground program prints.
+     */
+    private static boolean inBackground() {
+        try {
+            String stat = Files.readString(Path.of("/proc/self/stat"));
+            // after the command name, in parentheses: state, ppid, pgrp, session, tty_nr, tpgid
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            return !f[2].equals(f[5]);
+        } catch (IOException | RuntimeException e) {
+            return false;
         }
     }
 

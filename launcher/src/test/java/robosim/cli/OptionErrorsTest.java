@@ -194,4 +194,18 @@ class OptionErrorsTest {
         }
         return p;
     }
+
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource({"--every, 0, 1", "--steps, -1, 0", "--robots, 0, 1"})
+    void goldfinderRefusesABadValueBeforeItsRunWithOneLine(String option, String value, String least) {
+        Path maze = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
+        while (!maze.resolve("testLoadFiles").toFile().isDirectory()) {
+            maze = maze.getParent();
+        }
+        Run r = execute("goldfinder", maze.resolve("testLoadFiles/environment/maze-small.xml").toString(), option, value);
+
+        assertEquals(2, r.exit(), r.err());
+        assertEquals(List.of("robosim goldfinder: " + value + " was supplied for " + option + ": it must be at least "
+                + least, "Try 'robosim goldfinder --help'."), r.errLines());
+    }
 }
