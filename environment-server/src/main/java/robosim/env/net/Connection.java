@@ -222,15 +222,21 @@ final class Connection {
         }
         queuedBytes += frame.remaining();
         outgoing.add(frame);
-        if (queuedBytes > maxQueuedBytes) {
-            close("it fell " + queuedBytes + " bytes behind (the limit is " + maxQueuedBytes + ")");
-            return;
-        }
         try {
+            // what the peer takes now does not count against it: only what stays queued does
             writable();
         } catch (IOException e) {
             close("write failed: " + e.getMessage());
+            return;
         }
+        if (queuedBytes > limit()) {
+            close("it fell " + queuedBytes + " bytes behind (the limit is " + limit() + ")");
+        }
+    }
+
+    /** @return how far the peer may fall behind: for a shared link, its robots' share each */
+    private long limit() {
+        return link ? maxQueuedBytes * Math.max(1, (robots.size() + 99) / 100) : maxQueuedBytes;
     }
 
     /**
