@@ -61,12 +61,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final SnapshotListeners listeners = new SnapshotListeners();
     private Selector selector;
     private long sentToRobotsNanos = System.nanoTime();
-    private RunProgress progress;
-    private long progressIntervalNanos;
-    /** When {@link #progress} is next due, in {@link System#nanoTime()}; far away when no one follows. */
-    private long nextProgressNanos = Long.MAX_VALUE;
-    private long waitStartedNanos;
-    private long runStartedNanos;
+    private final ProgressReports progress;
 
     /**
      * @param sim     the simulation to drive; it reads its robots' sensors on the server's
@@ -83,6 +78,7 @@ public final class EnvironmentServer implements AutoCloseable {
         this.options = options;
         this.rules = new SessionRules(sim, options.access(), options.limits());
         this.doorway = new Doorway(options, codec, rules);
+        this.progress = new ProgressReports(sim, rules, options);
         this.workers = new PooledParallel(options.threads());
         sim.setParallel(workers);
     }
@@ -118,12 +114,7 @@ public final class EnvironmentServer implements AutoCloseable {
      * @param intervalMs the shortest time between two calls, ms; set it before {@link #run()}
      */
     public void setProgress(RunProgress listener, long intervalMs) {
-        if (intervalMs < 1) {
-            throw new IllegalArgumentException(intervalMs + " was supplied for intervalMs: it must be at least 1");
-        }
-        this.progress = listener;
-        this.progressIntervalNanos = TimeUnit.MILLISECONDS.toNanos(intervalMs);
-        this.nextProgressNanos = listener == null ? Long.MAX_VALUE : System.nanoTime() + progressIntervalNanos;
+        progress.follow(listener, intervalMs);
     }
 
     /** @return the port robots connect to */
@@ -176,13 +167,12 @@ public final class EnvironmentServer implements AutoCloseable {
     }
 
     private void awaitRobots() throws InterruptedException {
-        waitStartedNanos = System.nanoTime();
-        long deadline = waitStartedNanos + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
+        long waitStarted = System.nanoTime();
+        progress.waitingSince(waitStarted);
+        long deadline = waitStarted + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
             long now = System.nanoTime();
-            if (progress != null && now - nextProgressNanos >= 0) {
-                report(RunProgress.Phase.CONNECTING, now);
-            }
+            progress.reportIfDue(RunProgress.Phase.CONNECTING, now);
             if (now >= deadline) {
                 String why = "robots " + rules.missing() + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
@@ -199,15 +189,12 @@ public final class EnvironmentServer implements AutoCloseable {
 
     private String loop() throws InterruptedException {
         long start = System.nanoTime();
-        runStartedNanos = start;
+        progress.runningSince(start);
         int stepMs = sim.world().stepMs();
         while (true) {
-            if (progress != null) {
+            if (progress.following()) {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
-                long now = System.nanoTime();
-                if (now - nextProgressNanos >= 0) {
-                    report(RunProgress.Phase.RUNNING, now);
-                }
+                progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
             if (rules.connectedRobots().isEmpty()) {
                 return "every robot has disconnected";
@@ -243,12 +230,10 @@ public final class EnvironmentServer implements AutoCloseable {
         sendTimeSteps(current);
         long opened = System.nanoTime();
         long deadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
+        progress.waitingSince(opened);
         while (!rules.waitingFor().isEmpty()) {
             long now = System.nanoTime();
-            if (progress != null && now - nextProgressNanos >= 0) {
-                waitStartedNanos = opened;
-                report(RunProgress.Phase.STEP_HELD, now);
-            }
+            progress.reportIfDue(RunProgress.Phase.STEP_HELD, now);
             if (now >= deadline) {
                 Set<String> late = new LinkedHashSet<>(rules.waitingFor());
                 for (String name : late) {
@@ -260,34 +245,6 @@ public final class EnvironmentServer implements AutoCloseable {
             pump(deadline);
         }
         return rules.closeStep();
-    }
-
-    /** Tells the progress listener where the run is, and when it is next due. */
-    private void report(RunProgress.Phase phase, long now) {
-        nextProgressNanos = now + progressIntervalNanos;
-        List<String> waitingFor = switch (phase) {
-            case CONNECTING -> rules.missing();
-            case STEP_HELD -> List.copyOf(rules.waitingFor());
-            case RUNNING -> List.of();
-        };
-        long limitMs = switch (phase) {
-            case CONNECTING -> options.connectTimeoutMs();
-            case STEP_HELD -> options.stepTimeoutMs();
-            case RUNNING -> 0;
-        };
-        long runNanos = phase == RunProgress.Phase.CONNECTING ? 0 : now - runStartedNanos;
-        long waitedNanos = phase == RunProgress.Phase.RUNNING ? 0 : now - waitStartedNanos;
-        try {
-            progress.progress(new RunProgress.Status(phase, sim.stepCount(), sim.timeMs(), sim.world().stepMs(),
-                    options.maxSteps(), sim.robotNames().size(), rules.connectedRobots().size(), waitingFor,
-                    rules.viewerCount(), options.waitViewers(), runNanos, waitedNanos,
-                    TimeUnit.MILLISECONDS.toNanos(limitMs)));
-        } catch (RuntimeException e) {
-            // progress is a courtesy: a listener that fails is logged and dropped, the run goes on
-            LOG.warning(() -> "the progress listener failed and is dropped: " + e);
-            progress = null;
-            nextProgressNanos = Long.MAX_VALUE;
-        }
     }
 
     /**
@@ -333,11 +290,8 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Serves every ready connection once, waiting until something is ready or the deadline. */
     private void pump(long deadlineNanos) throws InterruptedException {
         long now = System.nanoTime();
-        long nextCheck = doorway.check(now);
-        if (progress != null && nextProgressNanos - now > 0) {
-            // wake for the progress when it is due, while waiting for robots or a held step
-            nextCheck = Math.min(nextCheck, nextProgressNanos);
-        }
+        // wake for the progress when it is due, while waiting for robots or a held step
+        long nextCheck = progress.wakeBy(now, doorway.check(now));
         long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(Math.min(deadlineNanos, nextCheck) - now));
         try {
             selector.select(waitMs);
