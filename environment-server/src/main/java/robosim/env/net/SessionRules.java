@@ -41,6 +41,7 @@ final class SessionRules {
 
     private final Simulation sim;
     private final Access access;
+    private final RobotAdmission admission;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final ViewerPortRules viewerPort;
     private final Set<String> waiting = new LinkedHashSet<>();
@@ -56,6 +57,7 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.sim = sim;
         this.access = access;
+        this.admission = new RobotAdmission(sim, access);
         this.viewerPort = new ViewerPortRules(sim, access, limits);
     }
 
@@ -210,7 +212,8 @@ final class SessionRules {
     }
 
     private void hello(Connection c, RobotHello hello) {
-        String refusal = refusal(c, hello);
+        String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()),
+                sim.stepCount() > 0 || openStep > 0);
         if (refusal == null) {
             try {
                 sim.useParameters(hello.name(), hello.parameters());
@@ -236,36 +239,6 @@ final class SessionRules {
         sim.setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
         LOG.info(() -> "robot " + hello.name() + " connected" + (c.isLink() ? " on a shared link (" + c.peer() + ")" : ""));
-    }
-
-    private String refusal(Connection c, RobotHello hello) {
-        // a link presented the secret when it opened
-        String secret = c.isLink() ? null : access.refusal("robot " + RobotHello.printable(hello.name()), hello.token());
-        if (secret != null) {
-            return secret;
-        }
-        if (!RobotHello.validName(hello.name())) {
-            return RobotHello.NAME_RULE + "; " + RobotHello.quoted(hello.name()) + " is not";
-        }
-        if (!sim.robotNames().contains(hello.name())) {
-            return "world " + sim.world().name() + " has no robot named '" + hello.name() + "'";
-        }
-        String declared = sim.world().robots().stream().filter(r -> r.name().equals(hello.name()))
-                .findFirst().orElseThrow().type();
-        if (!declared.equalsIgnoreCase(hello.robotType())) {
-            return "robot " + hello.name() + " is a " + declared + " in the world, not a " + printable(hello.robotType());
-        }
-        if (robots.containsKey(hello.name())) {
-            return "robot " + hello.name() + " is already connected";
-        }
-        if (sim.stepCount() > 0 || openStep > 0) {
-            return "the run has started";
-        }
-        if (hello.parameters() == null) {
-            return "robot " + hello.name() + " sent no parameters";
-        }
-        String bad = hello.parameters().violation();
-        return bad == null ? null : "robot " + hello.name() + "'s parameters break a bound: " + bad;
     }
 
     private void requests(Connection c, String name, long step, List<Command> sent) {
@@ -380,7 +353,7 @@ final class SessionRules {
     }
 
     /** @return text a peer chose, escaped for one log line (see {@link RobotHello#printable(String, int)}) */
-    private static String printable(String text) {
+    static String printable(String text) {
         return RobotHello.printable(text, 300);
     }
 
