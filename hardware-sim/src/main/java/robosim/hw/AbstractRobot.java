@@ -81,6 +81,18 @@ public abstract class AbstractRobot {
     }
 
     /**
+     * Connects as {@link #connect(HardwareOptions)} does, presenting a secret the caller already
+     * holds (a bridge inside the Environment's own process) instead of looking for one.
+     *
+     * @param options timeouts
+     * @param secret  the run secret, or null when the run has none
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    protected void connectPresenting(HardwareOptions options, String secret) throws IOException {
+        connect(options, EnvironmentLinks.to(host, port, options), secret);
+    }
+
+    /**
      * Connects over the given link, as {@link #connect(HardwareOptions)} does.
      *
      * @param options timeouts
@@ -88,9 +100,12 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
-        HardwareSimulator hw = new HardwareSimulator(
-                new RobotHello(name, robotType, parameters, RunSecret.find(null, host, port)), this::responded,
-                options);
+        connect(options, link, RunSecret.find(null, host, port));
+    }
+
+    private void connect(HardwareOptions options, EnvironmentLink link, String secret) throws IOException {
+        HardwareSimulator hw = new HardwareSimulator(new RobotHello(name, robotType, parameters, secret),
+                this::responded, options);
         // the hardware may deliver the first step before connect returns; it waits for the first yield
         hardware = hw;
         Welcome w;

@@ -8,7 +8,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
  * robots, and events of the run. Units: mm, mm/s, degrees, deg/s.
  *
  * <p>Each command belongs to one group, named after what carries it out in the Environment:
- * {@link Motion}, {@link SensorSetting}, {@link Messaging} and {@link RunEvent}. Each record checks
+ * {@link Motion}, {@link SensorSetting}, {@link Messaging}, {@link RunEvent} and {@link Simulator}. Each record checks
  * its values as it is made, so a command that breaks a rule (a non-finite velocity, a laser
  * increment no SICK has) cannot exist, on the robot's side or decoded from the wire.
  */
@@ -33,6 +33,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.Say.class, name = "say"),
         @JsonSubTypes.Type(value = Command.MoveWheels.class, name = "moveWheels"),
         @JsonSubTypes.Type(value = Command.SetAccel.class, name = "accel"),
+        @JsonSubTypes.Type(value = Command.SetDriveLimit.class, name = "driveLimit"),
+        @JsonSubTypes.Type(value = Command.SetTruePose.class, name = "truePose"),
+        @JsonSubTypes.Type(value = Command.ResetToStart.class, name = "resetToStart"),
+        @JsonSubTypes.Type(value = Command.ReportTruePose.class, name = "reportTruePose"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -46,6 +50,12 @@ public sealed interface Command {
 
     /** Events of the run, kept in the run's log, recordings and viewers. */
     sealed interface RunEvent extends Command { }
+
+    /**
+     * Operations of the simulator on the robot itself, as MobileSim's SIM_SET_POSE and SIM_RESET:
+     * carried out by the Environment's simulation, refused with a reason when they cannot be.
+     */
+    sealed interface Simulator extends Command { }
 
     /**
      * Its constructor throws IllegalArgumentException if it is not finite.
@@ -308,6 +318,63 @@ public sealed interface Command {
             positive("rot accel", rot);
         }
     }
+
+    /** Which of the drive's acceleration limits a {@link SetDriveLimit} sets. */
+    enum DriveLimit {
+        /** Translational acceleration, mm/s². */
+        TRANS_ACCEL,
+        /** Translational deceleration, mm/s². */
+        TRANS_DECEL,
+        /** Rotational acceleration, deg/s². */
+        ROT_ACCEL,
+        /** Rotational deceleration, deg/s². */
+        ROT_DECEL
+    }
+
+    /**
+     * Sets one acceleration limit, as ARIA's {@code setTransAccel} and the Pioneer's SETA and SETRA do.
+     *
+     * Its constructor throws IllegalArgumentException if the limit is null or the value is not a
+     * finite number greater than 0.
+     *
+     * @param limit which limit
+     * @param value mm/s² or deg/s²
+     */
+    record SetDriveLimit(DriveLimit limit, double value) implements Motion {
+        public SetDriveLimit {
+            named(limit == null ? null : limit.name(), "a drive limit needs its kind");
+            positive(limit.name(), value);
+        }
+    }
+
+    /**
+     * Puts the robot at a true pose in the world without touching its odometry (MobileSim's
+     * SIM_SET_POSE). Refused when the body would overlap something there.
+     *
+     * Its constructor throws IllegalArgumentException if a value is not finite.
+     *
+     * @param x  mm, world frame
+     * @param y  mm, world frame
+     * @param th degrees
+     */
+    record SetTruePose(double x, double y, double th) implements Simulator {
+        public SetTruePose {
+            finite("x", x);
+            finite("y", y);
+            finite("th", th);
+        }
+    }
+
+    /** Puts the robot back at its start pose, stopped, with its odometry as at the start (MobileSim's SIM_RESET). */
+    record ResetToStart() implements Simulator { }
+
+    /**
+     * Switches the ground-truth sensor: while on, each state carries the robot's true pose (what a
+     * simulator's SIMSTAT reports).
+     *
+     * @param on whether to report it
+     */
+    record ReportTruePose(boolean on) implements SensorSetting { }
 
     private static void finite(String name, double v) {
         if (!Double.isFinite(v)) {

@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.List;
 
 /**
@@ -26,11 +27,42 @@ import java.util.List;
  *                   the size limit, ...), in the order they were made
  * @param bumpers    the bumper ring's contacts: bit i set when the body touches something in sector i
  *                   of {@value #BUMPER_SECTORS}, sector 0 centred dead ahead, counting counter-clockwise
+ * @param truePose   the robot's true pose (x mm, y mm, th degrees) when it asked for it with
+ *                   {@link Command.ReportTruePose}; null otherwise
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
                          int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                         int bumpers) {
+                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose) {
+
+    /**
+     * A state without the true pose.
+     *
+     * @param step       the step
+     * @param timeMs     simulated time, ms
+     * @param x          odometry x, mm
+     * @param y          odometry y, mm
+     * @param th         odometry heading, degrees
+     * @param vel        mm/s
+     * @param rotVel     deg/s
+     * @param leftVel    mm/s
+     * @param rightVel   mm/s
+     * @param stalled    whether stalled
+     * @param sonar      sonar ranges, mm
+     * @param collisions collisions so far
+     * @param laser      laser scan, mm
+     * @param heat       heat reading or null
+     * @param messages   messages delivered
+     * @param errors     request errors
+     * @param bumpers    bumper contacts
+     */
+    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
+                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
+                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
+                      int bumpers) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
+                messages, errors, bumpers, null);
+    }
 
     /** The bumper ring's sectors, 60° each. */
     public static final int BUMPER_SECTORS = 6;

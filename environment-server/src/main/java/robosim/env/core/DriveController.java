@@ -95,6 +95,15 @@ final class DriveController {
             transDecel = c.trans();
             rotAccel = c.rot();
             rotDecel = c.rot();
+        } else if (command instanceof Command.SetDriveLimit c) {
+            double v = Math.min(c.value(), RobotParameters.MAX_ACCELERATION);
+            switch (c.limit()) {
+                case TRANS_ACCEL -> transAccel = v;
+                case TRANS_DECEL -> transDecel = v;
+                case ROT_ACCEL -> rotAccel = v;
+                case ROT_DECEL -> rotDecel = v;
+                default -> throw new IllegalStateException("no drive limit " + c.limit());
+            }
         } else if (command instanceof Command.SetMaxTransVel c) {
             maxVel = Math.max(0, Math.min(c.vel(), params.maxVelocity()));
         } else if (command instanceof Command.SetMaxRotVel c) {

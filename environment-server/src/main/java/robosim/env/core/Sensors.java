@@ -49,6 +49,14 @@ final class Sensors {
         this.laserMaxRange = params.laserMaxRange();
     }
 
+    /** Whether the ground-truth sensor is on: each state carries the true pose. */
+    private boolean truePoseOn;
+
+    /** @return whether the ground-truth sensor is on */
+    boolean truePoseOn() {
+        return truePoseOn;
+    }
+
     /** Switches or configures a sensor as the command says. */
     void configure(Command.SensorSetting c) {
         if (c instanceof Command.SetSonar s) {
@@ -63,6 +71,8 @@ final class Sensors {
             heatFieldOfView = h.fieldOfView();
             heatMaxRange = h.maxRange();
             heat = null;
+        } else if (c instanceof Command.ReportTruePose t) {
+            truePoseOn = t.on();
         } else {
             throw new IllegalStateException("the sensors have no rule for " + c);
         }

@@ -140,6 +140,30 @@ final class SimRobot {
         return env.intersects(new Envelope(x - r, x + r, y - r, y + r));
     }
 
+    /**
+     * Puts the robot at a new true pose, where the caller has checked that it fits.
+     *
+     * @param geometry      where its body is
+     * @param pose          the new pose
+     * @param resetOdometry whether the odometry starts again at the new pose (SIM_RESET) or stays (SIM_SET_POSE)
+     */
+    void place(GeometryClient geometry, Pose2D pose, boolean resetOdometry) {
+        x = pose.x();
+        y = pose.y();
+        th = Angles.fix(Math.toDegrees(pose.th()));
+        geometry.moveBody(bodyId, pose);
+        stalled = false;
+        if (resetOdometry) {
+            vel = 0;
+            rotVel = 0;
+            drive(new Command.Stop());
+            odometry.reset(x, y, th);
+        } else {
+            odometry.placed(x, y, th);
+        }
+        bumpers = bumpers(geometry);
+    }
+
     Pose2D pose() {
         return new Pose2D(x, y, Math.toRadians(th));
     }
@@ -148,7 +172,7 @@ final class SimRobot {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers);
+                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null);
     }
 
     double x() {

@@ -238,6 +238,8 @@ public final class Simulation {
             messages.take(current, r.name, m);
         } else if (c instanceof Command.RunEvent e) {
             runEvent(r, e, current);
+        } else if (c instanceof Command.Simulator s) {
+            simulator(r, s, current);
         } else {
             throw new IllegalStateException("no handler for the command group of " + c);
         }
@@ -250,6 +252,34 @@ public final class Simulation {
             reportFound(r, found.object(), current);
         } else {
             throw new IllegalStateException("no handler for the run event " + e);
+        }
+    }
+
+    /** The farthest from the origin a robot may be placed, mm: the world file's coordinate bound. */
+    private static final double MAX_PLACEMENT = 1e8;
+
+    private void simulator(SimRobot r, Command.Simulator c, long current) {
+        Pose2D to;
+        boolean reset;
+        if (c instanceof Command.SetTruePose p) {
+            to = new Pose2D(p.x(), p.y(), Math.toRadians(p.th()));
+            reset = false;
+        } else if (c instanceof Command.ResetToStart) {
+            RobotSpec spec = world.robots().get(indexes.get(r.name));
+            to = new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th()));
+            reset = true;
+        } else {
+            throw new IllegalStateException("no handler for the simulator command " + c);
+        }
+        String where = String.format("(%.0f, %.0f, %.0f)", to.x(), to.y(), Math.toDegrees(to.th()));
+        if (Math.abs(to.x()) > MAX_PLACEMENT || Math.abs(to.y()) > MAX_PLACEMENT) {
+            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where + " at step " + current
+                    + ": a pose is within " + (long) MAX_PLACEMENT + " mm of the origin");
+        } else if (geometry.overlaps(r.body, to, r.bodyId)) {
+            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where + " at step " + current
+                    + ": its body would overlap something there");
+        } else {
+            r.place(geometry, to, reset);
         }
     }
 

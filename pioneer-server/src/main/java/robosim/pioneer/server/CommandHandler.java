@@ -1,0 +1,260 @@
+package robosim.pioneer.server;
+
+import java.util.HashSet;
+import java.util.Set;
+import robosim.params.ConversionFactors;
+import robosim.pioneer.Commands;
+import robosim.pioneer.ConfigPacket;
+import robosim.pioneer.PacketData;
+import robosim.pioneer.PacketFormatException;
+import robosim.pioneer.PioneerPacket;
+import robosim.protocol.Command;
+import robosim.protocol.RobotParameters;
+
+/**
+ * Carries out an ARIA client's commands after the handshake, as a Pioneer (and MobileSim) does:
+ * motion commands become the robot's requests, with headings in the robot's own odometry frame;
+ * motion waits for ENABLE 1 and stops at ENABLE 0; the simulator commands move the robot, switch
+ * the simulated laser and answer with status. A command the robot server does not carry out is
+ * logged once and ignored; a packet whose data does not fit its command is dropped with a log line.
+ */
+final class CommandHandler {
+    /** Commands a Pioneer takes that RoboSim does not simulate, ignored after one log line. */
+    private static final Set<Integer> NOT_SIMULATED = Set.of(Commands.POLLING, Commands.ENCODER, Commands.GRIPPER,
+            Commands.IOREQUEST, Commands.LATVEL, Commands.SIM_CTRL, 26, 30, 58, 110, 113);
+    /** The laser commands of the older simulator, which ARIA's simulated laser still sends. */
+    static final int OLD_LRF_ENABLE = 35;
+    static final int OLD_LRF_START = 36;
+    static final int OLD_LRF_END = 37;
+    static final int OLD_LRF_INCREMENT = 38;
+
+    /** What a command does beyond the robot's requests. */
+    interface Effects {
+        /** @param c a request for the robot's next step */
+        void request(Command c);
+
+        /** @param p a packet for the client now */
+        void reply(PioneerPacket p);
+
+        /** The odometry starts again at (0, 0, 0) where the robot is (SETO). */
+        void resetOdometry();
+
+        /** The robot goes back to its start pose and its odometry to (0, 0, 0) (SIM_RESET). */
+        void resetToStart();
+
+        /** @param mode SIMSTAT packets: 0 none, 1 one, 2 every step */
+        void simStat(int mode);
+
+        /** @param reason the client ends the connection */
+        void close(String reason);
+
+        /** @param code the client asks the simulator to end, with this exit code */
+        void simExit(int code);
+
+        /** @param line something for the Environment's log */
+        void log(String line);
+    }
+
+    private final String robot;
+    private final ConversionFactors factors;
+    private final RobotParameters params;
+    private final Effects effects;
+    private final LaserScan laser;
+    private final OdometryFrame frame;
+    private final Set<Integer> loggedOnce = new HashSet<>();
+    private boolean motorsEnabled;
+    private boolean sonarOn = true;
+    private int bumpStall;
+    private int transVelMax;
+    private int rotVelMax;
+    private int transAccel;
+    private int transDecel;
+    private int rotAccel;
+    private int rotDecel;
+
+    /**
+     * @param robot   the robot's name, for log lines
+     * @param params  its parameters (the laser's range)
+     * @param factors its conversion factors (VEL2's divisor)
+     * @param laser   its laser settings
+     * @param frame   its odometry frame, for absolute headings
+     * @param effects where the effects go
+     */
+    CommandHandler(String robot, RobotParameters params, ConversionFactors factors, LaserScan laser,
+                   OdometryFrame frame, Effects effects) {
+        this.robot = robot;
+        this.frame = frame;
+        this.params = params;
+        this.factors = factors;
+        this.laser = laser;
+        this.effects = effects;
+        transVelMax = (int) Math.round(params.maxVelocity());
+        rotVelMax = (int) Math.round(params.maxRVelocity());
+        transAccel = (int) Math.round(params.transAccel());
+        transDecel = (int) Math.round(params.transDecel());
+        rotAccel = (int) Math.round(params.rotAccel());
+        rotDecel = (int) Math.round(params.rotDecel());
+    }
+
+    /**
+     * The answer to CONFIG: the robot's class and subclass, serial number {@code SIM}, its limits as
+     * the parameter file gives them and as the client has set them since.
+     *
+     * @param name       the robot's name
+     * @param sipCycleMs ms between status packets
+     * @param watchdogMs the watchdog time
+     * @return the reply
+     */
+    ConfigPacket config(String name, int sipCycleMs, int watchdogMs) {
+        int sonars = params.sonarUnits().size();
+        return new ConfigPacket(params.robotClass(), params.subclass(), "SIM",
+                (int) Math.round(params.maxRVelocity()), (int) Math.round(params.maxVelocity()),
+                (int) Math.round(Math.max(params.rotAccel(), params.rotDecel())),
+                (int) Math.round(Math.max(params.transAccel(), params.transDecel())),
+                name, sipCycleMs, false, sonars > 0, sonars > 8, watchdogMs, rotVelMax, transVelMax,
+                rotAccel, rotDecel, transAccel, transDecel, 0, 0, "RoboSim");
+    }
+
+    /** @return whether the motors are enabled */
+    boolean motorsEnabled() {
+        return motorsEnabled;
+    }
+
+    /** @return whether the sonar is on */
+    boolean sonarOn() {
+        return sonarOn;
+    }
+
+    /** @return the BUMPSTALL setting: 0 none, 1 front, 2 rear, 3 both */
+    int bumpStall() {
+        return bumpStall;
+    }
+
+    /**
+     * Carries out one command.
+     *
+     * @param p the packet
+     */
+    void handle(PioneerPacket p) {
+        try {
+            dispatch(p, p.reader());
+        } catch (PacketFormatException e) {
+            effects.log("robot " + robot + ": dropped a malformed command: " + e.getMessage());
+        }
+    }
+
+    private void dispatch(PioneerPacket p, PacketData d) {
+        int id = p.id();
+        switch (id) {
+            case Commands.PULSE, Commands.OPEN, Commands.BATTERYINFO, Commands.CONFIG -> { }
+            case Commands.CLOSE -> effects.close("the client sent CLOSE");
+            case Commands.ENABLE -> {
+                motorsEnabled = d.intArgument("argument") != 0;
+                if (!motorsEnabled) {
+                    effects.request(new Command.Stop());
+                }
+            }
+            case Commands.SONAR -> {
+                sonarOn = d.intArgument("argument") != 0;
+                effects.request(new Command.SetSonar(sonarOn));
+            }
+            case Commands.SETV -> {
+                transVelMax = Math.abs(d.intArgument("mm/s"));
+                effects.request(new Command.SetMaxTransVel(transVelMax));
+            }
+            case Commands.SETRV -> {
+                rotVelMax = Math.abs(d.intArgument("deg/s"));
+                effects.request(new Command.SetMaxRotVel(rotVelMax));
+            }
+            case Commands.SETA -> limit(d.intArgument("mm/s²"), Command.DriveLimit.TRANS_ACCEL,
+                    Command.DriveLimit.TRANS_DECEL);
+            case Commands.SETRA -> limit(d.intArgument("deg/s²"), Command.DriveLimit.ROT_ACCEL,
+                    Command.DriveLimit.ROT_DECEL);
+            case Commands.SETO -> effects.resetOdometry();
+            case Commands.STOP, Commands.ESTOP -> effects.request(new Command.Stop());
+            case Commands.VEL -> motion(new Command.SetVel(d.intArgument("mm/s")));
+            case Commands.RVEL, Commands.ROTATE -> motion(new Command.SetRotVel(d.intArgument("deg/s")));
+            case Commands.VEL2 -> {
+                int v = d.intArgument("wheels");
+                double div = factors.vel2Divisor();
+                motion(new Command.SetVel2((byte) (v >> 8) * div, (byte) v * div));
+            }
+            case Commands.MOVE -> motion(new Command.Move(d.intArgument("mm")));
+            case Commands.HEAD -> motion(new Command.SetHeading(frame.toEnvironmentHeading(d.intArgument("degrees"))));
+            case Commands.DHEAD -> motion(new Command.SetDeltaHeading(d.intArgument("degrees")));
+            case Commands.BUMPSTALL -> {
+                bumpStall = d.intArgument("argument");
+                once(id, "robot " + robot + ": BUMPSTALL " + bumpStall + " noted; a RoboSim robot stalls on any"
+                        + " contact, whatever the setting");
+            }
+            case Commands.SAY -> effects.log("robot " + robot + " plays a sound (SAY, " + p.length() + " bytes)");
+            case Commands.SIM_MESSAGE -> {
+                String text = d.stringArgument("message");
+                effects.log("robot " + robot + ": " + printable(text));
+                effects.request(new Command.Say(printable(text)));
+            }
+            case Commands.SIM_SET_POSE -> {
+                d.u8("unused");
+                effects.request(new Command.SetTruePose(d.i32("x"), d.i32("y"), d.i32("th")));
+            }
+            case Commands.SIM_RESET -> effects.resetToStart();
+            case Commands.SIM_LRF_ENABLE, OLD_LRF_ENABLE -> {
+                laser.enable(d.intArgument("mode"));
+                effects.request(laser.command(params.laserMaxRange()));
+            }
+            case Commands.SIM_LRF_SET_FOV_START, OLD_LRF_START -> laserSetting(id, laser.setStart(d.intArgument("degrees")));
+            case Commands.SIM_LRF_SET_FOV_END, OLD_LRF_END -> laserSetting(id, laser.setEnd(d.intArgument("degrees")));
+            case Commands.SIM_LRF_SET_RES, OLD_LRF_INCREMENT ->
+                    laserSetting(id, laser.setResolution(d.intArgument("hundredths of a degree") / 100.0));
+            case Commands.SIM_STAT -> effects.simStat(d.remaining() > 0 ? d.intArgument("mode") : 1);
+            case Commands.SIM_EXIT -> effects.simExit(d.remaining() > 0 ? d.intArgument("exit code") : 0);
+            default -> once(id, "robot " + robot + ": " + (NOT_SIMULATED.contains(id)
+                    ? "command " + id + " (" + Commands.name(id) + ") is not simulated; ignored"
+                    : "unknown command " + id + "; ignored") + " (said once)");
+        }
+    }
+
+    private void motion(Command c) {
+        if (motorsEnabled) {
+            effects.request(c);
+        } else {
+            once(-1, "robot " + robot + ": a motion command came while the motors are disabled; ignored until ENABLE 1"
+                    + " (said once)");
+        }
+    }
+
+    private void limit(int value, Command.DriveLimit accel, Command.DriveLimit decel) {
+        if (value == 0) {
+            return; // ARIA's 0: keep the limit as it is
+        }
+        Command.DriveLimit which = value > 0 ? accel : decel;
+        int v = Math.abs(value);
+        switch (which) {
+            case TRANS_ACCEL -> transAccel = v;
+            case TRANS_DECEL -> transDecel = v;
+            case ROT_ACCEL -> rotAccel = v;
+            case ROT_DECEL -> rotDecel = v;
+            default -> throw new IllegalStateException("no drive limit " + which);
+        }
+        effects.request(new Command.SetDriveLimit(which, v));
+    }
+
+    private void laserSetting(int id, String adjusted) {
+        if (adjusted != null) {
+            once(1000 + id, "robot " + robot + ": " + adjusted);
+        }
+        if (laser.isOn()) {
+            effects.request(laser.command(params.laserMaxRange()));
+        }
+    }
+
+    private void once(int key, String line) {
+        if (loggedOnce.add(key)) {
+            effects.log(line);
+        }
+    }
+
+    private static String printable(String text) {
+        return robosim.protocol.RobotHello.printable(text, 200);
+    }
+}

@@ -1,0 +1,148 @@
+package robosim.pioneer.server;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.IntConsumer;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import robosim.pioneer.RobotIdentity;
+
+/**
+ * One robot's Pioneer port. It accepts one ARIA client at a time (a second is closed at once with a
+ * log line); the first client brings the robot into the run as a {@link BridgeRobot}, which stays
+ * for the clients after it. When a program on the Environment's robot port drives the robot already,
+ * the Environment refuses the bridge and the client is closed with the reason in the log.
+ */
+final class PioneerPort implements Closeable {
+    private static final Logger LOG = Logger.getLogger(PioneerPort.class.getName());
+
+    private final ServedRobot served;
+    private final ServerSocket server;
+    private final PioneerPortOptions options;
+    private final String envHost;
+    private final int envPort;
+    private final String secret;
+    private final IntConsumer simExit;
+    private volatile boolean closed;
+    private BridgeRobot bridge;
+
+    PioneerPort(ServedRobot served, InetAddress bind, int port, PioneerPortOptions options, String envHost, int envPort,
+                String secret, IntConsumer simExit) throws IOException {
+        this.served = served;
+        this.options = options;
+        this.envHost = envHost;
+        this.envPort = envPort;
+        this.secret = secret;
+        this.simExit = simExit;
+        server = new ServerSocket();
+        try {
+            server.bind(new InetSocketAddress(bind, port));
+        } catch (IOException e) {
+            server.close();
+            throw new IOException("robot " + served.name() + "'s Pioneer port " + bind.getHostAddress() + ":" + port
+                    + " cannot listen: " + e.getMessage(), e);
+        }
+        Thread t = new Thread(this::accept, "pioneer-port-" + port());
+        t.setDaemon(true);
+        t.start();
+    }
+
+    /** @return the port it listens on */
+    int port() {
+        return server.getLocalPort();
+    }
+
+    /** @return the robot it serves */
+    ServedRobot robot() {
+        return served;
+    }
+
+    private void accept() {
+        while (!closed) {
+            Socket s;
+            try {
+                s = server.accept();
+            } catch (IOException e) {
+                if (!closed) {
+                    LOG.log(Level.WARNING, "robot " + served.name() + "'s Pioneer port stopped accepting", e);
+                }
+                return;
+            }
+            try {
+                serve(s);
+            } catch (IOException | RuntimeException e) {
+                LOG.warning(() -> "robot " + served.name() + ": could not serve the ARIA client at "
+                        + s.getRemoteSocketAddress() + ": " + e.getMessage());
+                close(s);
+            }
+        }
+    }
+
+    private void serve(Socket s) throws IOException {
+        s.setTcpNoDelay(true);
+        if (bridge != null && bridge.hasClient()) {
+            LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
+                    + s.getRemoteSocketAddress() + " is closed (one client at a time)");
+            close(s);
+            return;
+        }
+        if (bridge == null || !bridge.isConnected()) {
+            if (bridge != null && bridge.getRunEnd() != null) {
+                LOG.warning(() -> "robot " + served.name() + ": its part in the run has ended ("
+                        + bridge.getRunEnd().describe() + "); the ARIA client at " + s.getRemoteSocketAddress()
+                        + " is closed");
+                close(s);
+                return;
+            }
+            BridgeRobot b = new BridgeRobot(served, envHost, envPort, options);
+            try {
+                b.start(secret).get(options.hardware().connectTimeoutMs() + 1000, TimeUnit.MILLISECONDS);
+            } catch (ExecutionException e) {
+                LOG.warning(() -> "robot " + served.name() + ": the Environment did not take it from Pioneer port " + port()
+                        + " (" + e.getCause().getMessage() + "); the ARIA client at " + s.getRemoteSocketAddress()
+                        + " is closed");
+                close(s);
+                return;
+            } catch (TimeoutException e) {
+                throw new IOException("the Environment did not welcome the robot in time", e);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted", e);
+            }
+            bridge = b;
+        }
+        PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
+                served.parameters().robotClass(), served.parameters().subclass()));
+        bridge.attach(session, simExit);
+    }
+
+    private static void close(Socket s) {
+        try {
+            s.close();
+        } catch (IOException e) {
+            LOG.log(Level.FINE, "closing", e);
+        }
+    }
+
+    @Override
+    public void close() {
+        closed = true;
+        try {
+            server.close();
+        } catch (IOException e) {
+            LOG.log(Level.FINE, "closing", e);
+        }
+        BridgeRobot b = bridge;
+        if (b != null) {
+            b.disconnect();
+        }
+    }
+}
