@@ -20,6 +20,7 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
+import robosim.pioneer.server.PioneerPorts;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
 import robosim.protocol.FrameReader;
@@ -73,6 +74,9 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     AccessOptions access;
 
+    @Mixin
+    PioneerOptions pioneer;
+
     @Option(names = "--wait-viewers", defaultValue = "0", paramLabel = "N", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
@@ -114,6 +118,7 @@ final class EnvCommand implements Callable<Integer> {
         }
         List<Path> secretFiles = List.of();
         String secret = options.access().secret();
+        PioneerPorts pioneerPorts = null;
         try (EnvironmentServer server = made) {
             try {
                 server.bind();
@@ -137,6 +142,14 @@ final class EnvCommand implements Callable<Integer> {
                 }
             } else {
                 out.println("Run secret: none (--no-token): anyone on this machine may join, watch and change the run");
+            }
+            if (pioneer.requested()) {
+                try {
+                    pioneerPorts = pioneer.open(w, bind, server.robotPort(), secret, realtime, out);
+                } catch (IOException e) {
+                    err.println("robosim env: " + e.getMessage() + " (--pioneer-port chooses others; 0 takes free ports)");
+                    return 1;
+                }
             }
             RecordingWriter recorder = null;
             if (recording.requested()) {
@@ -164,6 +177,9 @@ final class EnvCommand implements Callable<Integer> {
                 return recording.report(out, err, "env", recorder);
             }
         } finally {
+            if (pioneerPorts != null) {
+                pioneerPorts.close();
+            }
             AccessOptions.unpublish(secretFiles, secret);
         }
         return 0;
@@ -178,6 +194,7 @@ final class EnvCommand implements Callable<Integer> {
         ServerOptions.requireAtLeast("--connect-timeout", connectTimeoutS, 1);
         ServerOptions.requireAtLeast("--wait-viewers", waitViewers, 0);
         ServerOptions.requireAtLeast("--threads", threads(), 1);
+        pioneer.check();
     }
 
     private int threads() {

@@ -29,6 +29,16 @@ public final class RobotParameterFiles {
     }
 
     /**
+     * Finds a parameter file and reads its conversion factors (see {@link ConversionFactors}).
+     *
+     * @param file a path, or a shipped name
+     * @return the factors; ARIA's defaults for a file of another form
+     */
+    public static ConversionFactors conversionFactors(String file) {
+        return ConversionFactorsReader.read(resolve(file));
+    }
+
+    /**
      * @return the RoboSim root: system property {@code robosim.root}, else the working directory
      */
     public static Path root() {
