@@ -76,8 +76,14 @@ public final class PioneerClient implements Closeable {
     private void handshake(long timeoutMs) throws IOException {
         for (int sync = Commands.SYNC0; sync <= Commands.SYNC2; sync++) {
             PioneerPacket answer = null;
-            for (int i = 0; i < SYNC_TRIES && answer == null; i++) {
-                send(PioneerPacket.of(sync));
+            for (int i = 0; i < SYNC_TRIES && answer == null && !closed; i++) {
+                try {
+                    send(PioneerPacket.of(sync));
+                } catch (IOException e) {
+                    close();
+                    throw new IOException("the robot server at " + where + " closed the connection during the"
+                            + " handshake (SYNC" + sync + "): " + e.getMessage(), e);
+                }
                 int expected = sync;
                 answer = await(p -> p.id() == expected, Math.min(timeoutMs, SYNC_WAIT_MS));
             }

@@ -88,6 +88,15 @@ final class PioneerPort implements Closeable {
 
     private void serve(Socket s) throws IOException {
         s.setTcpNoDelay(true);
+        // a client that has just said CLOSE may not have been seen off yet: give it a moment
+        for (int i = 0; i < 10 && bridge != null && bridge.hasClient(); i++) {
+            try {
+                Thread.sleep(50);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            }
+        }
         if (bridge != null && bridge.hasClient()) {
             LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
                     + s.getRemoteSocketAddress() + " is closed (one client at a time)");
