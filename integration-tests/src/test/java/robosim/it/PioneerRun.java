@@ -30,7 +30,18 @@ final class PioneerRun implements AutoCloseable {
      * @param simExit      what an allowed SIM_EXIT does
      */
     PioneerRun(World world, boolean allowSimExit, java.util.function.IntConsumer simExit) throws Exception {
-        env = new LocalEnvironment(world, 1, ServerOptions.loopback());
+        this(world, 0, allowSimExit, simExit);
+    }
+
+    /**
+     * @param world        the world
+     * @param maxSteps     the run's length, 0 for no limit
+     * @param allowSimExit whether SIM_EXIT may end the run
+     * @param simExit      what an allowed SIM_EXIT does
+     */
+    PioneerRun(World world, long maxSteps, boolean allowSimExit, java.util.function.IntConsumer simExit)
+            throws Exception {
+        env = new LocalEnvironment(world, 1, ServerOptions.loopback().withMaxSteps(maxSteps));
         List<ServedRobot> robots = new ArrayList<>();
         for (RobotSpec r : world.robots()) {
             robots.add(new ServedRobot(r.name(), r.type(), r.parameters(),
