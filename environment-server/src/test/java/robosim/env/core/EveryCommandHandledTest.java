@@ -28,7 +28,9 @@ class EveryCommandHandledTest {
             new Command.ConfigureHeatSensor(true, 90, 5000),
             new Command.SendMessage(1, Command.Addressing.ALL, null, "text", "hi"),
             new Command.JoinGroup("team"), new Command.LeaveGroup("team"),
-            new Command.Say("hello"), new Command.ReportFound("gold"));
+            new Command.Say("hello"), new Command.ReportFound("gold"),
+            new Command.SetDriveLimit(Command.DriveLimit.ROT_DECEL, 50), new Command.ReportTruePose(true),
+            new Command.SetTruePose(5000, 6000, 90), new Command.ResetToStart());
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {
