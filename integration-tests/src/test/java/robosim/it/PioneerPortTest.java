@@ -41,6 +41,18 @@ class PioneerPortTest {
         return Math.toDegrees(s.th() * ANGLE);
     }
 
+    /** The newest SIP: the ones queued are read, and the last kept. */
+    static Sip latest(PioneerClient c) throws InterruptedException {
+        Sip last = null;
+        PioneerPacket p;
+        while ((p = c.receive(0)) != null) {
+            if (p.id() == Commands.SIP_STOPPED || p.id() == Commands.SIP_MOVING) {
+                last = Sip.decode(p);
+            }
+        }
+        return last != null ? last : c.nextSip(2000);
+    }
+
     /** Waits, reading SIPs, until the robot has been still for a few SIPs; returns the last. */
     static Sip settled(PioneerClient c) {
         Sip last = null;
@@ -190,8 +202,11 @@ class PioneerPortTest {
 
     @Test
     void garbageBadPacketsAndAFloodOfPulsesNeverStopTheRun() throws Exception {
-        try (PioneerRun run = new PioneerRun(PioneerRun.room(dir), false, code -> { });
+        try (PioneerRun run = new PioneerRun(PioneerRun.roomForTwo(dir), false, code -> { });
+             PioneerClient other = run.client("r2");
              PioneerClient c = run.client("r1")) {
+            other.send(Commands.comInt(Commands.ENABLE, 1));
+            other.send(Commands.comInt(Commands.VEL, 100));
             c.sendRaw(new byte[] {1, 2, 3, 4, 5, 6, 7, 8});
             byte[] bad = Commands.comInt(Commands.VEL, 900).encode();
             bad[bad.length - 1] ^= 0x55;
@@ -205,6 +220,9 @@ class PioneerPortTest {
             c.send(Commands.comInt(Commands.MOVE, 200));
             assertEquals(200, x(settled(c)), 10, "the commands after the garbage are carried out");
             assertFalse(c.isClosed());
+            Sip s = latest(other);
+            assertEquals(100, s.leftVel(), "the other robot drove on meanwhile");
+            assertTrue(x(s) > 100, "the other robot drove on meanwhile: " + x(s));
         }
     }
 

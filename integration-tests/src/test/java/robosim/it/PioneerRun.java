@@ -71,6 +71,19 @@ final class PioneerRun implements AutoCloseable {
         return WorldReader.read(world);
     }
 
+    /** The room with a second p3dx, r2, at (3000, 6000) facing +x. */
+    static World roomForTwo(Path dir) throws Exception {
+        Path world = dir.resolve("room2.xml");
+        String params = LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.p").toString();
+        Files.writeString(world, """
+                <world name="room" width="10000" height="10000" boundary="true">
+                  <robot name="r1" type="pioneer" x="3000" y="3000" th="0" params="%s"/>
+                  <robot name="r2" type="pioneer" x="3000" y="6000" th="0" params="%s"/>
+                </world>
+                """.formatted(params, params));
+        return WorldReader.read(world);
+    }
+
     /**
      * Connects an ARIA-style client to a robot's port and opens it.
      *

@@ -179,7 +179,7 @@ final class BridgeRobot extends AbstractRobot {
         simStatMode = 0;
         frameResetDue = true;
         attached = a;
-        session.start(handler, () -> handler.config(served.name(), getStepMs(), (int) options.watchdogMs()),
+        session.attach(handler, () -> handler.config(served.name(), getStepMs(), (int) options.watchdogMs()),
                 () -> detach(a));
     }
 
@@ -188,12 +188,6 @@ final class BridgeRobot extends AbstractRobot {
             attached = null;
             commands.add(new Command.Stop());
         }
-    }
-
-    /** @return whether a client is attached */
-    boolean hasClient() {
-        Attached a = attached;
-        return a != null && !a.session().isEnded();
     }
 
     /** The effects of a client's commands on this robot. */

@@ -17,8 +17,8 @@ import robosim.pioneer.RobotIdentity;
 
 /**
  * One robot's Pioneer port. It accepts one ARIA client at a time (a second is closed at once with a
- * log line); the first client brings the robot into the run as a {@link BridgeRobot}, which stays
- * for the clients after it. When a program on the Environment's robot port drives the robot already,
+ * log line); the first client to finish the handshake brings the robot into the run as a
+ * {@link BridgeRobot}, which stays for the clients after it. When a program on the Environment's robot port drives the robot already,
  * the Environment refuses the bridge and the client is closed with the reason in the log.
  */
 final class PioneerPort implements Closeable {
@@ -32,7 +32,8 @@ final class PioneerPort implements Closeable {
     private final String secret;
     private final IntConsumer simExit;
     private volatile boolean closed;
-    private BridgeRobot bridge;
+    private volatile BridgeRobot bridge;
+    private volatile PioneerSession current;
 
     PioneerPort(ServedRobot served, InetAddress bind, int port, PioneerPortOptions options, String envHost, int envPort,
                 String secret, IntConsumer simExit) throws IOException {
@@ -89,7 +90,7 @@ final class PioneerPort implements Closeable {
     private void serve(Socket s) throws IOException {
         s.setTcpNoDelay(true);
         // a client that has just said CLOSE may not have been seen off yet: give it a moment
-        for (int i = 0; i < 10 && bridge != null && bridge.hasClient(); i++) {
+        for (int i = 0; i < 10 && current != null && !current.isEnded(); i++) {
             try {
                 Thread.sleep(50);
             } catch (InterruptedException e) {
@@ -97,40 +98,44 @@ final class PioneerPort implements Closeable {
                 break;
             }
         }
-        if (bridge != null && bridge.hasClient()) {
+        if (current != null && !current.isEnded()) {
             LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
                     + s.getRemoteSocketAddress() + " is closed (one client at a time)");
             close(s);
             return;
         }
-        if (bridge == null || !bridge.isConnected()) {
-            if (bridge != null && bridge.getRunEnd() != null) {
-                LOG.warning(() -> "robot " + served.name() + ": its part in the run has ended ("
-                        + bridge.getRunEnd().describe() + "); the ARIA client at " + s.getRemoteSocketAddress()
-                        + " is closed");
-                close(s);
+        PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
+                served.parameters().robotClass(), served.parameters().subclass()));
+        current = session;
+        session.start(this::connected);
+    }
+
+    /** A client finished the handshake: the robot joins the run if it has not, and the client drives it. */
+    private void connected(PioneerSession session) {
+        BridgeRobot b = bridge;
+        if (b == null || !b.isConnected()) {
+            if (b != null && b.getRunEnd() != null) {
+                session.end("robot " + served.name() + "'s part in the run has ended (" + b.getRunEnd().describe() + ")");
                 return;
             }
-            BridgeRobot b = new BridgeRobot(served, envHost, envPort, options);
+            b = new BridgeRobot(served, envHost, envPort, options);
             try {
                 b.start(secret).get(options.hardware().connectTimeoutMs() + 1000, TimeUnit.MILLISECONDS);
             } catch (ExecutionException e) {
-                LOG.warning(() -> "robot " + served.name() + ": the Environment did not take it from Pioneer port " + port()
-                        + " (" + e.getCause().getMessage() + "); the ARIA client at " + s.getRemoteSocketAddress()
-                        + " is closed");
-                close(s);
+                session.end("the Environment did not take robot " + served.name() + " from Pioneer port " + port()
+                        + ": " + e.getCause().getMessage());
                 return;
             } catch (TimeoutException e) {
-                throw new IOException("the Environment did not welcome the robot in time", e);
+                session.end("the Environment did not welcome robot " + served.name() + " in time");
+                return;
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-                throw new IOException("interrupted", e);
+                session.end("interrupted");
+                return;
             }
             bridge = b;
         }
-        PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
-                served.parameters().robotClass(), served.parameters().subclass()));
-        bridge.attach(session, simExit);
+        b.attach(session, simExit);
     }
 
     private static void close(Socket s) {

@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -18,10 +20,17 @@ import robosim.pioneer.RobotIdentity;
  * the client's commands handed to the robot's {@link CommandHandler}, and the robot's packets
  * written back. The client's bytes are read by a thread of the session's own; garbage, bad lengths
  * and bad checksums are dropped with a log line (at most one a second, with a count), never ending
- * the session or the run.
+ * the session or the run. A client that has not finished the handshake within
+ * {@value #HANDSHAKE_MS} ms, or has been silent for {@value #SILENT_MS} ms, is closed so that the
+ * port is free again.
  */
 final class PioneerSession {
     private static final Logger LOG = Logger.getLogger(PioneerSession.class.getName());
+    /** How long a client may take over the SYNC handshake, ms. */
+    static final int HANDSHAKE_MS = 10_000;
+    /** How long a client may be silent before its port is freed, ms. */
+    static final int SILENT_MS = 15_000;
+    private static final int CHECK_MS = 1000;
 
     private enum Phase { SYNC0, SYNC1, SYNC2, CONNECTED }
 
@@ -34,9 +43,10 @@ final class PioneerSession {
     private volatile boolean opened;
     private volatile boolean ended;
     private volatile long lastPacketNanos = System.nanoTime();
-    private CommandHandler handler;
-    private Supplier<ConfigPacket> config;
-    private Runnable onEnd;
+    private Consumer<PioneerSession> connected;
+    private volatile CommandHandler handler;
+    private volatile Supplier<ConfigPacket> config;
+    private volatile Runnable onEnd;
     private long drops;
     private long lastDropLogNanos;
 
@@ -56,17 +66,30 @@ final class PioneerSession {
     /**
      * Starts reading the client's packets.
      *
-     * @param commands carries out the commands after the handshake
-     * @param config   the answer to CONFIG, as the robot is now
-     * @param ended    run once when the session ends
+     * @param connected told, on the session's thread, when the handshake is done; it
+     *                  {@link #attach attaches} the robot, or ends the session
      */
-    void start(CommandHandler commands, Supplier<ConfigPacket> config, Runnable ended) {
-        this.handler = commands;
-        this.config = config;
-        this.onEnd = ended;
+    void start(Consumer<PioneerSession> connected) {
+        this.connected = connected;
         Thread t = new Thread(this::read, "pioneer-" + robot);
         t.setDaemon(true);
         t.start();
+    }
+
+    /**
+     * Gives the session its robot, once the handshake is done.
+     *
+     * @param commands carries out the commands
+     * @param config   the answer to CONFIG, as the robot is now
+     * @param ended    run once when the session ends
+     */
+    void attach(CommandHandler commands, Supplier<ConfigPacket> config, Runnable ended) {
+        this.handler = commands;
+        this.config = config;
+        this.onEnd = ended;
+        if (this.ended) {
+            ended.run();
+        }
     }
 
     private void read() {
@@ -83,9 +106,24 @@ final class PioneerSession {
         });
         byte[] buf = new byte[4096];
         String why = "the client closed the connection";
+        long started = System.nanoTime();
         try (InputStream in = socket.getInputStream()) {
-            int n;
-            while (!ended && (n = in.read(buf)) > 0) {
+            socket.setSoTimeout(CHECK_MS);
+            while (!ended) {
+                int n;
+                try {
+                    n = in.read(buf);
+                } catch (SocketTimeoutException e) {
+                    String late = late(started);
+                    if (late != null) {
+                        why = late;
+                        break;
+                    }
+                    continue;
+                }
+                if (n < 0) {
+                    break;
+                }
                 decoder.feed(buf, 0, n);
             }
         } catch (IOException e) {
@@ -94,11 +132,31 @@ final class PioneerSession {
         end(why);
     }
 
+    /**
+     * A client that holds a port without a handshake, or that has gone silent for longer than ARIA
+     * itself waits before it drops a robot, is closed so that the port is free for the next.
+     *
+     * @return why the client is closed, or null while it may stay
+     */
+    private String late(long started) {
+        if (phase != Phase.CONNECTED && System.nanoTime() - started > HANDSHAKE_MS * 1_000_000L) {
+            return "no handshake within " + HANDSHAKE_MS + " ms";
+        }
+        if (silentMs() > SILENT_MS) {
+            return "silent for " + SILENT_MS + " ms (an ARIA program sends a PULSE every 500 ms, and gives a robot up"
+                    + " after 8 s)";
+        }
+        return null;
+    }
+
     private void take(PioneerPacket p) {
         lastPacketNanos = System.nanoTime();
         switch (phase) {
             case SYNC0, SYNC1, SYNC2 -> handshake(p);
             case CONNECTED -> {
+                if (handler == null) {
+                    return;
+                }
                 if (p.id() == Commands.OPEN) {
                     opened = true;
                 } else if (p.id() == Commands.CONFIG) {
@@ -118,6 +176,7 @@ final class PioneerSession {
             phase = Phase.values()[expected + 1];
             if (phase == Phase.CONNECTED) {
                 LOG.info(() -> "robot " + robot + ": an ARIA client connected from " + client);
+                connected.accept(this);
             }
         } else if (p.id() == Commands.SYNC0) {
             // a client that starts again (ARIA does after a timeout) starts from the first step
@@ -197,8 +256,9 @@ final class PioneerSession {
         } catch (IOException e) {
             LOG.log(Level.FINE, "closing", e);
         }
-        if (onEnd != null) {
-            onEnd.run();
+        Runnable r = onEnd;
+        if (r != null) {
+            r.run();
         }
     }
 }
