@@ -85,10 +85,21 @@ final class PioneerOptions {
         return ports;
     }
 
-    /** The conversion factors of a robot's ARIA parameter file; ARIA's defaults for other forms. */
-    private static ConversionFactors factors(RobotSpec r) {
-        return r.parameterFile() == null ? ConversionFactors.ARIA_DEFAULTS
-                : RobotParameterFiles.conversionFactors(r.parameterFile().toString());
+    /**
+     * The conversion factors of a robot's ARIA parameter file. For a file of another form, those of
+     * the shipped ARIA model of its subclass, which is the file an ARIA program loads for it; ARIA's
+     * defaults when there is none.
+     */
+    static ConversionFactors factors(RobotSpec r) {
+        String file = r.parameterFile() == null ? "" : r.parameterFile().toString();
+        if (file.toLowerCase(Locale.ROOT).endsWith(".p")) {
+            return RobotParameterFiles.conversionFactors(file);
+        }
+        try {
+            return RobotParameterFiles.conversionFactors(r.parameters().subclass() + ".p");
+        } catch (IllegalArgumentException noModel) {
+            return ConversionFactors.ARIA_DEFAULTS;
+        }
     }
 
     /** The address a bridge robot in this process reaches the Environment at. */
