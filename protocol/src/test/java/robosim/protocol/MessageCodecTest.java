@@ -257,7 +257,11 @@ class MessageCodecTest {
                 + "{\"cmd\":\"found\",\"object\":\"gold\"},"
                 + "{\"cmd\":\"say\",\"text\":\"found it\"},"
                 + "{\"cmd\":\"moveWheels\",\"left\":-120.5,\"right\":300.0},"
-                + "{\"cmd\":\"accel\",\"trans\":250.0,\"rot\":60.0}]}", json);
+                + "{\"cmd\":\"accel\",\"trans\":250.0,\"rot\":60.0},"
+                + "{\"cmd\":\"driveLimit\",\"limit\":\"TRANS_DECEL\",\"value\":400.0},"
+                + "{\"cmd\":\"truePose\",\"x\":-1500.0,\"y\":2500.0,\"th\":90.0},"
+                + "{\"cmd\":\"resetToStart\"},"
+                + "{\"cmd\":\"reportTruePose\",\"on\":true}]}", json);
     }
 
     @Test

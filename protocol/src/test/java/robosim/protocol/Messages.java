@@ -77,7 +77,11 @@ final class Messages {
                 new Command.ReportFound("gold"),
                 new Command.Say("found it"),
                 new Command.MoveWheels(-120.5, 300),
-                new Command.SetAccel(250, 60)));
+                new Command.SetAccel(250, 60),
+                new Command.SetDriveLimit(Command.DriveLimit.TRANS_DECEL, 400),
+                new Command.SetTruePose(-1500, 2500, 90),
+                new Command.ResetToStart(),
+                new Command.ReportTruePose(true)));
     }
 
     static ViewerHello viewerHello() {

@@ -89,7 +89,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(19)) {
+        return switch (random.nextInt(23)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -113,6 +113,10 @@ public final class RandomMessages {
             case 15 -> new Command.ReportFound("o" + text(40));
             case 16 -> new Command.Say(text(1000));
             case 17 -> new Command.MoveWheels(finite(), finite());
+            case 18 -> new Command.SetDriveLimit(Command.DriveLimit.values()[random.nextInt(4)], positive());
+            case 19 -> new Command.SetTruePose(finite(), finite(), finite());
+            case 20 -> new Command.ResetToStart();
+            case 21 -> new Command.ReportTruePose(random.nextBoolean());
             default -> new Command.SetAccel(positive(), positive());
         };
     }
