@@ -21,7 +21,7 @@ import robosim.protocol.RobotParameters;
 final class CommandHandler {
     /** Commands a Pioneer takes that RoboSim does not simulate, ignored after one log line. */
     private static final Set<Integer> NOT_SIMULATED = Set.of(Commands.POLLING, Commands.ENCODER, Commands.GRIPPER,
-            Commands.IOREQUEST, Commands.LATVEL, Commands.SIM_CTRL, 26, 30, 58, 110, 113);
+            Commands.IOREQUEST, Commands.LATVEL, Commands.SIM_CTRL, 26, 30, 58, 113);
     /** The laser commands of the older simulator, which ARIA's simulated laser still sends. */
     static final int OLD_LRF_ENABLE = 35;
     static final int OLD_LRF_START = 36;
