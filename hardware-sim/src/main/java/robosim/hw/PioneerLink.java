@@ -162,6 +162,16 @@ public final class PioneerLink extends ReleasedOnClose {
         close();
     }
 
+    /** @return the robot server's host */
+    public String host() {
+        return host;
+    }
+
+    /** @return the robot server's port */
+    public int port() {
+        return port;
+    }
+
     @Override
     public String environment() {
         return host + ":" + port;
