@@ -29,7 +29,7 @@ import robosim.hw.PioneerLink;
  */
 @Command(name = "robot", mixinStandardHelpOptions = true,
         customSynopsis = {"robosim robot [OPTIONS] CLASS NAME HOST PORT [ARGS...]",
-                "robosim robot [OPTIONS] --pioneer HOST:PORT CLASS NAME [ARGS...]"},
+                "       robosim robot [OPTIONS] --pioneer HOST:PORT CLASS NAME [ARGS...]"},
         description = {"Run a robot program: CLASS's main(NAME, HOST, PORT, ARGS...).",
                 "HOST and PORT are the Environment's robot port; with --pioneer, the program drives the Pioneer robot"
                         + " server at HOST:PORT instead (MobileSim, a real Pioneer behind a serial-to-TCP bridge, or"
