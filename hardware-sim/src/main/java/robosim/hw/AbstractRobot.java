@@ -82,14 +82,15 @@ public abstract class AbstractRobot {
 
     /**
      * Connects as {@link #connect(HardwareOptions)} does, presenting a secret the caller already
-     * holds (a bridge inside the Environment's own process) instead of looking for one.
+     * holds (a bridge inside the Environment's own process) instead of looking for one. It always
+     * reaches the Environment itself, whatever {@link EnvironmentLinks#PIONEER_PROPERTY} says.
      *
      * @param options timeouts
      * @param secret  the run secret, or null when the run has none
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connectPresenting(HardwareOptions options, String secret) throws IOException {
-        connect(options, EnvironmentLinks.to(host, port, options), secret);
+        connect(options, EnvironmentLinks.toEnvironment(host, port, options), secret);
     }
 
     /**

@@ -14,10 +14,17 @@ import java.util.concurrent.ConcurrentHashMap;
  *
  * <p>The system property {@code robosim.link} overrides the choice: {@code own} gives every robot a
  * connection of its own, {@code shared} puts every robot, the first too, on the shared one.
+ *
+ * <p>The system property {@value #PIONEER_PROPERTY}, set to a Pioneer robot server's
+ * {@code host:port}, sends every robot of the JVM there instead, through a {@link PioneerLink}: the
+ * same program then drives MobileSim, a real Pioneer behind a serial-to-TCP bridge, or RoboSim's
+ * own Pioneer port, whatever Environment host and port it was given.
  */
 public final class EnvironmentLinks {
     /** The system property that chooses the links. */
     public static final String PROPERTY = "robosim.link";
+    /** The system property that sends the robots to a Pioneer robot server, {@code host:port}. */
+    public static final String PIONEER_PROPERTY = "robosim.pioneer";
     /** Robots of this JVM connected or connecting, by the Environment's host and port. */
     private static final Map<String, Integer> ROBOTS = new ConcurrentHashMap<>();
 
@@ -57,11 +64,54 @@ public final class EnvironmentLinks {
      * @return the link
      */
     public static EnvironmentLink to(String host, int port, HardwareOptions options) {
+        String pioneer = System.getProperty(PIONEER_PROPERTY);
+        if (pioneer != null && !pioneer.isBlank()) {
+            return pioneer(pioneer, options);
+        }
+        return toEnvironment(host, port, options);
+    }
+
+    /**
+     * A link to the Environment itself, whatever {@value #PIONEER_PROPERTY} says: for robots that
+     * bridge the Environment to Pioneer clients.
+     *
+     * @param host    the Environment's host
+     * @param port    its robot port
+     * @param options timeouts
+     * @return the link
+     */
+    public static EnvironmentLink toEnvironment(String host, int port, HardwareOptions options) {
         Mode mode = Mode.configured();
         String key = host + ":" + port;
         int robots = ROBOTS.merge(key, 1, Integer::sum);
         Runnable released = () -> ROBOTS.computeIfPresent(key, (k, n) -> n > 1 ? n - 1 : null);
         boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1;
         return shared ? new LinkMember(host, port, options, released) : new SocketLink(host, port, options, released);
+    }
+
+    /**
+     * A link to a Pioneer robot server.
+     *
+     * @param address the server, {@code host:port}
+     * @param options timeouts
+     * @return the link, not yet open
+     * @throws IllegalArgumentException if the address is not {@code host:port} with a port of 1 to 65535
+     */
+    public static PioneerLink pioneer(String address, HardwareOptions options) {
+        int colon = address.lastIndexOf(':');
+        String rule = ": a Pioneer robot server is given as HOST:PORT, the port 1 to 65535";
+        if (colon <= 0 || colon == address.length() - 1) {
+            throw new IllegalArgumentException("'" + address + "' was supplied for the Pioneer robot server" + rule);
+        }
+        int port;
+        try {
+            port = Integer.parseInt(address.substring(colon + 1).trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("'" + address + "' was supplied for the Pioneer robot server" + rule, e);
+        }
+        if (port <= 0 || port > 65535) {
+            throw new IllegalArgumentException("'" + address + "' was supplied for the Pioneer robot server" + rule);
+        }
+        return new PioneerLink(address.substring(0, colon).trim(), port, options);
     }
 }

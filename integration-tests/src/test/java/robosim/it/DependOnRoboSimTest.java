@@ -30,7 +30,7 @@ import org.junit.jupiter.api.io.TempDir;
 class DependOnRoboSimTest {
     private static final String VERSION = "0.1.0-SNAPSHOT";
     /** aria-api and the modules it needs. */
-    private static final List<String> MODULES = List.of("protocol", "robot-params", "hardware-sim", "aria-api");
+    private static final List<String> MODULES = List.of("protocol", "pioneer", "robot-params", "hardware-sim", "aria-api");
 
     @TempDir
     Path dir;

@@ -150,6 +150,29 @@ class CommandLineTest {
         r.assertHintToHelp("robosim robot");
     }
 
+    @Test
+    void robotWithoutHostAndPortExitsWith2AndNamesBothForms() {
+        Run r = execute("robot", "no.such.RobotProgram", "r1");
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim robot: Missing required parameters: 'HOST', 'PORT' (the Environment's, after NAME; or give"
+                + " --pioneer HOST:PORT to drive a Pioneer robot server)", r.firstLine());
+    }
+
+    @Test
+    void robotWithPioneerNeedsNoEnvironmentHostAndPort() {
+        Run r = execute("robot", "--pioneer", "127.0.0.1:8101", "no.such.RobotProgram", "r1");
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().startsWith("robosim robot: no class no.such.RobotProgram"), r.err());
+    }
+
+    @Test
+    void robotWithAPioneerServerWithoutPortExitsWith2AndNamesTheRule() {
+        Run r = execute("robot", "--pioneer", "127.0.0.1", "no.such.RobotProgram", "r1");
+        assertEquals(2, r.exit(), r.err());
+        assertEquals("robosim robot: '127.0.0.1' was supplied for --pioneer: a Pioneer robot server is given as"
+                + " HOST:PORT, the port 1 to 65535", r.firstLine());
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
             "--robots 0          | 0 was supplied for --robots: counts are 1 to 5000",
