@@ -16,7 +16,10 @@ import robosim.geometry.Pose2D;
 import robosim.params.ParameterFileException;
 import robosim.protocol.RobotParameters;
 import robosim.params.RobotParametersReader;
+import robosim.env.world.Bounds;
 import robosim.env.world.Obstacle;
+import robosim.env.world.RobotRequest;
+import robosim.params.RobotParameterFiles;
 import robosim.env.world.RobotSpec;
 import robosim.protocol.RobotHello;
 
@@ -30,8 +33,7 @@ final class RobotPlacer {
     static final List<String> TYPES = List.of("pioneer", "scout");
 
     private final Attributes attributes;
-    private final double width;
-    private final double height;
+    private final Bounds bounds;
     private final List<Obstacle> obstacles;
     private final List<String> obstacleNames;
     private final GeometryClient geometry;
@@ -42,11 +44,9 @@ final class RobotPlacer {
     /**
      * @param obstacleNames how messages name each obstacle, in the order of {@code obstacles}
      */
-    RobotPlacer(Attributes attributes, double width, double height, List<Obstacle> obstacles,
-                List<String> obstacleNames) {
+    RobotPlacer(Attributes attributes, Bounds bounds, List<Obstacle> obstacles, List<String> obstacleNames) {
         this.attributes = attributes;
-        this.width = width;
-        this.height = height;
+        this.bounds = bounds;
         this.obstacles = obstacles;
         this.obstacleNames = obstacleNames;
         this.geometry = new GeometryClient(obstacles.stream().map(Obstacle::polygon).toList());
@@ -55,6 +55,39 @@ final class RobotPlacer {
     /** @return the robot, checked and placed */
     RobotSpec place(RobotElement e) {
         String name = attributes.text(e, "name", e.name);
+        String type = attributes.text(e, "type", e.type);
+        double x = attributes.number(e, "x", e.x);
+        double y = attributes.number(e, "y", e.y);
+        double th = attributes.number(e, "th", e.th, 0);
+        String params = attributes.text(e, "params", e.params);
+        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
+        return place(e, name, type, x, y, th, params, file);
+    }
+
+    /**
+     * Places a robot asked for with {@code --robot}; its problems are reported with line 0, as the
+     * option's, not the file's.
+     *
+     * @param request the option
+     * @param name    the robot's name
+     * @param pose    where it starts
+     * @return the robot, checked and placed
+     */
+    RobotSpec place(RobotRequest request, String name, Pose2D pose) {
+        Element option = new RobotElement();
+        Path file;
+        try {
+            file = RobotParameterFiles.resolve(request.type()).toAbsolutePath().normalize();
+        } catch (IllegalArgumentException ex) {
+            throw attributes.error(option, "--robot " + request + ": " + ex.getMessage());
+        }
+        String type = "scout".equalsIgnoreCase(parameters(option, name, request.type(), file).robotClass())
+                ? "scout" : "pioneer";
+        return place(option, name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), request.type(), file);
+    }
+
+    private RobotSpec place(Element e, String name, String type, double x, double y, double th, String params,
+                            Path file) {
         if (!RobotHello.validName(name)) {
             throw attributes.error(e, RobotHello.NAME_RULE + "; " + RobotHello.quoted(name) + " is not");
         }
@@ -64,16 +97,10 @@ final class RobotPlacer {
                         + other.line());
             }
         }
-        String type = attributes.text(e, "type", e.type);
         if (!TYPES.contains(type)) {
             throw attributes.error(e, "robot '" + name + "' has unknown type '" + type + "'; known types: "
                     + String.join(", ", TYPES));
         }
-        double x = attributes.number(e, "x", e.x);
-        double y = attributes.number(e, "y", e.y);
-        double th = attributes.number(e, "th", e.th, 0);
-        String params = attributes.text(e, "params", e.params);
-        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
         RobotSpec robot = new RobotSpec(name, type, x, y, th, file, parameters(e, name, params, file), e.line());
         check(robot, e);
         geometry.addBody(robot.body(), robot.pose());
@@ -81,7 +108,7 @@ final class RobotPlacer {
         return robot;
     }
 
-    private RobotParameters parameters(RobotElement e, String name, String params, Path file) {
+    private RobotParameters parameters(Element e, String name, String params, Path file) {
         RobotParameters known = parameterCache.get(file);
         if (known != null) {
             return known;
@@ -110,16 +137,16 @@ final class RobotPlacer {
         }
     }
 
-    private void check(RobotSpec robot, RobotElement e) {
+    private void check(RobotSpec robot, Element e) {
         BodyShape body = robot.body();
         Pose2D pose = robot.pose();
         String where = "robot '" + robot.name() + "' at (" + Attributes.format(robot.x()) + ", "
                 + Attributes.format(robot.y()) + ")";
         Coordinate[] ring = body.ringAt(pose);
         for (Coordinate c : ring) {
-            if (c.x < 0 || c.x > width || c.y < 0 || c.y > height) {
-                throw attributes.error(e, where + " is outside the world " + Attributes.format(width) + " x "
-                        + Attributes.format(height) + ": its body must lie inside it");
+            if (!bounds.contains(c.x, c.y)) {
+                throw attributes.error(e, where + " is outside the world " + bounds.describe()
+                        + ": its body must lie inside it");
             }
         }
         if (!geometry.overlaps(body, pose, -1)) {
