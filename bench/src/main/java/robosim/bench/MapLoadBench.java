@@ -1,0 +1,176 @@
+package robosim.bench;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.SplittableRandom;
+import robosim.env.core.Simulation;
+import robosim.env.world.Obstacle;
+import robosim.env.world.RobotSpec;
+import robosim.env.world.World;
+import robosim.env.world.map.MapFile;
+import robosim.env.world.map.MapReader;
+import robosim.env.world.xml.WorldReader;
+import robosim.geometry.GeometryClient;
+
+/**
+ * What a large ARIA map costs: reading it into a world (the map read, points merged, the robot
+ * placed), building the simulation on it, and a laser scan against it, with the points merged
+ * into row and column runs as the world has them and, for comparison, as one square each.
+ */
+public final class MapLoadBench {
+    /** Side of a room of the generated building, mm. */
+    private static final int ROOM = 4000;
+    /** Spacing of the generated points, mm: the map's resolution, as a scanned map's are. */
+    private static final int RESOLUTION = 20;
+    /** Beams of a SICK scan, as the laser bench's. */
+    private static final int BEAMS = 181;
+    private static final double LASER_RANGE = 8000;
+
+    private MapLoadBench() {
+    }
+
+    /**
+     * The figures of one map.
+     *
+     * @param map         the map's file name
+     * @param points      its points
+     * @param lines       its lines
+     * @param obstacles   the world's obstacles after merging
+     * @param readSeconds reading the map into a world, the best of the runs after the first
+     * @param firstRead   the first run (the JIT still cold), s
+     * @param simSeconds  building the simulation on the world, best run, s
+     * @param scanMerged  one 181-beam scan against the merged world, µs
+     * @param scanSquares the same scan against one square per point, µs
+     */
+    public record Result(String map, int points, int lines, int obstacles, double readSeconds, double firstRead,
+                         double simSeconds, double scanMerged, double scanSquares) {
+    }
+
+    /**
+     * Writes a generated scanned building: a grid of 4 m rooms whose walls are rows and columns of
+     * points 20 mm apart (80 % of the points; a door gap in each wall), the rest scattered clutter
+     * from a fixed seed, kept 1 m clear of the robot's home in the first room.
+     *
+     * @param file   where
+     * @param points how many points, at least 1000
+     * @return the file
+     * @throws IOException if it cannot be written
+     */
+    public static Path generate(Path file, int points) throws IOException {
+        List<int[]> xy = new ArrayList<>(points);
+        int wallPoints = points * 4 / 5;
+        int rooms = 1;
+        while (2L * (rooms + 2) * (rooms + 1) * ROOM / RESOLUTION <= wallPoints) {
+            rooms++;
+        }
+        int size = rooms * ROOM;
+        for (int k = 0; k <= rooms && xy.size() < wallPoints; k++) {
+            for (int t = 0; t <= size / RESOLUTION && xy.size() < wallPoints; t++) {
+                int along = t * RESOLUTION;
+                if (along % ROOM > ROOM / 2 - 500 && along % ROOM < ROOM / 2 + 500 && k > 0 && k < rooms) {
+                    continue; // a door
+                }
+                xy.add(new int[] {along, k * ROOM});
+                xy.add(new int[] {k * ROOM, along});
+            }
+        }
+        SplittableRandom random = new SplittableRandom(1);
+        while (xy.size() < points) {
+            int x = random.nextInt(size / RESOLUTION) * RESOLUTION;
+            int y = random.nextInt(size / RESOLUTION) * RESOLUTION;
+            if (Math.hypot(x - ROOM / 2.0, y - ROOM / 2.0) > 1000) {
+                xy.add(new int[] {x, y});
+            }
+        }
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        try (BufferedWriter w = Files.newBufferedWriter(file)) {
+            w.write("2D-Map\nMinPos: 0 0\nMaxPos: " + size + " " + size + "\nNumPoints: " + xy.size()
+                    + "\nResolution: " + RESOLUTION + "\nCairn: RobotHome " + ROOM / 2 + " " + ROOM / 2
+                    + " 0 \"\" ICON \"Home\"\nDATA\n");
+            for (int[] p : xy) {
+                w.write(p[0] + " " + p[1] + "\n");
+            }
+        }
+        return file;
+    }
+
+    /**
+     * @param map  a map file
+     * @param runs how many times to read it, at least 2 (the first warms the JIT)
+     * @return the figures
+     */
+    public static Result run(Path map, int runs) {
+        double first = 0;
+        double best = Double.MAX_VALUE;
+        World world = null;
+        for (int r = 0; r < runs; r++) {
+            long t0 = System.nanoTime();
+            world = WorldReader.read(map);
+            double s = (System.nanoTime() - t0) / 1e9;
+            first = r == 0 ? s : first;
+            best = r == 0 ? best : Math.min(best, s);
+        }
+        double sim = Double.MAX_VALUE;
+        for (int r = 0; r < runs; r++) {
+            long t0 = System.nanoTime();
+            new Simulation(world, 1);
+            sim = Math.min(sim, (System.nanoTime() - t0) / 1e9);
+        }
+        MapFile file = MapReader.read(map);
+        RobotSpec robot = world.robots().get(0);
+        double merged = scan(new GeometryClient(world.obstacles().stream().map(Obstacle::polygon).toList()), robot);
+        double squares = scan(new GeometryClient(squares(file)), robot);
+        return new Result(map.getFileName().toString(), file.pointCount(), file.lineCount(), world.obstacles().size(),
+                best, first, sim, merged, squares);
+    }
+
+    private static List<org.locationtech.jts.geom.Polygon> squares(MapFile file) {
+        double[] p = file.points();
+        double h = file.resolution() > 0 ? file.resolution() / 2 : RESOLUTION / 2.0;
+        List<org.locationtech.jts.geom.Polygon> out = new ArrayList<>();
+        for (int i = 0; i < p.length; i += 2) {
+            out.add(GeometryClient.polygon(p[i] - h, p[i + 1] - h, p[i] + h, p[i + 1] - h, p[i] + h, p[i + 1] + h,
+                    p[i] - h, p[i + 1] + h));
+        }
+        return out;
+    }
+
+    /** @return microseconds per scan from the robot's start, the best of several batches */
+    private static double scan(GeometryClient geometry, RobotSpec robot) {
+        double best = Double.MAX_VALUE;
+        double sink = 0;
+        for (int batch = 0; batch < 10; batch++) {
+            long t0 = System.nanoTime();
+            for (int s = 0; s < 50; s++) {
+                for (int b = 0; b < BEAMS; b++) {
+                    double th = Math.toRadians(robot.th() - 90 + b + s);
+                    sink += geometry.rayRange(robot.x(), robot.y(), th, LASER_RANGE, -1);
+                }
+            }
+            best = Math.min(best, (System.nanoTime() - t0) / 1e3 / 50);
+        }
+        if (sink < 0) {
+            throw new IllegalStateException("negative range");
+        }
+        return best;
+    }
+
+    /**
+     * @param out where
+     * @param r   the figures
+     */
+    public static void print(PrintWriter out, Result r) {
+        out.printf(Locale.ROOT, "map load: %s, %d points and %d lines -> %d obstacles: read into a world in %.0f ms"
+                        + " (first run %.0f ms), simulation built in %.0f ms; a %d-beam laser scan %.0f us"
+                        + " (%.0f us with one square per point)%n",
+                r.map(), r.points(), r.lines(), r.obstacles(), r.readSeconds() * 1e3, r.firstRead() * 1e3,
+                r.simSeconds() * 1e3, BEAMS, r.scanMerged(), r.scanSquares());
+        out.flush();
+    }
+}
