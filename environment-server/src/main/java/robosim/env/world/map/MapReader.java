@@ -117,10 +117,11 @@ public final class MapReader {
     }
 
     private void data(Coordinates into, String line, int lineNo, String rule) {
-        String[] tokens = line.split("\\s+");
-        if (tokens.length != into.width) {
-            throw new MapFileException(file, lineNo, "'" + shorten(line) + "' has " + tokens.length + " value"
-                    + (tokens.length == 1 ? "" : "s") + " but " + rule);
+        String[] tokens = tokens(line, into.width);
+        if (tokens == null) {
+            int count = line.split("\\s+").length;
+            throw new MapFileException(file, lineNo, "'" + shorten(line) + "' has " + count + " value"
+                    + (count == 1 ? "" : "s") + " but " + rule);
         }
         if (into.count() >= MAX_ITEMS) {
             throw new MapFileException(file, lineNo, "a map holds at most " + MAX_ITEMS + " lines and "
@@ -130,6 +131,31 @@ public final class MapReader {
             into.add(Numbers.coordinate(file, lineNo, token, "coordinate"));
         }
         into.lineNumber(lineNo);
+    }
+
+    /** @return the line's {@code count} white-space separated tokens, or null if it has another number of them */
+    private static String[] tokens(String line, int count) {
+        String[] out = new String[count];
+        int n = 0;
+        int i = 0;
+        int len = line.length();
+        while (i < len) {
+            while (i < len && Character.isWhitespace(line.charAt(i))) {
+                i++;
+            }
+            if (i == len) {
+                break;
+            }
+            int start = i;
+            while (i < len && !Character.isWhitespace(line.charAt(i))) {
+                i++;
+            }
+            if (n == count) {
+                return null;
+            }
+            out[n++] = line.substring(start, i);
+        }
+        return n == count ? out : null;
     }
 
     private MapFile result() {

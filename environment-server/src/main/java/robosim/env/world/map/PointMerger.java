@@ -2,7 +2,6 @@ package robosim.env.world.map;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Comparator;
 import java.util.List;
 import robosim.env.world.Obstacle;
 
@@ -30,32 +29,24 @@ final class PointMerger {
     List<Obstacle> merge() {
         int n = lines.length;
         List<Obstacle> out = new ArrayList<>();
-        Integer[] byRow = order(n, 1, 0);
+        int[] byRow = new int[n];
+        for (int i = 0; i < n; i++) {
+            byRow[i] = i;
+        }
+        IndexSort.sort(byRow, xy, 1);
         boolean[] used = new boolean[n];
-        runs(byRow, 1, 0, used, out, false);
-        List<Integer> left = new ArrayList<>();
+        runs(byRow, byRow.length, 1, 0, used, out, false);
+        int[] byColumn = new int[n];
+        int left = 0;
         for (int i : byRow) {
             if (!used[i]) {
-                left.add(i);
+                byColumn[left++] = i;
             }
         }
-        Integer[] byColumn = left.toArray(new Integer[0]);
-        Arrays.sort(byColumn, comparator(0, 1));
-        runs(byColumn, 0, 1, used, out, true);
+        byColumn = Arrays.copyOf(byColumn, left);
+        IndexSort.sort(byColumn, xy, 0);
+        runs(byColumn, left, 0, 1, used, out, true);
         return out;
-    }
-
-    private Integer[] order(int n, int major, int minor) {
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        Arrays.sort(order, comparator(major, minor));
-        return order;
-    }
-
-    private Comparator<Integer> comparator(int major, int minor) {
-        return Comparator.<Integer>comparingDouble(i -> xy[2 * i + major]).thenComparingDouble(i -> xy[2 * i + minor]);
     }
 
     /**
@@ -63,11 +54,11 @@ final class PointMerger {
      * {@code minor}; a run of two or more becomes a rectangle, and with {@code keepSingles} a lone
      * point becomes a square.
      */
-    private void runs(Integer[] order, int major, int minor, boolean[] used, List<Obstacle> out,
+    private void runs(int[] order, int count, int major, int minor, boolean[] used, List<Obstacle> out,
                       boolean keepSingles) {
         int start = 0;
-        for (int k = 1; k <= order.length; k++) {
-            boolean continues = k < order.length
+        for (int k = 1; k <= count; k++) {
+            boolean continues = k < count
                     && xy[2 * order[k] + major] == xy[2 * order[k - 1] + major]
                     && xy[2 * order[k] + minor] - xy[2 * order[k - 1] + minor] <= side;
             if (continues) {

@@ -8,10 +8,10 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.geom.Polygon;
 import robosim.geometry.BodyShape;
-import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.params.ParameterFileException;
 import robosim.protocol.RobotParameters;
@@ -36,7 +36,9 @@ final class RobotPlacer {
     private final Bounds bounds;
     private final List<Obstacle> obstacles;
     private final List<String> obstacleNames;
-    private final GeometryClient geometry;
+    /** Per obstacle its box, min x, min y, max x, max y: most obstacles are ruled out by it alone. */
+    private final double[] boxes;
+    private final List<Polygon> outlines = new ArrayList<>();
     private final GeometryFactory factory = new GeometryFactory();
     private final List<RobotSpec> placed = new ArrayList<>();
     private final Map<Path, RobotParameters> parameterCache = new HashMap<>();
@@ -49,7 +51,26 @@ final class RobotPlacer {
         this.bounds = bounds;
         this.obstacles = obstacles;
         this.obstacleNames = obstacleNames;
-        this.geometry = new GeometryClient(obstacles.stream().map(Obstacle::polygon).toList());
+        // boxes rather than a GeometryClient: building its indexes for a map's 10^5 obstacles costs
+        // more than checking a few robots against every box
+        this.boxes = new double[4 * obstacles.size()];
+        for (int i = 0; i < obstacles.size(); i++) {
+            double[] xy = obstacles.get(i).xy();
+            double minX = Double.POSITIVE_INFINITY;
+            double minY = Double.POSITIVE_INFINITY;
+            double maxX = Double.NEGATIVE_INFINITY;
+            double maxY = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < xy.length; k += 2) {
+                minX = Math.min(minX, xy[k]);
+                maxX = Math.max(maxX, xy[k]);
+                minY = Math.min(minY, xy[k + 1]);
+                maxY = Math.max(maxY, xy[k + 1]);
+            }
+            boxes[4 * i] = minX;
+            boxes[4 * i + 1] = minY;
+            boxes[4 * i + 2] = maxX;
+            boxes[4 * i + 3] = maxY;
+        }
     }
 
     /** @return the robot, checked and placed */
@@ -103,7 +124,7 @@ final class RobotPlacer {
         }
         RobotSpec robot = new RobotSpec(name, type, x, y, th, file, parameters(e, name, params, file), e.line());
         check(robot, e);
-        geometry.addBody(robot.body(), robot.pose());
+        outlines.add(factory.createPolygon(robot.body().ringAt(robot.pose())));
         placed.add(robot);
         return robot;
     }
@@ -149,17 +170,18 @@ final class RobotPlacer {
                         + ": its body must lie inside it");
             }
         }
-        if (!geometry.overlaps(body, pose, -1)) {
-            return;
-        }
+        // touching counts, as for the GeometryClient's overlaps: JTS's intersects
         Polygon outline = factory.createPolygon(ring);
+        Envelope box = outline.getEnvelopeInternal();
         for (int i = 0; i < obstacles.size(); i++) {
-            if (obstacles.get(i).polygon().intersects(outline)) {
+            boolean near = boxes[4 * i] <= box.getMaxX() && boxes[4 * i + 2] >= box.getMinX()
+                    && boxes[4 * i + 1] <= box.getMaxY() && boxes[4 * i + 3] >= box.getMinY();
+            if (near && obstacles.get(i).polygon().intersects(outline)) {
                 throw attributes.error(e, where + " overlaps " + obstacleNames.get(i));
             }
         }
         for (int i = 0; i < placed.size(); i++) {
-            if (geometry.bodyPolygon(i).intersects(outline)) {
+            if (outlines.get(i).intersects(outline)) {
                 throw attributes.error(e, where + " overlaps robot '" + placed.get(i).name() + "' at line "
                         + placed.get(i).line());
             }
