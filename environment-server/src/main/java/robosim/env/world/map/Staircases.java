@@ -7,11 +7,13 @@ import robosim.env.world.Obstacle;
 
 /**
  * Joins runs of points that climb row by row (or column by column) like the steps of a straight
- * wall at a slant: a run whose first point lies one side past the end of the run below it (or whose
- * last point lies one side before its start) continues it, as long as every step stays within one
- * side of the straight line from the first step's start to the last step's end. The steps become
- * one convex obstacle, the hull of their squares, which covers them and strays at most about one
- * side from them; a run that continues nothing stays the rectangle of its squares.
+ * wall at a slant, or lie on each other like the rows of a wall scanned two points thick: a run in
+ * the next row that starts within the run below it or one side past its end, and ends no sooner,
+ * continues it (or the same leftwards), as long as all the steps stay within a band
+ * {@value #BAND} sides wide about the straight line from the first step's start to the last step's
+ * end. The steps become one convex obstacle, the hull of their squares, which covers them and
+ * strays at most about {@value #BAND} sides from them; a run that continues nothing stays the
+ * rectangle of its squares.
  *
  * <p>Runs are kept in (u, v) coordinates: u along the run, v across: x and y for rows, y and x for
  * columns.
@@ -83,13 +85,11 @@ final class Staircases {
                 double v = sorted[3 * last] + side;
                 int next = -1;
                 if (direction >= 0) {
-                    int j = find(sorted, v, 1, sorted[3 * last + 2] + side);
-                    next = j >= 0 && !used[j] ? j : -1;
+                    next = rightOf(sorted, used, v, sorted[3 * last + 1], sorted[3 * last + 2]);
                     direction = next >= 0 ? 1 : direction;
                 }
                 if (next < 0 && direction <= 0) {
-                    int j = find(sorted, v, 2, sorted[3 * last + 1] - side);
-                    next = j >= 0 && !used[j] ? j : -1;
+                    next = leftOf(sorted, used, v, sorted[3 * last + 1], sorted[3 * last + 2]);
                     direction = next >= 0 ? -1 : direction;
                 }
                 if (next < 0 || !straight(sorted, chain, next, direction)) {
@@ -108,45 +108,79 @@ final class Staircases {
         return out;
     }
 
-    /** @return the sorted run at v whose first (field 1) or last (field 2) u is {@code u}, or -1 */
-    private int find(double[] sorted, double v, int field, double u) {
-        int lo = 0;
-        int hi = size - 1;
-        // runs are sorted by v, then by first u; runs of one v do not overlap, so also by last u
-        while (lo <= hi) {
-            int mid = (lo + hi) >>> 1;
-            double mv = sorted[3 * mid];
-            double mu = sorted[3 * mid + field];
-            if (mv < v || mv == v && mu < u) {
-                lo = mid + 1;
-            } else if (mv > v || mu > u) {
-                hi = mid - 1;
-            } else {
-                return mid;
+    /**
+     * @return the first unused run at v that continues a run from {@code from} to {@code to}
+     *         rightwards: it starts within it or one side past its end, and ends no sooner; or -1
+     */
+    private int rightOf(double[] sorted, boolean[] used, double v, double from, double to) {
+        for (int j = lowerBound(sorted, v, from, 1); j < size && sorted[3 * j] == v && sorted[3 * j + 1] <= to + side;
+             j++) {
+            if (!used[j] && sorted[3 * j + 2] >= to) {
+                return j;
             }
         }
         return -1;
     }
 
-    /** @return whether every step of the chain with {@code next} added lies within one side of its line */
+    /**
+     * @return the first unused run at v that continues a run from {@code from} to {@code to}
+     *         leftwards: it ends within it or one side before its start, and starts no later; or -1
+     */
+    private int leftOf(double[] sorted, boolean[] used, double v, double from, double to) {
+        // runs of one v do not overlap, so sorted by first u they are sorted by last u too
+        for (int j = lowerBound(sorted, v, from - side, 2); j < size && sorted[3 * j] == v && sorted[3 * j + 2] <= to;
+             j++) {
+            if (!used[j] && sorted[3 * j + 1] <= from) {
+                return j;
+            }
+        }
+        return -1;
+    }
+
+    /** @return the first sorted run at or after (v, u), comparing u with field 1 (first u) or 2 (last u) */
+    private int lowerBound(double[] sorted, double v, double u, int field) {
+        int lo = 0;
+        int hi = size;
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            double mv = sorted[3 * mid];
+            if (mv < v || mv == v && sorted[3 * mid + field] < u) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
+    }
+
+    /**
+     * @return whether the chain with {@code next} added stays a straight band: every run's ends lie
+     *         within a strip {@value #BAND} sides wide about the line from the first run's start
+     *         to the next run's end (a wall scanned one or two points thick)
+     */
     private boolean straight(double[] sorted, List<Integer> chain, int next, int direction) {
         int first = chain.get(0);
         double u0 = sorted[3 * first + (direction > 0 ? 1 : 2)];
         double v0 = sorted[3 * first];
-        double u1 = sorted[3 * next + (direction > 0 ? 2 : 1)];
-        double slope = (sorted[3 * next] - v0) / (u1 - u0);
+        double du = sorted[3 * next + (direction > 0 ? 2 : 1)] - u0;
+        double dv = sorted[3 * next] - v0;
+        double length = Math.hypot(du, dv);
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
         for (int k = 0; k <= chain.size(); k++) {
             int c = k < chain.size() ? chain.get(k) : next;
-            double v = sorted[3 * c];
+            double v = sorted[3 * c] - v0;
             for (int end = 1; end <= 2; end++) {
-                double expected = v0 + (sorted[3 * c + end] - u0) * slope;
-                if (Math.abs(v - expected) > side) {
-                    return false;
-                }
+                double offset = ((sorted[3 * c + end] - u0) * dv - v * du) / length;
+                lo = Math.min(lo, offset);
+                hi = Math.max(hi, offset);
             }
         }
-        return true;
+        return hi - lo <= BAND * side;
     }
+
+    /** The widest band of steps joined, in sides. */
+    static final double BAND = 2;
 
     /** @return the counter-clockwise hull, x, y, of the chain's squares (a rectangle for one run) */
     private double[] hull(double[] sorted, List<Integer> chain) {
