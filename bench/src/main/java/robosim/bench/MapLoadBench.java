@@ -6,30 +6,31 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.SplittableRandom;
 import robosim.env.core.Simulation;
 import robosim.env.world.Obstacle;
-import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
 import robosim.env.world.map.MapFile;
 import robosim.env.world.map.MapReader;
 import robosim.env.world.xml.WorldReader;
-import robosim.geometry.GeometryClient;
+import robosim.protocol.Command;
 
 /**
  * What a large ARIA map costs: reading it into a world (the map read, points merged, the robot
- * placed), building the simulation on it, and a laser scan against it, with the points merged
- * into row and column runs as the world has them and, for comparison, as one square each.
+ * placed), building the simulation on it, and a simulation step of its robot with sonar and a
+ * laser on, with the points merged as the world has them and, for comparison, as one square each.
  */
 public final class MapLoadBench {
     /** Side of a room of the generated building, mm. */
     private static final int ROOM = 4000;
     /** Spacing of the generated points, mm: the map's resolution, as a scanned map's are. */
     private static final int RESOLUTION = 20;
-    /** Beams of a SICK scan, as the laser bench's. */
-    private static final int BEAMS = 181;
+    /** Steps per timed batch. */
+    private static final int STEPS = 50;
     private static final double LASER_RANGE = 8000;
 
     private MapLoadBench() {
@@ -46,11 +47,11 @@ public final class MapLoadBench {
      * @param firstRead   the first run (the JIT still cold), s
      * @param simSeconds  building the simulation on the world, best run, s
      * @param firstSim    the first run, s
-     * @param scanMerged  one 181-beam scan against the merged world, µs
-     * @param scanSquares the same scan against one square per point, µs
+     * @param stepMerged  one step of the robot turning with its sonar and 181-beam laser on, merged, µs
+     * @param stepSquares the same step with one square per point, µs
      */
     public record Result(String map, int points, int lines, int obstacles, double readSeconds, double firstRead,
-                         double simSeconds, double firstSim, double scanMerged, double scanSquares) {
+                         double simSeconds, double firstSim, double stepMerged, double stepSquares) {
     }
 
     /**
@@ -142,40 +143,42 @@ public final class MapLoadBench {
             sim = r == 0 ? sim : Math.min(sim, s);
         }
         MapFile file = MapReader.read(map);
-        RobotSpec robot = world.robots().get(0);
-        double merged = scan(new GeometryClient(world.obstacles().stream().map(Obstacle::polygon).toList()), robot);
-        double squares = scan(new GeometryClient(squares(file)), robot);
+        double merged = step(world);
+        World squares = new World(world.name(), world.source(), world.width(), world.height(), world.stepMs(),
+                squares(file, world), world.robots(), List.of(), world.noise(), world.comms(), null, world.minX(),
+                world.minY(), world.zones());
         return new Result(map.getFileName().toString(), file.pointCount(), file.lineCount(), world.obstacles().size(),
-                best, first, sim, firstSim, merged, squares);
+                best, first, sim, firstSim, merged, step(squares));
     }
 
-    private static List<org.locationtech.jts.geom.Polygon> squares(MapFile file) {
+    /** The world's lines as they are, and each point as a square of the map's resolution. */
+    private static List<Obstacle> squares(MapFile file, World world) {
+        List<Obstacle> out = new ArrayList<>(world.obstacles().subList(0, file.lineCount()));
         double[] p = file.points();
         double h = file.resolution() > 0 ? file.resolution() / 2 : RESOLUTION / 2.0;
-        List<org.locationtech.jts.geom.Polygon> out = new ArrayList<>();
+        int[] lines = file.pointLines();
         for (int i = 0; i < p.length; i += 2) {
-            out.add(GeometryClient.polygon(p[i] - h, p[i + 1] - h, p[i] + h, p[i + 1] - h, p[i] + h, p[i + 1] + h,
-                    p[i] - h, p[i + 1] + h));
+            out.add(new Obstacle(new double[] {p[i] - h, p[i + 1] - h, p[i] + h, p[i + 1] - h, p[i] + h,
+                p[i + 1] + h, p[i] - h, p[i + 1] + h}, 500, lines[i / 2]));
         }
         return out;
     }
 
-    /** @return microseconds per scan from the robot's start, the best of several batches */
-    private static double scan(GeometryClient geometry, RobotSpec robot) {
+    /** @return microseconds per step of the robots turning in place with sonar and laser on, best of several batches */
+    private static double step(World world) {
+        Simulation sim = new Simulation(world, 1);
+        Map<String, List<Command>> first = new HashMap<>();
+        for (String name : sim.robotNames()) {
+            first.put(name, List.of(new Command.SetRotVel(20), new Command.ConfigureLaser(true, 1, LASER_RANGE)));
+        }
+        sim.step(first);
         double best = Double.MAX_VALUE;
-        double sink = 0;
         for (int batch = 0; batch < 10; batch++) {
             long t0 = System.nanoTime();
-            for (int s = 0; s < 50; s++) {
-                for (int b = 0; b < BEAMS; b++) {
-                    double th = Math.toRadians(robot.th() - 90 + b + s);
-                    sink += geometry.rayRange(robot.x(), robot.y(), th, LASER_RANGE, -1);
-                }
+            for (int s = 0; s < STEPS; s++) {
+                sim.step(Map.of());
             }
-            best = Math.min(best, (System.nanoTime() - t0) / 1e3 / 50);
-        }
-        if (sink < 0) {
-            throw new IllegalStateException("negative range");
+            best = Math.min(best, (System.nanoTime() - t0) / 1e3 / STEPS);
         }
         return best;
     }
@@ -186,10 +189,10 @@ public final class MapLoadBench {
      */
     public static void print(PrintWriter out, Result r) {
         out.printf(Locale.ROOT, "map load: %s, %d points and %d lines -> %d obstacles: read into a world in %.0f ms"
-                        + " (first run %.0f ms), simulation built in %.0f ms (first run %.0f ms); a %d-beam laser scan"
-                        + " %.0f us (%.0f us with one square per point)%n",
+                        + " (first run %.0f ms), simulation built in %.0f ms (first run %.0f ms); a step of its robot"
+                        + " turning with sonar and a 181-beam laser %.0f us (%.0f us with one square per point)%n",
                 r.map(), r.points(), r.lines(), r.obstacles(), r.readSeconds() * 1e3, r.firstRead() * 1e3,
-                r.simSeconds() * 1e3, r.firstSim() * 1e3, BEAMS, r.scanMerged(), r.scanSquares());
+                r.simSeconds() * 1e3, r.firstSim() * 1e3, r.stepMerged(), r.stepSquares());
         out.flush();
     }
 }
