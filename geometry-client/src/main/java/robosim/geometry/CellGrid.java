@@ -159,6 +159,88 @@ final class CellGrid {
         }
     }
 
+    /** What {@link #walkRay} shows each cell a ray crosses. */
+    interface RayCellVisitor {
+        /**
+         * @param ids   the ids of the cell's items (only the first {@code count} count)
+         * @param count how many
+         * @param exit  the distance along the ray at which it leaves the cell
+         * @return whether to stop walking
+         */
+        boolean visit(int[] ids, int count, double exit);
+    }
+
+    /**
+     * Visits the cells a ray crosses within {@code maxT}, nearest first (Amanatides and Woo's
+     * walk), so that a caller looking for the nearest hit can stop once its best lies before the
+     * cell it has come to. Only the part of the ray inside the grid is walked: every item lies
+     * inside it, so nothing outside can be hit. Cells without items are passed over.
+     *
+     * @param ox      ray origin x, mm
+     * @param oy      ray origin y, mm
+     * @param dx      unit direction x
+     * @param dy      unit direction y
+     * @param maxT    how far along the ray to look, mm
+     * @param visitor told each cell with items, nearest first
+     */
+    void walkRay(double ox, double oy, double dx, double dy, double maxT, RayCellVisitor visitor) {
+        double gx1 = minX + nx * cell;
+        double gy1 = minY + ny * cell;
+        double t0 = 0;
+        double t1 = maxT;
+        if (dx == 0) {
+            if (ox < minX || ox > gx1) {
+                return;
+            }
+        } else {
+            double a = (minX - ox) / dx;
+            double b = (gx1 - ox) / dx;
+            t0 = Math.max(t0, Math.min(a, b));
+            t1 = Math.min(t1, Math.max(a, b));
+        }
+        if (dy == 0) {
+            if (oy < minY || oy > gy1) {
+                return;
+            }
+        } else {
+            double a = (minY - oy) / dy;
+            double b = (gy1 - oy) / dy;
+            t0 = Math.max(t0, Math.min(a, b));
+            t1 = Math.min(t1, Math.max(a, b));
+        }
+        if (t0 > t1) {
+            return;
+        }
+        int cx = column(ox + dx * t0);
+        int cy = row(oy + dy * t0);
+        int stepX = dx > 0 ? 1 : -1;
+        int stepY = dy > 0 ? 1 : -1;
+        double nextX = dx == 0 ? Double.POSITIVE_INFINITY : (minX + (cx + (dx > 0 ? 1 : 0)) * cell - ox) / dx;
+        double nextY = dy == 0 ? Double.POSITIVE_INFINITY : (minY + (cy + (dy > 0 ? 1 : 0)) * cell - oy) / dy;
+        double deltaX = dx == 0 ? Double.POSITIVE_INFINITY : cell / Math.abs(dx);
+        double deltaY = dy == 0 ? Double.POSITIVE_INFINITY : cell / Math.abs(dy);
+        while (true) {
+            double exit = Math.min(Math.min(nextX, nextY), t1);
+            int c = cy * nx + cx;
+            if (counts[c] > 0 && visitor.visit(cells[c], counts[c], exit)) {
+                return;
+            }
+            if (exit >= t1) {
+                return;
+            }
+            if (nextX < nextY) {
+                cx += stepX;
+                nextX += deltaX;
+            } else {
+                cy += stepY;
+                nextY += deltaY;
+            }
+            if (cx < 0 || cx >= nx || cy < 0 || cy >= ny) {
+                return;
+            }
+        }
+    }
+
     /**
      * The items that may intersect an envelope.
      *

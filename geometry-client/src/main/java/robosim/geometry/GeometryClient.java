@@ -282,10 +282,7 @@ public final class GeometryClient {
         double dx = Math.cos(th);
         double dy = Math.sin(th);
         Envelope env = new Envelope(x, x + dx * maxRange, y, y + dy * maxRange);
-        double best = maxRange;
-        for (Segment s : edgesNear(env)) {
-            best = Math.min(best, s.rayHit(x, y, dx, dy));
-        }
+        double best = edges.rayRange(x, y, dx, dy, maxRange);
         for (Bodies.Body b : bodies.near(env, ignoreId)) {
             for (Segment s : b.segments) {
                 best = Math.min(best, s.rayHit(x, y, dx, dy));

@@ -88,4 +88,35 @@ final class ObstacleEdges {
         }
         return out;
     }
+
+    /**
+     * The distance along a ray to the nearest edge, walking the grid's cells outward from the
+     * origin and stopping at the first cell that begins beyond the nearest hit so far: a ray in a
+     * scanned map with 10^5 edges looks at the few near its path, not at every edge in its box.
+     * The answer is the minimum over every edge the ray meets, as a scan of all would give.
+     *
+     * @param ox       ray origin x, mm
+     * @param oy       ray origin y, mm
+     * @param dx       unit direction x
+     * @param dy       unit direction y
+     * @param maxRange the farthest distance looked at, mm
+     * @return the distance, or {@code maxRange} if no edge is nearer
+     */
+    double rayRange(double ox, double oy, double dx, double dy, double maxRange) {
+        if (grid == null) {
+            return maxRange;
+        }
+        double[] best = {maxRange};
+        grid.walkRay(ox, oy, dx, dy, maxRange, (ids, count, exit) -> {
+            for (int i = 0; i < count; i++) {
+                best[0] = Math.min(best[0], edges[ids[i]].rayHit(ox, oy, dx, dy));
+            }
+            // a hit in a later cell lies at or beyond this one's exit; the margin absorbs rounding
+            return best[0] < exit - EXIT_MARGIN;
+        });
+        return best[0];
+    }
+
+    /** mm: far below any distance a sensor reports, far above the rounding of a cell's exit. */
+    private static final double EXIT_MARGIN = 1e-6;
 }

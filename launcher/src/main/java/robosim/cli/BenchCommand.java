@@ -23,6 +23,7 @@ import robosim.bench.CoreBench;
 import robosim.bench.Floors;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
+import robosim.bench.MapLoadBench;
 import robosim.bench.StepRateBench;
 import robosim.env.net.ServerOptions;
 import robosim.hw.EnvironmentLinks;
@@ -38,6 +39,8 @@ final class BenchCommand implements Callable<Integer> {
     static final int MAX_ROBOTS = 5000;
     /** The most client JVMs one measurement may start. */
     static final int MAX_CLIENTS = 64;
+    /** The most points of a generated map. */
+    static final int MAX_MAP_POINTS = 5_000_000;
 
     /** The Environment's per-connection lines, quieted while measuring: thousands of them say nothing. */
     private static final Logger NET_LOG = Logger.getLogger("robosim.env.net");
@@ -95,6 +98,17 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--floors", description = "instead: what a step cannot go below here, measured without RoboSim:"
             + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
     boolean floors;
+
+    @Option(names = "--map-load", description = "instead: time reading a generated scanned map of --map-points points"
+            + " (or --map FILE) into a world, building the simulation on it, and a laser scan against it")
+    boolean mapLoad;
+
+    @Option(names = "--map-points", defaultValue = "100000", paramLabel = "N",
+            description = "points of the map --map-load generates, 1000 to " + MAX_MAP_POINTS + "; default ${DEFAULT-VALUE}")
+    int mapPoints;
+
+    @Option(names = "--map", paramLabel = "FILE", description = "an ARIA map for --map-load to time instead of a generated one")
+    Path map;
 
     @Option(names = "--heap-every", defaultValue = "0", paramLabel = "N",
             description = "in each run over TCP, sample every N steps each JVM's heap after its last garbage collection"
@@ -171,6 +185,17 @@ final class BenchCommand implements Callable<Integer> {
         if (floors) {
             for (int r = 0; r < repeat; r++) {
                 Floors.print(o, Floors.measure(50_000));
+            }
+            return 0;
+        }
+        if (mapLoad) {
+            if (mapPoints < 1000 || mapPoints > MAX_MAP_POINTS) {
+                throw new ParameterException(spec.commandLine(),
+                        mapPoints + " was supplied for --map-points: it must be from 1000 to " + MAX_MAP_POINTS);
+            }
+            Path file = map != null ? map : MapLoadBench.generate(out.resolve("scan-" + mapPoints + ".map"), mapPoints);
+            for (int r = 0; r < repeat; r++) {
+                MapLoadBench.print(o, MapLoadBench.run(file, 5));
             }
             return 0;
         }

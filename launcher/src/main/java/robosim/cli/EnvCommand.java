@@ -19,6 +19,7 @@ import robosim.env.net.Departure;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
+import robosim.env.world.RobotRequest;
 import robosim.env.world.World;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.env.world.xml.WorldFileException;
@@ -34,8 +35,13 @@ final class EnvCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(paramLabel = "WORLD", description = "the world file (XML)")
+    @Parameters(paramLabel = "WORLD", description = "the world file (XML), or an ARIA map (.map)")
     Path world;
+
+    @Option(names = "--robot", paramLabel = "TYPE[:NAME]", description = "add a robot at the world's next home"
+            + " (a map's RobotHome cairns); TYPE is a shipped parameter file (p3dx, p3at, scout) or a path;"
+            + " NAME defaults to TYPE_1, TYPE_2, ...; repeatable; a map without any gets one p3dx")
+    List<String> robots = List.of();
 
     @Option(names = "--robot-port", defaultValue = "5000", paramLabel = "PORT", description = OptionTexts.ROBOT_PORT
             + "; where robots connect (0: any free port); default ${DEFAULT-VALUE}")
@@ -87,13 +93,26 @@ final class EnvCommand implements Callable<Integer> {
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
 
+    /**
+     * @return the robots asked for with {@code --robot}, in order
+     * @throws ParameterException if one is not {@code TYPE} or {@code TYPE:NAME}
+     */
+    List<RobotRequest> requests() {
+        try {
+            return robots.stream().map(RobotRequest::parse).toList();
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+    }
+
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         World w;
+        List<RobotRequest> requests = requests();
         try {
-            w = WorldReader.read(world);
+            w = WorldReader.read(world, requests);
         } catch (WorldFileException e) {
             err.println("robosim env: " + e.getMessage());
             return 1;

@@ -1,26 +1,53 @@
 package robosim.protocol;
 
+import com.fasterxml.jackson.annotation.JsonSetter;
+import com.fasterxml.jackson.annotation.Nulls;
 import java.util.List;
 
 /**
  * The static world, sent once to every viewer that attaches.
  *
  * @param name      the world's name
- * @param width     world width in mm (x from 0)
- * @param height    world height in mm (y from 0)
+ * @param width     world width in mm (x from minX)
+ * @param height    world height in mm (y from minY)
  * @param stepMs    step length in simulated ms
  * @param obstacles walls and obstacles as polygons
  * @param robots    the robots of the world and their bodies
  * @param heat      the heat sources
+ * @param minX      the world's left edge, mm: 0 for a world file, a map's own for a map
+ * @param minY      the world's bottom edge, mm
+ * @param zones     a map's forbidden lines and areas, which are not solid
+ *
+ * <p>A description without {@code minX}, {@code minY} or {@code zones}, as recordings made before
+ * maps hold them, reads as a world from (0, 0) without zones.
  */
 public record WorldDescription(String name, double width, double height, int stepMs,
-                               List<Obstacle> obstacles, List<RobotInfo> robots, List<HeatSource> heat)
+                               List<Obstacle> obstacles, List<RobotInfo> robots, List<HeatSource> heat,
+                               @JsonSetter(nulls = Nulls.AS_EMPTY) double minX,
+                               @JsonSetter(nulls = Nulls.AS_EMPTY) double minY, List<Zone> zones)
         implements Message {
-    /** Copies the lists so the record stays immutable. */
+    /** Copies the lists so the record stays immutable; an absent list of zones reads as none. */
     public WorldDescription {
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
+        zones = zones == null ? List.of() : List.copyOf(zones);
+    }
+
+    /**
+     * A world from (0, 0) without forbidden zones.
+     *
+     * @param name      the world's name
+     * @param width     mm
+     * @param height    mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and obstacles
+     * @param robots    robots
+     * @param heat      the heat sources
+     */
+    public WorldDescription(String name, double width, double height, int stepMs,
+                            List<Obstacle> obstacles, List<RobotInfo> robots, List<HeatSource> heat) {
+        this(name, width, height, stepMs, obstacles, robots, heat, 0, 0, List.of());
     }
 
     /**
@@ -37,6 +64,15 @@ public record WorldDescription(String name, double width, double height, int ste
                             List<Obstacle> obstacles, List<RobotInfo> robots) {
         this(name, width, height, stepMs, obstacles, robots, List.of());
     }
+
+    /**
+     * A forbidden line or area of a map: drawn, never solid.
+     *
+     * @param area  whether it is an area (four corners) rather than a line (two ends)
+     * @param xy    the points x0, y0, x1, y1, ...
+     * @param label its label, possibly empty
+     */
+    public record Zone(boolean area, double[] xy, String label) { }
 
     /**
      * A heat source.

@@ -95,6 +95,25 @@ class MessageCodecTest {
 
     @ParameterizedTest
     @EnumSource(Format.class)
+    void worldDescriptionRoundTripsAMapsOriginAndZones(Format format) throws FrameException {
+        WorldDescription map = new WorldDescription("lab", 10000, 8000, 100, List.of(), List.of(), List.of(),
+                -4000, -3000, List.of(new WorldDescription.Zone(true, new double[] {0, 0, 10, 0, 10, 10, 0, 10}, "keep out")));
+
+        assertDeepEquals(map, roundTrip(format, map));
+    }
+
+    @Test
+    void aWorldDescriptionWithoutOriginOrZonesReadsAsAWorldFromZero() throws FrameException {
+        // as recordings made before maps hold it
+        String old = "{\"type\":\"world\",\"name\":\"w\",\"width\":100.0,\"height\":50.0,\"stepMs\":100,"
+                + "\"obstacles\":[],\"robots\":[],\"heat\":[]}";
+        WorldDescription w = (WorldDescription) new MessageCodec(Format.JSON).decode(old.getBytes(StandardCharsets.UTF_8));
+
+        assertEquals(List.of(0.0, 0.0, List.of()), List.of(w.minX(), w.minY(), w.zones()));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
     void snapshotRoundTripsEveryRobotView(Format format) throws FrameException {
         Snapshot snapshot = Messages.snapshot();
 

@@ -14,6 +14,7 @@ import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
 import robosim.comms.Positions;
+import robosim.env.world.ForbiddenZone;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
@@ -443,7 +444,12 @@ public final class Simulation {
         for (HeatSource h : world.heat()) {
             heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity()));
         }
-        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat);
+        List<WorldDescription.Zone> zones = new ArrayList<>();
+        for (ForbiddenZone z : world.zones()) {
+            zones.add(new WorldDescription.Zone(z.area(), z.xy(), z.label()));
+        }
+        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat,
+                world.minX(), world.minY(), zones);
     }
 
     /**

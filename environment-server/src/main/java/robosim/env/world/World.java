@@ -7,8 +7,10 @@ import robosim.comms.CommsSettings;
 
 /**
  * A world as read from a world file: its size, the length of one time step, the static
- * obstacles and the robots that must connect before the run starts. Coordinates are in mm with
- * the origin at the lower left corner of the world, x to the right and y up.
+ * obstacles and the robots that must connect before the run starts. Coordinates are in mm, x to
+ * the right and y up. The world covers x from {@code minX} to {@code minX + width} and y from
+ * {@code minY} to {@code minY + height}: a world file's world starts at (0, 0); a map's world
+ * keeps the map's own coordinates, which may be negative.
  *
  * @param name      the world's name, from the {@code name} attribute
  * @param source    the file it was read from
@@ -20,12 +22,16 @@ import robosim.comms.CommsSettings;
  * @param heat      the heat sources, in file order
  * @param noise     the sensor and odometry noise of the world (none by default)
  * @param comms     how messages travel between robots at the start of a run
- * @param gold      the gold GoldFinder's robots look for (also one of the heat sources), or null
  *                  ({@link CommsSettings#DEFAULT} by default)
+ * @param gold      the gold GoldFinder's robots look for (also one of the heat sources), or null
+ * @param minX      the world's left edge, mm
+ * @param minY      the world's bottom edge, mm
+ * @param zones     the forbidden lines and areas of a map: kept for robot programs and viewers,
+ *                  not solid
  */
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
-                    CommsSettings comms, HeatSource gold) {
+                    CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones) {
     /** The widest and highest world a world file may describe, mm (100 km). */
     public static final double MAX_SIZE = 100_000_000;
 
@@ -42,7 +48,23 @@ public record World(String name, Path source, double width, double height, int s
                     + " has places for 1 to " + robots.size());
         }
         return new World(name, source, width, height, stepMs, obstacles, robots.subList(0, count), heat, noise,
-                comms, gold);
+                comms, gold, minX, minY, zones);
+    }
+
+    /**
+     * The same world with other robots.
+     *
+     * @param others the robots, already placed and checked
+     * @return the world
+     */
+    public World withRobots(List<RobotSpec> others) {
+        return new World(name, source, width, height, stepMs, obstacles, others, heat, noise, comms, gold, minX, minY,
+                zones);
+    }
+
+    /** @return the world's extent */
+    public Bounds bounds() {
+        return new Bounds(minX, minY, width, height);
     }
 
     /** Copies the lists so the record stays immutable. */
@@ -50,7 +72,29 @@ public record World(String name, Path source, double width, double height, int s
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
+        zones = List.copyOf(zones);
         Objects.requireNonNull(comms, "comms");
+    }
+
+    /**
+     * A world that starts at (0, 0) and has no forbidden zones, as a world file describes it.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the sensor and odometry noise
+     * @param comms     how messages travel between robots
+     * @param gold      the gold, or null
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
+                 CommsSettings comms, HeatSource gold) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, 0, 0, List.of());
     }
 
     /**

@@ -3,15 +3,17 @@ package robosim.viewer.draw;
 import robosim.protocol.WorldDescription;
 
 /**
- * Maps world coordinates (mm, +y up, origin at the lower left) to image pixels (+y down, origin
- * at the upper left) at one uniform scale, so that the image keeps the world's aspect ratio.
+ * Maps world coordinates (mm, +y up) to image pixels (+y down, origin at the upper left) at one
+ * uniform scale, so that the image keeps the world's aspect ratio. The world's upper left corner,
+ * ({@code minX}, {@code minY + height}), maps to the image's: a map's world need not start at (0, 0).
  *
- * @param scale       pixels per mm, greater than 0
- * @param width       image width in pixels
- * @param height      image height in pixels
- * @param worldHeight world height in mm, the y that maps to the image's top edge
+ * @param scale  pixels per mm, greater than 0
+ * @param width  image width in pixels
+ * @param height image height in pixels
+ * @param left   the world x, mm, that maps to the image's left edge
+ * @param top    the world y, mm, that maps to the image's top edge
  */
-public record ViewTransform(double scale, int width, int height, double worldHeight) {
+public record ViewTransform(double scale, int width, int height, double left, double top) {
     /** The tallest image drawn, so that a very narrow world cannot exhaust the heap. */
     public static final int MAX_HEIGHT = 16384;
 
@@ -37,7 +39,7 @@ public record ViewTransform(double scale, int width, int height, double worldHei
                     + world.height() + " mm drawn " + width + " pixels wide would be " + height
                     + " pixels high: the height must be at most " + MAX_HEIGHT);
         }
-        return new ViewTransform(scale, width, (int) height, world.height());
+        return new ViewTransform(scale, width, (int) height, world.minX(), world.minY() + world.height());
     }
 
     private static void positive(String what, double value, String world) {
@@ -52,7 +54,7 @@ public record ViewTransform(double scale, int width, int height, double worldHei
      * @return image x in pixels
      */
     public double px(double x) {
-        return x * scale;
+        return (x - left) * scale;
     }
 
     /**
@@ -60,6 +62,6 @@ public record ViewTransform(double scale, int width, int height, double worldHei
      * @return image y in pixels
      */
     public double py(double y) {
-        return (worldHeight - y) * scale;
+        return (top - y) * scale;
     }
 }

@@ -40,6 +40,9 @@ public final class WorldRenderer {
     /** The colour of the grid's lines. */
     public static final Color GRID = new Color(214, 218, 226);
 
+    /** The dashed outline of a map's forbidden lines and areas. */
+    public static final Color FORBIDDEN = new Color(200, 40, 40);
+    /** The outline of a robot's body. */
     static final Color OUTLINE = new Color(20, 20, 20);
     static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
     private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
@@ -209,22 +212,51 @@ public final class WorldRenderer {
             }
         }
         heat.drawMarkers(g, view, world.heat());
+        drawZones(g, view, world);
         // A 2 px stroke centred 1 px inside the edge covers exactly the outermost two pixels.
         g.setColor(BORDER);
         g.setStroke(new BasicStroke(2f));
         g.draw(new Rectangle2D.Double(1, 1, view.width() - 2.0, view.height() - 2.0));
     }
 
-    /** Light lines at every multiple of the grid's spacing, from the world's origin. */
+    /** Light lines at every multiple of the grid's spacing: through (0, 0), wherever the world starts. */
     private static void drawGrid(Graphics2D g, ViewTransform view, WorldDescription world) {
         double spacing = ScaleBar.gridSpacing(Math.max(world.width(), world.height()));
+        double x0 = world.minX();
+        double y0 = world.minY();
+        double x1 = x0 + world.width();
+        double y1 = y0 + world.height();
         g.setColor(GRID);
         g.setStroke(new BasicStroke(1f));
-        for (double x = spacing; x < world.width(); x += spacing) {
-            g.draw(new Line2D.Double(view.px(x), view.py(0), view.px(x), view.py(world.height())));
+        for (double x = (Math.floor(x0 / spacing) + 1) * spacing; x < x1; x += spacing) {
+            g.draw(new Line2D.Double(view.px(x), view.py(y0), view.px(x), view.py(y1)));
         }
-        for (double y = spacing; y < world.height(); y += spacing) {
-            g.draw(new Line2D.Double(view.px(0), view.py(y), view.px(world.width()), view.py(y)));
+        for (double y = (Math.floor(y0 / spacing) + 1) * spacing; y < y1; y += spacing) {
+            g.draw(new Line2D.Double(view.px(x0), view.py(y), view.px(x1), view.py(y)));
+        }
+    }
+
+    /** A map's forbidden lines and areas: dashed red outlines, drawn over the floor, never solid. */
+    private static void drawZones(Graphics2D g, ViewTransform view, WorldDescription world) {
+        if (world.zones().isEmpty()) {
+            return;
+        }
+        g.setColor(FORBIDDEN);
+        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        for (WorldDescription.Zone zone : world.zones()) {
+            double[] xy = zone.xy();
+            if (xy == null || xy.length < 4) {
+                continue;
+            }
+            Path2D path = new Path2D.Double();
+            path.moveTo(view.px(xy[0]), view.py(xy[1]));
+            for (int i = 2; i + 1 < xy.length; i += 2) {
+                path.lineTo(view.px(xy[i]), view.py(xy[i + 1]));
+            }
+            if (zone.area()) {
+                path.closePath();
+            }
+            g.draw(path);
         }
     }
 

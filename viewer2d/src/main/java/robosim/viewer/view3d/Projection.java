@@ -85,8 +85,8 @@ public final class Projection {
             }
         }
         double[] box = {Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
-        for (double x : new double[] {0, world.width()}) {
-            for (double y : new double[] {0, world.height()}) {
+        for (double x : new double[] {world.minX(), world.minX() + world.width()}) {
+            for (double y : new double[] {world.minY(), world.minY() + world.height()}) {
                 for (double z : new double[] {0, top}) {
                     box[0] = Math.min(box[0], sx(x, y, z));
                     box[1] = Math.min(box[1], sy(x, y, z));

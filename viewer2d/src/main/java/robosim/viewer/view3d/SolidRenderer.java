@@ -93,8 +93,11 @@ public final class SolidRenderer implements SnapshotPainter {
             g.setColor(SKY);
             g.fill(new Rectangle2D.Double(0, 0, p.width(), p.height()));
             g.setColor(Shading.shade(WorldRenderer.BACKGROUND, UP, light));
-            g.fill(path(p, new double[] {0, 0, 0, world.width(), 0, 0, world.width(), world.height(), 0,
-                0, world.height(), 0}));
+            double x0 = world.minX();
+            double y0 = world.minY();
+            double x1 = x0 + world.width();
+            double y1 = y0 + world.height();
+            g.fill(path(p, new double[] {x0, y0, 0, x1, y0, 0, x1, y1, 0, x0, y1, 0}));
             drawHeat(g, p, world.heat());
             if (trails != null && options.showTrails()) {
                 drawTrails(g, p, world, snapshot, trails);

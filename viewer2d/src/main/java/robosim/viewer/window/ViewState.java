@@ -119,7 +119,7 @@ public final class ViewState {
         ViewTransform base = ViewTransform.fit(world, fitWidth(world, width, height));
         ViewTransform view = zoom == 1 ? base : new ViewTransform(base.scale() * zoom,
                 (int) Math.ceil(world.width() * base.scale() * zoom), (int) Math.ceil(world.height() * base.scale() * zoom),
-                world.height());
+                base.left(), base.top());
         RobotView robot = followed(snapshot);
         if (robot != null) {
             return new Placement(view, width / 2.0 - view.px(robot.x()), height / 2.0 - view.py(robot.y()));

@@ -128,9 +128,11 @@ public final class WorldView extends JComponent {
         }
         ViewState.Placement place = state.place(world, model.snapshot(), getWidth(), worldHeight(world));
         double scale = place.view().scale();
-        double wx = (x - place.originX()) / scale;
-        double wy = world.height() - (y - place.originY()) / scale;
-        return wx < 0 || wy < 0 || wx > world.width() || wy > world.height() ? null : new double[] {wx, wy};
+        double wx = place.view().left() + (x - place.originX()) / scale;
+        double wy = place.view().top() - (y - place.originY()) / scale;
+        boolean off = wx < world.minX() || wy < world.minY() || wx > world.minX() + world.width()
+                || wy > world.minY() + world.height();
+        return off ? null : new double[] {wx, wy};
     }
 
     /**

@@ -56,6 +56,16 @@ final class ObstacleFactory {
         return walls;
     }
 
+    /** @return the obstacle moved by (dx, dy): boundary walls of a world that does not start at (0, 0) */
+    static Obstacle moved(Obstacle o, double dx, double dy) {
+        double[] xy = o.xy();
+        for (int i = 0; i < xy.length; i += 2) {
+            xy[i] += dx;
+            xy[i + 1] += dy;
+        }
+        return new Obstacle(xy, o.height(), o.line());
+    }
+
     private static double[] rectangle(double x1, double y1, double x2, double y2, double thickness) {
         double length = Math.hypot(x2 - x1, y2 - y1);
         double h = thickness / 2;

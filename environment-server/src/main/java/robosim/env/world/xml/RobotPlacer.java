@@ -8,15 +8,18 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.geom.Polygon;
 import robosim.geometry.BodyShape;
-import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.params.ParameterFileException;
 import robosim.protocol.RobotParameters;
 import robosim.params.RobotParametersReader;
+import robosim.env.world.Bounds;
 import robosim.env.world.Obstacle;
+import robosim.env.world.RobotRequest;
+import robosim.params.RobotParameterFiles;
 import robosim.env.world.RobotSpec;
 import robosim.protocol.RobotHello;
 
@@ -30,11 +33,12 @@ final class RobotPlacer {
     static final List<String> TYPES = List.of("pioneer", "scout");
 
     private final Attributes attributes;
-    private final double width;
-    private final double height;
+    private final Bounds bounds;
     private final List<Obstacle> obstacles;
     private final List<String> obstacleNames;
-    private final GeometryClient geometry;
+    /** Per obstacle its box, min x, min y, max x, max y: most obstacles are ruled out by it alone. */
+    private final double[] boxes;
+    private final List<Polygon> outlines = new ArrayList<>();
     private final GeometryFactory factory = new GeometryFactory();
     private final List<RobotSpec> placed = new ArrayList<>();
     private final Map<Path, RobotParameters> parameterCache = new HashMap<>();
@@ -42,19 +46,69 @@ final class RobotPlacer {
     /**
      * @param obstacleNames how messages name each obstacle, in the order of {@code obstacles}
      */
-    RobotPlacer(Attributes attributes, double width, double height, List<Obstacle> obstacles,
-                List<String> obstacleNames) {
+    RobotPlacer(Attributes attributes, Bounds bounds, List<Obstacle> obstacles, List<String> obstacleNames) {
         this.attributes = attributes;
-        this.width = width;
-        this.height = height;
+        this.bounds = bounds;
         this.obstacles = obstacles;
         this.obstacleNames = obstacleNames;
-        this.geometry = new GeometryClient(obstacles.stream().map(Obstacle::polygon).toList());
+        // boxes rather than a GeometryClient: building its indexes for a map's 10^5 obstacles costs
+        // more than checking a few robots against every box
+        this.boxes = new double[4 * obstacles.size()];
+        for (int i = 0; i < obstacles.size(); i++) {
+            double[] xy = obstacles.get(i).xy();
+            double minX = Double.POSITIVE_INFINITY;
+            double minY = Double.POSITIVE_INFINITY;
+            double maxX = Double.NEGATIVE_INFINITY;
+            double maxY = Double.NEGATIVE_INFINITY;
+            for (int k = 0; k < xy.length; k += 2) {
+                minX = Math.min(minX, xy[k]);
+                maxX = Math.max(maxX, xy[k]);
+                minY = Math.min(minY, xy[k + 1]);
+                maxY = Math.max(maxY, xy[k + 1]);
+            }
+            boxes[4 * i] = minX;
+            boxes[4 * i + 1] = minY;
+            boxes[4 * i + 2] = maxX;
+            boxes[4 * i + 3] = maxY;
+        }
     }
 
     /** @return the robot, checked and placed */
     RobotSpec place(RobotElement e) {
         String name = attributes.text(e, "name", e.name);
+        String type = attributes.text(e, "type", e.type);
+        double x = attributes.number(e, "x", e.x);
+        double y = attributes.number(e, "y", e.y);
+        double th = attributes.number(e, "th", e.th, 0);
+        String params = attributes.text(e, "params", e.params);
+        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
+        return place(e, name, type, x, y, th, params, file);
+    }
+
+    /**
+     * Places a robot asked for with {@code --robot}; its problems are reported with line 0, as the
+     * option's, not the file's.
+     *
+     * @param request the option
+     * @param name    the robot's name
+     * @param pose    where it starts
+     * @return the robot, checked and placed
+     */
+    RobotSpec place(RobotRequest request, String name, Pose2D pose) {
+        Element option = new RobotElement();
+        Path file;
+        try {
+            file = RobotParameterFiles.resolve(request.type()).toAbsolutePath().normalize();
+        } catch (IllegalArgumentException ex) {
+            throw attributes.error(option, "--robot " + request + ": " + ex.getMessage());
+        }
+        String type = "scout".equalsIgnoreCase(parameters(option, name, request.type(), file).robotClass())
+                ? "scout" : "pioneer";
+        return place(option, name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), request.type(), file);
+    }
+
+    private RobotSpec place(Element e, String name, String type, double x, double y, double th, String params,
+                            Path file) {
         if (!RobotHello.validName(name)) {
             throw attributes.error(e, RobotHello.NAME_RULE + "; " + RobotHello.quoted(name) + " is not");
         }
@@ -64,24 +118,18 @@ final class RobotPlacer {
                         + other.line());
             }
         }
-        String type = attributes.text(e, "type", e.type);
         if (!TYPES.contains(type)) {
             throw attributes.error(e, "robot '" + name + "' has unknown type '" + type + "'; known types: "
                     + String.join(", ", TYPES));
         }
-        double x = attributes.number(e, "x", e.x);
-        double y = attributes.number(e, "y", e.y);
-        double th = attributes.number(e, "th", e.th, 0);
-        String params = attributes.text(e, "params", e.params);
-        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
         RobotSpec robot = new RobotSpec(name, type, x, y, th, file, parameters(e, name, params, file), e.line());
         check(robot, e);
-        geometry.addBody(robot.body(), robot.pose());
+        outlines.add(factory.createPolygon(robot.body().ringAt(robot.pose())));
         placed.add(robot);
         return robot;
     }
 
-    private RobotParameters parameters(RobotElement e, String name, String params, Path file) {
+    private RobotParameters parameters(Element e, String name, String params, Path file) {
         RobotParameters known = parameterCache.get(file);
         if (known != null) {
             return known;
@@ -110,29 +158,30 @@ final class RobotPlacer {
         }
     }
 
-    private void check(RobotSpec robot, RobotElement e) {
+    private void check(RobotSpec robot, Element e) {
         BodyShape body = robot.body();
         Pose2D pose = robot.pose();
         String where = "robot '" + robot.name() + "' at (" + Attributes.format(robot.x()) + ", "
                 + Attributes.format(robot.y()) + ")";
         Coordinate[] ring = body.ringAt(pose);
         for (Coordinate c : ring) {
-            if (c.x < 0 || c.x > width || c.y < 0 || c.y > height) {
-                throw attributes.error(e, where + " is outside the world " + Attributes.format(width) + " x "
-                        + Attributes.format(height) + ": its body must lie inside it");
+            if (!bounds.contains(c.x, c.y)) {
+                throw attributes.error(e, where + " is outside the world " + bounds.describe()
+                        + ": its body must lie inside it");
             }
         }
-        if (!geometry.overlaps(body, pose, -1)) {
-            return;
-        }
+        // touching counts, as for the GeometryClient's overlaps: JTS's intersects
         Polygon outline = factory.createPolygon(ring);
+        Envelope box = outline.getEnvelopeInternal();
         for (int i = 0; i < obstacles.size(); i++) {
-            if (obstacles.get(i).polygon().intersects(outline)) {
+            boolean near = boxes[4 * i] <= box.getMaxX() && boxes[4 * i + 2] >= box.getMinX()
+                    && boxes[4 * i + 1] <= box.getMaxY() && boxes[4 * i + 3] >= box.getMinY();
+            if (near && obstacles.get(i).polygon().intersects(outline)) {
                 throw attributes.error(e, where + " overlaps " + obstacleNames.get(i));
             }
         }
         for (int i = 0; i < placed.size(); i++) {
-            if (geometry.bodyPolygon(i).intersects(outline)) {
+            if (outlines.get(i).intersects(outline)) {
                 throw attributes.error(e, where + " overlaps robot '" + placed.get(i).name() + "' at line "
                         + placed.get(i).line());
             }

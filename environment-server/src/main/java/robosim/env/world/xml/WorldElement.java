@@ -55,6 +55,11 @@ final class WorldElement extends Element {
         children.add(noise);
     }
 
+    @JsonSetter("map")
+    void addMap(MapElement map) {
+        children.add(map);
+    }
+
     @JsonSetter("comms")
     void addComms(CommsElement comms) {
         children.add(comms);

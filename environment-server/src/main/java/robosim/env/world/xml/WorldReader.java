@@ -4,7 +4,11 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import robosim.comms.CommsSettings;
+import robosim.env.world.Bounds;
+import robosim.env.world.RobotRequest;
 import robosim.env.world.World;
+import robosim.env.world.map.MapGeometry;
+import robosim.geometry.Pose2D;
 import robosim.env.world.Obstacle;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
@@ -23,19 +27,52 @@ public final class WorldReader {
     }
 
     /**
-     * Reads and checks a world file, and the robot parameter files it names.
+     * Reads and checks a world file, and the robot parameter files it names. A file whose name
+     * ends in {@code .map} is read as an ARIA map, with one {@code p3dx} robot at its first home.
      *
      * @param file the world file
      * @return the world
      * @throws WorldFileException if the file cannot be read or breaks a rule of the format
      */
     public static World read(Path file) {
+        return read(file, List.of());
+    }
+
+    /**
+     * Reads and checks a world file, or an ARIA map ({@code .map}), adding the robots asked for
+     * with {@code --robot} after the world's own, at its homes: the map's {@code RobotHome} cairns
+     * (else {@code Dock} cairns, else its origin), or for a world without a map its centre. The
+     * first goes to the first home, each further one to the next, or when they run out 1 m along
+     * -y from the one before.
+     *
+     * @param file     the world or map file
+     * @param requests robots to add; for a map, none means one {@code p3dx}
+     * @return the world
+     * @throws WorldFileException if a file cannot be read or breaks a rule of the format, or a
+     *                            requested robot cannot be placed (the message then names it)
+     */
+    public static World read(Path file, List<RobotRequest> requests) {
+        if (MapWorlds.isMap(file)) {
+            return MapWorlds.read(file, requests);
+        }
         WorldElement root = ElementReader.read(file);
         Attributes attributes = new Attributes(file);
         String name = attributes.text(root, "name", root.name);
-        double width = attributes.atMost(root, "width", attributes.positive(root, "width", root.width), World.MAX_SIZE);
-        double height = attributes.atMost(root, "height", attributes.positive(root, "height", root.height),
-                World.MAX_SIZE);
+        MapElement mapElement = mapElement(attributes, root);
+        MapGeometry map = mapElement == null ? null : MapWorlds.geometry(
+                file.toAbsolutePath().getParent().resolve(attributes.text(mapElement, "file", mapElement.file)),
+                file, mapElement.line());
+        Bounds bounds;
+        if (map != null && root.width == null && root.height == null) {
+            bounds = map.bounds();
+        } else {
+            bounds = new Bounds(0, 0,
+                    attributes.atMost(root, "width", attributes.positive(root, "width", root.width), World.MAX_SIZE),
+                    attributes.atMost(root, "height", attributes.positive(root, "height", root.height),
+                            World.MAX_SIZE));
+        }
+        double width = bounds.width();
+        double height = bounds.height();
         int stepMs = attributes.wholeNumber(root, "stepMs", root.stepMs, DEFAULT_STEP_MS, 1, 10_000);
         boolean boundary = attributes.bool(root, "boundary", root.boundary, false);
 
@@ -43,7 +80,7 @@ public final class WorldReader {
         List<String> obstacleNames = new ArrayList<>();
         if (boundary) {
             for (Obstacle wall : ObstacleFactory.boundary(width, height, root.line())) {
-                obstacles.add(wall);
+                obstacles.add(ObstacleFactory.moved(wall, bounds.minX(), bounds.minY()));
                 obstacleNames.add("a boundary wall");
             }
         }
@@ -57,6 +94,11 @@ public final class WorldReader {
             } else if (child instanceof PolygonElement polygon) {
                 obstacles.add(shapes.polygon(polygon));
                 obstacleNames.add("the polygon at line " + polygon.line());
+            } else if (child instanceof MapElement) {
+                for (Obstacle o : map.obstacles()) {
+                    obstacles.add(o);
+                    obstacleNames.add(MapWorlds.name(o));
+                }
             } else if (child instanceof NoiseElement noise) {
                 if (noiseElement != null) {
                     throw attributes.error(noise, "a world has at most one <noise>; the first is at line "
@@ -74,8 +116,8 @@ public final class WorldReader {
         Noise noise = noiseElement == null ? Noise.NONE : noise(attributes, noiseElement);
         CommsSettings comms = commsElement == null ? CommsSettings.DEFAULT : comms(attributes, commsElement);
         // Robots and heat sources are checked against every obstacle, those listed after them too.
-        RobotPlacer placer = new RobotPlacer(attributes, width, height, obstacles, obstacleNames);
-        HeatPlacer heatPlacer = new HeatPlacer(attributes, width, height, obstacles, obstacleNames);
+        RobotPlacer placer = new RobotPlacer(attributes, bounds, obstacles, obstacleNames);
+        HeatPlacer heatPlacer = new HeatPlacer(attributes, bounds, obstacles, obstacleNames);
         List<RobotSpec> robots = new ArrayList<>();
         List<HeatSource> heat = new ArrayList<>();
         HeatSource gold = null;
@@ -94,7 +136,25 @@ public final class WorldReader {
                 heat.add(heatPlacer.place(source));
             }
         }
-        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold);
+        List<Pose2D> homes = map != null ? map.homes()
+                : List.of(new Pose2D(bounds.minX() + width / 2, bounds.minY() + height / 2, 0));
+        robots.addAll(MapWorlds.place(placer, requests, homes));
+        return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, bounds.minX(),
+                bounds.minY(), map == null ? List.of() : map.zones());
+    }
+
+    /** @return the world's {@code <map>}, or null; a world has at most one */
+    private static MapElement mapElement(Attributes attributes, WorldElement root) {
+        MapElement found = null;
+        for (Element child : root.children) {
+            if (child instanceof MapElement m) {
+                if (found != null) {
+                    throw attributes.error(m, "a world has at most one <map>; the first is at line " + found.line());
+                }
+                found = m;
+            }
+        }
+        return found;
     }
 
     private static Noise noise(Attributes attributes, NoiseElement e) {
