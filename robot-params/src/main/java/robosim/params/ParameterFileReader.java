@@ -34,7 +34,7 @@ import java.util.regex.Pattern;
 public final class ParameterFileReader {
     /** ARIA 2.8 repeats the laser keys in a section per laser; RoboSim models the first laser only. */
     private static final Pattern LATER_LASER =
-            Pattern.compile("section\\s+laser\\s+([2-9]|\\d{2,})\\s+parameters", Pattern.CASE_INSENSITIVE);
+            Pattern.compile("laser\\s+([2-9]|\\d{2,})\\s+parameters", Pattern.CASE_INSENSITIVE);
 
     private ParameterFileReader() {
     }
@@ -48,20 +48,38 @@ public final class ParameterFileReader {
      * @throws UncheckedIOException   when the file cannot be read
      */
     public static RobotParameters read(Path file) {
+        return parse(file, lines(file));
+    }
+
+    /**
+     * Reads the conversion factors of a parameter file ({@code Section Conversion factors});
+     * a factor the file does not give keeps {@link ConversionFactors#ARIA_DEFAULTS}' value.
+     *
+     * @param file the {@code .p} file
+     * @return its conversion factors
+     * @throws ParameterFileException naming the file, the line and the rule when a factor is not a
+     *                                number greater than 0
+     * @throws UncheckedIOException   when the file cannot be read
+     */
+    public static ConversionFactors conversionFactors(Path file) {
+        return ConversionFactors.read(file, lines(file));
+    }
+
+    private static List<String> lines(Path file) {
         byte[] bytes;
         try {
             bytes = Files.readAllBytes(file);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read robot parameter file " + file, e);
         }
-        return parse(file, lines(file, bytes));
+        return lines(file, bytes);
     }
 
     /**
      * @return the file's lines, read as UTF-8 (a leading byte order mark skipped)
      * @throws ParameterFileException naming the line and the offset of the first byte that is not UTF-8
      */
-    private static List<String> lines(Path file, byte[] bytes) {
+    static List<String> lines(Path file, byte[] bytes) {
         ByteBuffer in = ByteBuffer.wrap(bytes);
         CharBuffer text = CharBuffer.allocate(bytes.length);
         CoderResult result = StandardCharsets.UTF_8.newDecoder().decode(in, text, true);
@@ -81,7 +99,7 @@ public final class ParameterFileReader {
     static RobotParameters parse(Path file, List<String> lines) {
         ParameterRules rules = new ParameterRules(file, ParameterRules.P_FORM);
         boolean versionSeen = false;
-        boolean laterLaser = false;
+        String section = "";
 
         for (int i = 0; i < lines.size(); i++) {
             int lineNo = i + 1;
@@ -99,22 +117,36 @@ public final class ParameterFileReader {
                 throw new ParameterFileException(file, lineNo,
                         "expected 'ConfigVersion 2.0' before '" + words[0] + "'");
             }
+            String header = sectionName(line);
+            if (header != null) {
+                section = header;
+                continue;
+            }
+            if (AriaKeys.isSonarBoard(section) || LATER_LASER.matcher(section).matches() && key.startsWith("laser")) {
+                // a board's SonarMaxRange is the board's, and RoboSim models the first laser only
+                if (!AriaKeys.isAriaOnly(key) && !ParameterRules.isNumber(key)) {
+                    rules.unknownKey(words[0], lineNo);
+                }
+                continue;
+            }
             switch (key) {
-                case "section" -> laterLaser = LATER_LASER.matcher(line).matches();
                 case "class" -> rules.robotClass(value(file, lineNo, words));
                 case "subclass" -> rules.subclass(value(file, lineNo, words));
                 case "robotshape" -> rules.shape(value(file, lineNo, words), lineNo);
                 case "sonarnum" -> rules.sonarNum(value(file, lineNo, words), lineNo);
                 case "sonarunit" -> {
-                    if (words.length != 5) {
+                    // ARIA's MTX lines add board, unit, gain, threshold, range and a flag: RoboSim models the pose
+                    if (words.length < 5) {
                         throw new ParameterFileException(file, lineNo,
-                                "SonarUnit needs 4 values (index x y th), found " + (words.length - 1));
+                                "SonarUnit needs at least 4 values (index x y th), found " + (words.length - 1));
                     }
                     rules.sonarUnit(words[1], words[2], words[3], words[4], lineNo);
                 }
                 default -> {
-                    if (ParameterRules.isNumber(key) && !(laterLaser && key.startsWith("laser"))) {
+                    if (ParameterRules.isNumber(key)) {
                         rules.number(words[0], value(file, lineNo, words), lineNo);
+                    } else if (!AriaKeys.isAriaOnly(key)) {
+                        rules.unknownKey(words[0], lineNo);
                     }
                 }
             }
@@ -125,6 +157,18 @@ public final class ParameterFileReader {
         return rules.build();
     }
 
+    /** @return the section a {@code Section name} or {@code [name]} line opens, or null for any other line */
+    static String sectionName(String line) {
+        if (line.startsWith("[") && line.endsWith("]")) {
+            return line.substring(1, line.length() - 1).trim();
+        }
+        String[] words = line.split("\\s+", 2);
+        if (words[0].equalsIgnoreCase("section")) {
+            return words.length > 1 ? words[1].trim() : "";
+        }
+        return null;
+    }
+
     private static String value(Path file, int lineNo, String[] words) {
         if (words.length < 2) {
             throw new ParameterFileException(file, lineNo, words[0] + " has no value");
@@ -132,7 +176,7 @@ public final class ParameterFileReader {
         return words[1];
     }
 
-    private static String stripComment(String line) {
+    static String stripComment(String line) {
         int semicolon = line.indexOf(';');
         return semicolon >= 0 ? line.substring(0, semicolon) : line;
     }
