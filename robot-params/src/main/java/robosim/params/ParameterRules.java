@@ -178,6 +178,34 @@ final class ParameterRules {
         unknownKeys.add(key + " (line " + line + ")");
     }
 
+    /** @return the robot's class so far */
+    String robotClassName() {
+        return robotClass;
+    }
+
+    /** @return the robot's subclass so far (the file's name without extension when it gives none) */
+    String subclassName() {
+        return subclass;
+    }
+
+    /**
+     * Takes the sonar ring of the robot's model, for a file that gives no sonar units of its own.
+     *
+     * @param units the model's units, numbered 0, 1, ...
+     * @param line  the line the model was chosen by (the subclass), for messages
+     * @throws ParameterFileException if the file's sonar count differs from the model's
+     */
+    void modelSonars(List<SonarUnit> units, int line) {
+        if (sonarNum != null && sonarNum != units.size()) {
+            throw error(sonarNumLine, spelling.sonarNum() + " is " + sonarNum + " but the " + subclass
+                    + " model has " + units.size() + " sonars and the file gives none of its own");
+        }
+        for (SonarUnit u : units) {
+            sonars.put(u.index(), u);
+            sonarLines.put(u.index(), line);
+        }
+    }
+
     void sonarNum(String text, int line) {
         double n = parse(spelling.sonarNum(), text, line);
         if (n < 0 || n > MAX_SONARS || n != Math.rint(n)) {
