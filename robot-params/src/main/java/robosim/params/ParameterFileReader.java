@@ -1,7 +1,6 @@
 package robosim.params;
 
 import robosim.protocol.RobotParameters;
-import robosim.protocol.SonarUnit;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -16,17 +15,21 @@ import java.util.Locale;
 import java.util.regex.Pattern;
 
 /**
- * Reads ARIA's robot parameter files ({@code .p}): {@code ConfigVersion 2.0}, {@code Section}
- * lines, and {@code Key value ; comment} lines. Keys are matched without regard to case, as ARIA
- * does; keys RoboSim does not model (conversion factors, IO settings, the laser's port and
- * flags, ...) are accepted and ignored so that real ARIA files load unchanged.
+ * Reads ARIA's robot parameter files ({@code .p}): {@code ConfigVersion 2.0}, section headers
+ * ({@code Section name} or {@code [name]}) and {@code Key value ; comment} lines. Keys are matched
+ * without regard to case, as ARIA does; ARIA's keys RoboSim does not model ({@link AriaKeys}:
+ * conversion factors, IO settings, the laser's port and flags, sonar boards, ...) are read past, and
+ * keys nobody defines are named in one warning per file, so that ARIA's own files load unchanged.
  *
- * <p>A key that is absent keeps the default of ARIA's {@code ArRobotParams}; a body length given
- * without {@code RobotLengthFront}/{@code RobotLengthRear} is split evenly about the centre. The
- * laser's mounting pose comes from {@code LaserX}, {@code LaserY}, {@code LaserTh} (default: the
- * centre, facing forward) and its range from {@code LaserMaxRange} (default
- * {@link RobotParameters#DEFAULT_LASER_MAX_RANGE}; ARIA's {@code 0} also means the default). The
- * laser keys in a later laser's section ({@code Section Laser 2 parameters}, ...) are ignored.
+ * <p>A key that is absent keeps the default of ARIA's {@code ArRobotParams}, and so does an
+ * acceleration or speed limit of 0, ARIA's "keep the firmware's value". A body length given
+ * without {@code RobotLengthFront}/{@code RobotLengthRear} is split evenly about the centre. A
+ * {@code SonarUnit} line gives its pose in its first four values; the MTX values after them are
+ * ignored. The keys of a sonar board's section ({@code SonarBoard_1}, ...) describe the board, and
+ * the laser keys of a later laser's section ({@code Laser 2 parameters}, ...) are ignored. The laser's
+ * mounting pose comes from {@code LaserX}, {@code LaserY}, {@code LaserTh} and its range from
+ * {@code LaserMaxRange} (default {@link RobotParameters#DEFAULT_LASER_MAX_RANGE}; ARIA's {@code 0}
+ * also means the default). {@link #conversionFactors} reads the file's conversion factors.
  *
  * <p>{@link XmlParameterFileReader} reads the same parameters from XML under the same rules;
  * {@link RobotParametersReader} picks one by extension.

@@ -23,10 +23,14 @@ import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
 
 /**
- * Reads the XML form of a robot parameter file, the form of the original RoboSim report: a root
- * {@code <robotParameters>} whose children are one element per parameter
- * ({@code <robotWidth>425</robotWidth>}), repeated {@code <sonarUnit number x y th/>} elements
- * and an optional {@code <laser x y th maxRange/>}.
+ * Reads the XML forms of a robot parameter file, in either of two layouts told apart by the root
+ * element: RoboSim's {@code <robotParameters>}, whose children are one element per parameter
+ * ({@code <robotWidth>425</robotWidth>}), repeated {@code <sonarUnit number x y th/>} elements and
+ * an optional {@code <laser x y th maxRange/>}; and the original RoboSim manual's
+ * {@code <robot><params>...</params></robot>}, with the same parameter elements and a
+ * {@code <sonar>} of {@code <sonarUnit>} elements whose values are child elements
+ * ({@code <sonarNumber>}, {@code <sonarX>}, {@code <sonarY>}, {@code <sonarTh>}). A file in the
+ * original layout without a {@code <sonar>} takes its subclass model's sonars ({@link SonarDefaults}).
  *
  * <p>Defaults and rules are those of {@link ParameterFileReader}, so the two forms of one robot
  * give equal records. XML is stricter in three ways: element and attribute names are matched
