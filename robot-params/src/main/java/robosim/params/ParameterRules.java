@@ -178,6 +178,9 @@ final class ParameterRules {
         unknownKeys.add(key + " (line " + line + ")");
     }
 
+    /** A broken file may hold thousands of unknown keys; the warning names this many and counts the rest. */
+    private static final int NAMED_UNKNOWN_KEYS = 20;
+
     /** @return the robot's class so far */
     String robotClassName() {
         return robotClass;
@@ -297,7 +300,10 @@ final class ParameterRules {
     private void warn() {
         List<String> parts = new ArrayList<>();
         if (!unknownKeys.isEmpty()) {
-            parts.add("ignored unknown key" + (unknownKeys.size() == 1 ? " " : "s ") + String.join(", ", unknownKeys));
+            List<String> named = unknownKeys.subList(0, Math.min(unknownKeys.size(), NAMED_UNKNOWN_KEYS));
+            int more = unknownKeys.size() - named.size();
+            parts.add("ignored unknown key" + (unknownKeys.size() == 1 ? " " : "s ") + String.join(", ", named)
+                    + (more > 0 ? " and " + more + " more" : ""));
         }
         if (sonarShortfall != null) {
             parts.add(sonarShortfall);

@@ -141,6 +141,18 @@ class AriaFormatTest {
     }
 
     @Test
+    void manyUnknownKeysAreCountedPastTheFirstTwenty() throws IOException {
+        List<String> lines = new ArrayList<>(List.of("ConfigVersion 2.0"));
+        for (int i = 0; i < 25; i++) {
+            lines.add("Odd" + i + " 1");
+        }
+        Path file = write("many.p", lines.toArray(String[]::new));
+        ParameterFileReader.read(file);
+        assertEquals(1, warnings.size());
+        assertTrue(warnings.get(0).getMessage().endsWith("Odd19 (line 21) and 5 more"), warnings.get(0).getMessage());
+    }
+
+    @Test
     void conversionFactorsComeFromTheirSection() throws IOException {
         Path file = write("cf.p", "ConfigVersion 2.0", "Section Conversion factors", "AngleConvFactor 0.00153",
                 "DistConvFactor 0.485", "VelConvFactor 1.0", "RangeConvFactor 1.0", "DiffConvFactor 0.0056",
