@@ -16,18 +16,20 @@ import robosim.protocol.RobotParameters;
 
 /**
  * A local check against ARIA's own robot parameter files: every one of them loads, within the
- * Environment's bounds. It needs a copy of ARIA (AriaCoda) whose {@code params} folder is named by
- * the system property {@code robosim.aria.params} (default {@code /work/ariacoda/params}); without
+ * Environment's bounds. It needs a copy of ARIA (AriaCoda): its {@code params} folder is the
+ * system property {@code robosim.aria.params}, else {@code $ARIA/params} (ARIA's own environment
+ * variable for where it is), else ARIA's default install, {@code /usr/local/Aria/params}. Without
  * one it is skipped and says so. The project's own tests do not depend on it: the ARIA-format
  * fixtures in {@link AriaFormatTest} cover the same features.
  */
 class AriaParameterFilesTest {
-    private static final Path PARAMS = Path.of(System.getProperty("robosim.aria.params", "/work/ariacoda/params"));
+    private static final Path PARAMS = Path.of(System.getProperty("robosim.aria.params",
+            System.getenv("ARIA") != null ? Path.of(System.getenv("ARIA"), "params").toString() : "/usr/local/Aria/params"));
 
     @Test
     void everyAriaParameterFileLoads() throws IOException {
         Assumptions.assumeTrue(Files.isDirectory(PARAMS),
-                "skipped: no ARIA params folder at " + PARAMS + " (set -Drobosim.aria.params=...)");
+                "skipped: no ARIA params folder at " + PARAMS + " (set ARIA=<AriaCoda folder> or -Drobosim.aria.params=...)");
         List<Path> files;
         try (Stream<Path> s = Files.list(PARAMS)) {
             files = s.filter(p -> p.toString().endsWith(".p")).sorted().toList();
