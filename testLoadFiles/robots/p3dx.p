@@ -17,7 +17,14 @@ TransDecel            300      ; translational deceleration, mm/s/s
 RotAccel              100      ; rotational acceleration, deg/s/s
 RotDecel              100      ; rotational deceleration, deg/s/s
 DiffConvFactor        0.0056   ; wheel speed difference to rad/s
-DistConvFactor        0.485    ; encoder ticks to mm (unused by RoboSim)
+
+Section Conversion factors
+; firmware units to ARIA's: what a Pioneer protocol server speaks
+AngleConvFactor       0.001534 ; rad per angle unit (2 pi / 4096)
+DistConvFactor        0.485    ; mm per distance unit
+VelConvFactor         1.0      ; mm/s per speed unit
+RangeConvFactor       1.0      ; mm per sonar range unit
+Vel2Divisor           20       ; VEL2 wheel speed divisor
 
 Section Sonar parameters
 SonarNum 16                   ; number of sonar

@@ -1,7 +1,6 @@
 package robosim.params;
 
 import robosim.protocol.RobotParameters;
-import robosim.protocol.SonarUnit;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -16,17 +15,21 @@ import java.util.Locale;
 import java.util.regex.Pattern;
 
 /**
- * Reads ARIA's robot parameter files ({@code .p}): {@code ConfigVersion 2.0}, {@code Section}
- * lines, and {@code Key value ; comment} lines. Keys are matched without regard to case, as ARIA
- * does; keys RoboSim does not model (conversion factors, IO settings, the laser's port and
- * flags, ...) are accepted and ignored so that real ARIA files load unchanged.
+ * Reads ARIA's robot parameter files ({@code .p}): {@code ConfigVersion 2.0}, section headers
+ * ({@code Section name} or {@code [name]}) and {@code Key value ; comment} lines. Keys are matched
+ * without regard to case, as ARIA does; ARIA's keys RoboSim does not model ({@link AriaKeys}:
+ * conversion factors, IO settings, the laser's port and flags, sonar boards, ...) are read past, and
+ * keys nobody defines are named in one warning per file, so that ARIA's own files load unchanged.
  *
- * <p>A key that is absent keeps the default of ARIA's {@code ArRobotParams}; a body length given
- * without {@code RobotLengthFront}/{@code RobotLengthRear} is split evenly about the centre. The
- * laser's mounting pose comes from {@code LaserX}, {@code LaserY}, {@code LaserTh} (default: the
- * centre, facing forward) and its range from {@code LaserMaxRange} (default
- * {@link RobotParameters#DEFAULT_LASER_MAX_RANGE}; ARIA's {@code 0} also means the default). The
- * laser keys in a later laser's section ({@code Section Laser 2 parameters}, ...) are ignored.
+ * <p>A key that is absent keeps the default of ARIA's {@code ArRobotParams}, and so does an
+ * acceleration or speed limit of 0, ARIA's "keep the firmware's value". A body length given
+ * without {@code RobotLengthFront}/{@code RobotLengthRear} is split evenly about the centre. A
+ * {@code SonarUnit} line gives its pose in its first four values; the MTX values after them are
+ * ignored. The keys of a sonar board's section ({@code SonarBoard_1}, ...) describe the board, and
+ * the laser keys of a later laser's section ({@code Laser 2 parameters}, ...) are ignored. The laser's
+ * mounting pose comes from {@code LaserX}, {@code LaserY}, {@code LaserTh} and its range from
+ * {@code LaserMaxRange} (default {@link RobotParameters#DEFAULT_LASER_MAX_RANGE}; ARIA's {@code 0}
+ * also means the default). {@link #conversionFactors} reads the file's conversion factors.
  *
  * <p>{@link XmlParameterFileReader} reads the same parameters from XML under the same rules;
  * {@link RobotParametersReader} picks one by extension.
@@ -34,7 +37,7 @@ import java.util.regex.Pattern;
 public final class ParameterFileReader {
     /** ARIA 2.8 repeats the laser keys in a section per laser; RoboSim models the first laser only. */
     private static final Pattern LATER_LASER =
-            Pattern.compile("section\\s+laser\\s+([2-9]|\\d{2,})\\s+parameters", Pattern.CASE_INSENSITIVE);
+            Pattern.compile("laser\\s+([2-9]|\\d{2,})\\s+parameters", Pattern.CASE_INSENSITIVE);
 
     private ParameterFileReader() {
     }
@@ -48,20 +51,38 @@ public final class ParameterFileReader {
      * @throws UncheckedIOException   when the file cannot be read
      */
     public static RobotParameters read(Path file) {
+        return parse(file, lines(file));
+    }
+
+    /**
+     * Reads the conversion factors of a parameter file ({@code Section Conversion factors});
+     * a factor the file does not give keeps {@link ConversionFactors#ARIA_DEFAULTS}' value.
+     *
+     * @param file the {@code .p} file
+     * @return its conversion factors
+     * @throws ParameterFileException naming the file, the line and the rule when a factor is not a
+     *                                number greater than 0
+     * @throws UncheckedIOException   when the file cannot be read
+     */
+    public static ConversionFactors conversionFactors(Path file) {
+        return ConversionFactors.read(file, lines(file));
+    }
+
+    private static List<String> lines(Path file) {
         byte[] bytes;
         try {
             bytes = Files.readAllBytes(file);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read robot parameter file " + file, e);
         }
-        return parse(file, lines(file, bytes));
+        return lines(file, bytes);
     }
 
     /**
      * @return the file's lines, read as UTF-8 (a leading byte order mark skipped)
      * @throws ParameterFileException naming the line and the offset of the first byte that is not UTF-8
      */
-    private static List<String> lines(Path file, byte[] bytes) {
+    static List<String> lines(Path file, byte[] bytes) {
         ByteBuffer in = ByteBuffer.wrap(bytes);
         CharBuffer text = CharBuffer.allocate(bytes.length);
         CoderResult result = StandardCharsets.UTF_8.newDecoder().decode(in, text, true);
@@ -81,7 +102,7 @@ public final class ParameterFileReader {
     static RobotParameters parse(Path file, List<String> lines) {
         ParameterRules rules = new ParameterRules(file, ParameterRules.P_FORM);
         boolean versionSeen = false;
-        boolean laterLaser = false;
+        String section = "";
 
         for (int i = 0; i < lines.size(); i++) {
             int lineNo = i + 1;
@@ -99,22 +120,36 @@ public final class ParameterFileReader {
                 throw new ParameterFileException(file, lineNo,
                         "expected 'ConfigVersion 2.0' before '" + words[0] + "'");
             }
+            String header = sectionName(line);
+            if (header != null) {
+                section = header;
+                continue;
+            }
+            if (AriaKeys.isSonarBoard(section) || LATER_LASER.matcher(section).matches() && key.startsWith("laser")) {
+                // a board's SonarMaxRange is the board's, and RoboSim models the first laser only
+                if (!AriaKeys.isAriaOnly(key) && !ParameterRules.isNumber(key)) {
+                    rules.unknownKey(words[0], lineNo);
+                }
+                continue;
+            }
             switch (key) {
-                case "section" -> laterLaser = LATER_LASER.matcher(line).matches();
                 case "class" -> rules.robotClass(value(file, lineNo, words));
                 case "subclass" -> rules.subclass(value(file, lineNo, words));
                 case "robotshape" -> rules.shape(value(file, lineNo, words), lineNo);
                 case "sonarnum" -> rules.sonarNum(value(file, lineNo, words), lineNo);
                 case "sonarunit" -> {
-                    if (words.length != 5) {
+                    // ARIA's MTX lines add board, unit, gain, threshold, range and a flag: RoboSim models the pose
+                    if (words.length < 5) {
                         throw new ParameterFileException(file, lineNo,
-                                "SonarUnit needs 4 values (index x y th), found " + (words.length - 1));
+                                "SonarUnit needs at least 4 values (index x y th), found " + (words.length - 1));
                     }
                     rules.sonarUnit(words[1], words[2], words[3], words[4], lineNo);
                 }
                 default -> {
-                    if (ParameterRules.isNumber(key) && !(laterLaser && key.startsWith("laser"))) {
+                    if (ParameterRules.isNumber(key)) {
                         rules.number(words[0], value(file, lineNo, words), lineNo);
+                    } else if (!AriaKeys.isAriaOnly(key)) {
+                        rules.unknownKey(words[0], lineNo);
                     }
                 }
             }
@@ -125,6 +160,18 @@ public final class ParameterFileReader {
         return rules.build();
     }
 
+    /** @return the section a {@code Section name} or {@code [name]} line opens, or null for any other line */
+    static String sectionName(String line) {
+        if (line.startsWith("[") && line.endsWith("]")) {
+            return line.substring(1, line.length() - 1).trim();
+        }
+        String[] words = line.split("\\s+", 2);
+        if (words[0].equalsIgnoreCase("section")) {
+            return words.length > 1 ? words[1].trim() : "";
+        }
+        return null;
+    }
+
     private static String value(Path file, int lineNo, String[] words) {
         if (words.length < 2) {
             throw new ParameterFileException(file, lineNo, words[0] + " has no value");
@@ -132,7 +179,7 @@ public final class ParameterFileReader {
         return words[1];
     }
 
-    private static String stripComment(String line) {
+    static String stripComment(String line) {
         int semicolon = line.indexOf(';');
         return semicolon >= 0 ? line.substring(0, semicolon) : line;
     }

@@ -4,11 +4,14 @@ import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
+import java.util.logging.Logger;
 
 /**
  * The rules both forms of a robot parameter file share, so that a {@code .p} file and its
@@ -54,6 +57,9 @@ final class ParameterRules {
             Map.entry("transdecel", new Rule(300, Sign.POSITIVE)),
             Map.entry("rotaccel", new Rule(100, Sign.POSITIVE)),
             Map.entry("rotdecel", new Rule(100, Sign.POSITIVE)),
+            // the desired limits below the absolute ones; RoboSim checks them but drives by the absolute ones
+            Map.entry("transvelmax", new Rule(0, Sign.NOT_NEGATIVE)),
+            Map.entry("rotvelmax", new Rule(0, Sign.NOT_NEGATIVE)),
             Map.entry("diffconvfactor", new Rule(0.0056, Sign.POSITIVE)),
             Map.entry("sonarmaxrange", new Rule(5000, Sign.POSITIVE)),
             Map.entry("laserx", new Rule(0, Sign.ANY)),
@@ -62,7 +68,19 @@ final class ParameterRules {
             // ARIA writes "LaserMaxRange 0" for "the laser's own default"
             Map.entry("lasermaxrange", new Rule(0, Sign.NOT_NEGATIVE)));
 
+    /**
+     * Keys where ARIA reads 0 as "keep the value in the robot's firmware": the simulated robot's
+     * firmware holds the defaults above.
+     */
+    private static final Set<String> ZERO_KEEPS_FIRMWARE =
+            Set.of("transaccel", "transdecel", "rotaccel", "rotdecel", "transvelmax", "rotvelmax");
+
+    private static final Logger LOG = Logger.getLogger(ParameterRules.class.getName());
+
     private final Path file;
+    /** What the file's one warning will say: keys nobody knows, sonars declared but not given. */
+    private final List<String> unknownKeys = new ArrayList<>();
+    private String sonarShortfall;
     private final Spelling spelling;
     private final Map<String, Double> numbers = new HashMap<>();
     private String robotClass = "Pioneer";
@@ -136,6 +154,10 @@ final class ParameterRules {
     void number(String key, String name, String text, int line) {
         Rule rule = NUMBERS.get(key.toLowerCase(Locale.ROOT));
         double v = parse(name, text, line);
+        if (v == 0 && ZERO_KEEPS_FIRMWARE.contains(key.toLowerCase(Locale.ROOT))) {
+            numbers.put(key.toLowerCase(Locale.ROOT), rule.defaultValue());
+            return;
+        }
         if (rule.sign() == Sign.POSITIVE && v <= 0) {
             throw error(line, name + " is " + text + " but must be greater than 0");
         }
@@ -143,6 +165,48 @@ final class ParameterRules {
             throw error(line, name + " is " + text + " but must not be negative");
         }
         numbers.put(key.toLowerCase(Locale.ROOT), v);
+    }
+
+    /**
+     * Notes a key that neither RoboSim nor ARIA defines; it is ignored, and named in the file's one
+     * warning.
+     *
+     * @param key  the key as written
+     * @param line where
+     */
+    void unknownKey(String key, int line) {
+        unknownKeys.add(key + " (line " + line + ")");
+    }
+
+    /** A broken file may hold thousands of unknown keys; the warning names this many and counts the rest. */
+    private static final int NAMED_UNKNOWN_KEYS = 20;
+
+    /** @return the robot's class so far */
+    String robotClassName() {
+        return robotClass;
+    }
+
+    /** @return the robot's subclass so far (the file's name without extension when it gives none) */
+    String subclassName() {
+        return subclass;
+    }
+
+    /**
+     * Takes the sonar ring of the robot's model, for a file that gives no sonar units of its own.
+     *
+     * @param units the model's units, numbered 0, 1, ...
+     * @param line  the line the model was chosen by (the subclass), for messages
+     * @throws ParameterFileException if the file's sonar count differs from the model's
+     */
+    void modelSonars(List<SonarUnit> units, int line) {
+        if (sonarNum != null && sonarNum != units.size()) {
+            throw error(sonarNumLine, spelling.sonarNum() + " is " + sonarNum + " but the " + subclass
+                    + " model has " + units.size() + " sonars and the file gives none of its own");
+        }
+        for (SonarUnit u : units) {
+            sonars.put(u.index(), u);
+            sonarLines.put(u.index(), line);
+        }
     }
 
     void sonarNum(String text, int line) {
@@ -199,12 +263,20 @@ final class ParameterRules {
                         + " must be less than " + spelling.sonarNum() + " " + sonarNum);
             }
         }
+        if (expected > sonars.size() && sonars.keySet().stream().allMatch(n -> n < sonars.size())) {
+            // ARIA's powerbot.p declares 32 and lists 31: the robot has the units the file gives
+            sonarShortfall = spelling.sonarNum() + " is " + expected + " (line " + sonarNumLine + ") but only "
+                    + sonars.size() + " " + spelling.sonarUnit() + (sonars.size() == 1 ? " is" : "s are")
+                    + " given; the robot has those " + sonars.size();
+            expected = sonars.size();
+        }
         for (int n = 0; n < expected; n++) {
             if (!sonars.containsKey(n)) {
                 throw error(sonarNumLine, spelling.sonarNum() + " is " + expected + " but there is no "
                         + spelling.sonarUnit() + " " + n);
             }
         }
+        warn();
         double length = numbers.get("robotlength");
         double front = numbers.get("robotlengthfront");
         double rear = numbers.get("robotlengthrear");
@@ -222,6 +294,23 @@ final class ParameterRules {
                 List.copyOf(sonars.values()),
                 numbers.get("laserx"), numbers.get("lasery"), numbers.get("laserth"),
                 laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange, shape);
+    }
+
+    /** Logs the file's one warning, if it has anything to warn of. */
+    private void warn() {
+        List<String> parts = new ArrayList<>();
+        if (!unknownKeys.isEmpty()) {
+            List<String> named = unknownKeys.subList(0, Math.min(unknownKeys.size(), NAMED_UNKNOWN_KEYS));
+            int more = unknownKeys.size() - named.size();
+            parts.add("ignored unknown key" + (unknownKeys.size() == 1 ? " " : "s ") + String.join(", ", named)
+                    + (more > 0 ? " and " + more + " more" : ""));
+        }
+        if (sonarShortfall != null) {
+            parts.add(sonarShortfall);
+        }
+        if (!parts.isEmpty()) {
+            LOG.warning(file + ": " + String.join("; ", parts));
+        }
     }
 
     private double parse(String what, String text, int line) {

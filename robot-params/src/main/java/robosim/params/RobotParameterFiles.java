@@ -29,13 +29,22 @@ public final class RobotParameterFiles {
     }
 
     /**
-     * Finds a parameter file and reads its conversion factors (see {@link ConversionFactors}).
+     * Finds a parameter file as {@link #load} does and reads its conversion factors: those of
+     * {@code Section Conversion factors} for ARIA's form, ARIA's defaults with the file's
+     * {@code diffConvFactor} for the XML forms, which have no other factors.
      *
-     * @param file a path, or a shipped name
-     * @return the factors; ARIA's defaults for a file of another form
+     * @param file a path, or a shipped name such as {@code p3dx} or {@code p3at-sh}
+     * @return the robot's conversion factors
+     * @throws IllegalArgumentException if no such file is found
+     * @throws robosim.params.ParameterFileException if the file breaks a rule
      */
     public static ConversionFactors conversionFactors(String file) {
-        return ConversionFactorsReader.read(resolve(file));
+        Path path = resolve(file);
+        Path name = path.getFileName();
+        if (name != null && name.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".p")) {
+            return ParameterFileReader.conversionFactors(path);
+        }
+        return ConversionFactors.ARIA_DEFAULTS.withDiffConvFactor(RobotParametersReader.read(path).diffConvFactor());
     }
 
     /**

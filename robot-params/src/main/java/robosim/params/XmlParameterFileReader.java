@@ -23,10 +23,14 @@ import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
 
 /**
- * Reads the XML form of a robot parameter file, the form of the original RoboSim report: a root
- * {@code <robotParameters>} whose children are one element per parameter
- * ({@code <robotWidth>425</robotWidth>}), repeated {@code <sonarUnit number x y th/>} elements
- * and an optional {@code <laser x y th maxRange/>}.
+ * Reads the XML forms of a robot parameter file, in either of two layouts told apart by the root
+ * element: RoboSim's {@code <robotParameters>}, whose children are one element per parameter
+ * ({@code <robotWidth>425</robotWidth>}), repeated {@code <sonarUnit number x y th/>} elements and
+ * an optional {@code <laser x y th maxRange/>}; and the original RoboSim manual's
+ * {@code <robot><params>...</params></robot>}, with the same parameter elements and a
+ * {@code <sonar>} of {@code <sonarUnit>} elements whose values are child elements
+ * ({@code <sonarNumber>}, {@code <sonarX>}, {@code <sonarY>}, {@code <sonarTh>}). A file in the
+ * original layout without a {@code <sonar>} takes its subclass model's sonars ({@link SonarDefaults}).
  *
  * <p>Defaults and rules are those of {@link ParameterFileReader}, so the two forms of one robot
  * give equal records. XML is stricter in three ways: element and attribute names are matched
@@ -39,6 +43,10 @@ import javax.xml.stream.XMLStreamReader;
  */
 public final class XmlParameterFileReader {
     private static final String ROOT = "robotParameters";
+    /** The original RoboSim manual's layout: {@code <robot><params>...</params></robot>}. */
+    private static final String ORIGINAL_ROOT = "robot";
+    private static final String PARAMS = "params";
+    private static final List<String> ORIGINAL_SONAR = List.of("sonarNumber", "sonarX", "sonarY", "sonarTh");
     private static final Set<String> NUMBERS = Set.of("robotRadius", "robotDiagonal", "robotWidth",
             "robotLength", "robotLengthFront", "robotLengthRear", "maxVelocity", "maxRVelocity", "transAccel",
             "transDecel", "rotAccel", "rotDecel", "diffConvFactor", "sonarMaxRange");
@@ -89,41 +97,126 @@ public final class XmlParameterFileReader {
 
     private RobotParameters root() throws IOException {
         XMLStreamReader stax = parser.getStaxReader();
-        if (!stax.isStartElement() || !ROOT.equals(stax.getLocalName())) {
+        boolean original = stax.isStartElement() && ORIGINAL_ROOT.equals(stax.getLocalName());
+        if (!stax.isStartElement() || !ROOT.equals(stax.getLocalName()) && !original) {
             String found = stax.isStartElement() ? "<" + stax.getLocalName() + ">" : "missing";
             throw rules.error(stax.getLocation().getLineNumber(),
-                    "the root element is " + found + ", expected <" + ROOT + ">");
+                    "the root element is " + found + ", expected <" + ROOT + "> or <" + ORIGINAL_ROOT + ">");
         }
+        String root = original ? ORIGINAL_ROOT : ROOT;
+        int rootLine = stax.getLocation().getLineNumber();
         JsonToken token = parser.nextToken();
         if (token == JsonToken.START_OBJECT) {
             while (parser.nextToken() == JsonToken.FIELD_NAME) {
                 String name = parser.currentName();
                 int line = line();
                 parser.nextToken();
-                element(name, line);
+                if (original) {
+                    params(name, line);
+                } else {
+                    element(ROOT, name, line);
+                }
             }
         } else if (token == JsonToken.VALUE_STRING && !parser.getText().isBlank()) {
-            throw rules.error(line(), "text '" + parser.getText().trim() + "' in <" + ROOT + ">: "
+            throw rules.error(line(), "text '" + parser.getText().trim() + "' in <" + root + ">: "
                     + "parameters are child elements");
         }
         // Jackson stops at the root's end; reading on lets the XML parser see anything after it
         if (parser.nextToken() != null) {
-            throw rules.error(line(), "content after </" + ROOT + ">");
+            throw rules.error(line(), "content after </" + root + ">");
+        }
+        if (original) {
+            if (!seen.containsKey(PARAMS)) {
+                throw rules.error(rootLine, "<" + ORIGINAL_ROOT + "> has no <" + PARAMS + ">");
+            }
+            if (!seen.containsKey("sonar")) {
+                Integer at = seen.getOrDefault("subclass", seen.get(PARAMS));
+                rules.modelSonars(SonarDefaults.of(file, at, rules.robotClassName(), rules.subclassName()), at);
+            }
         }
         return rules.build();
     }
 
-    /** Handles one child of the root; the parser stands on its value. */
-    private void element(String name, int line) throws IOException {
+    /** Handles the one child of the original layout's {@code <robot>}: {@code <params>}. */
+    private void params(String name, int line) throws IOException {
+        if (!PARAMS.equals(name)) {
+            throw isAttribute(name) ? rules.error(line, "unknown attribute " + name + " on <" + ORIGINAL_ROOT + ">")
+                    : rules.error(line, "unknown element <" + name + "> in <" + ORIGINAL_ROOT + "> (it holds <"
+                    + PARAMS + ">)");
+        }
+        Integer first = seen.putIfAbsent(PARAMS, line);
+        if (first != null) {
+            throw rules.error(line, "<" + PARAMS + "> is given twice (first at line " + first + ")");
+        }
+        forEachChild(PARAMS, line, (child, childLine) -> element(PARAMS, child, childLine));
+    }
+
+    /** A child element's handler; the parser stands on the child's value. */
+    private interface Child {
+        void handle(String name, int line) throws IOException;
+    }
+
+    /** Calls {@code child} for each child of an element that holds only elements; the parser stands on its value. */
+    private void forEachChild(String name, int line, Child child) throws IOException {
+        if (!parser.hasToken(JsonToken.START_OBJECT)) {
+            if (parser.hasToken(JsonToken.VALUE_STRING) && !parser.getText().isBlank()) {
+                throw rules.error(line, "<" + name + "> holds elements, not text '" + parser.getText().trim() + "'");
+            }
+            return;
+        }
+        while (parser.nextToken() == JsonToken.FIELD_NAME) {
+            String inner = parser.currentName();
+            int innerLine = line();
+            parser.nextToken();
+            if (isAttribute(inner)) {
+                throw rules.error(line, "unknown attribute " + inner + " on <" + name + ">");
+            }
+            if (inner.isEmpty()) {
+                if (parser.getText().isBlank()) {
+                    continue;
+                }
+                throw rules.error(innerLine, "<" + name + "> holds elements, not text '" + parser.getText().trim() + "'");
+            }
+            child.handle(inner, innerLine);
+        }
+    }
+
+    /** Reads the original layout's {@code <sonarUnit>}: child elements sonarNumber, sonarX, sonarY, sonarTh. */
+    private void originalSonarUnit(String name, int line) throws IOException {
+        if (!"sonarUnit".equals(name)) {
+            throw rules.error(line, "unknown element <" + name + "> in <sonar> (it holds <sonarUnit>)");
+        }
+        Map<String, String> values = new HashMap<>();
+        forEachChild(name, line, (child, childLine) -> {
+            if (!ORIGINAL_SONAR.contains(child)) {
+                throw rules.error(childLine, "unknown element <" + child + "> in <sonarUnit> (known: "
+                        + String.join(", ", ORIGINAL_SONAR) + ")");
+            }
+            if (values.put(child, text(child, childLine)) != null) {
+                throw rules.error(childLine, "<" + child + "> is given twice in one <sonarUnit>");
+            }
+        });
+        for (String wanted : ORIGINAL_SONAR) {
+            if (!values.containsKey(wanted)) {
+                throw rules.error(line, "sonarUnit has no <" + wanted + "> (it needs " + String.join(", ", ORIGINAL_SONAR) + ")");
+            }
+        }
+        rules.sonarUnit(values.get("sonarNumber"), values.get("sonarX"), values.get("sonarY"), values.get("sonarTh"), line);
+    }
+
+    /** Handles one parameter element of {@code container}; the parser stands on its value. */
+    private void element(String container, String name, int line) throws IOException {
         if (isAttribute(name)) {
-            throw rules.error(line, "unknown attribute " + name + " on <" + ROOT + ">");
+            throw rules.error(line, "unknown attribute " + name + " on <" + container + ">");
         }
         if (name.isEmpty()) {
-            throw rules.error(line, "text '" + parser.getText().trim() + "' in <" + ROOT + ">: "
+            throw rules.error(line, "text '" + parser.getText().trim() + "' in <" + container + ">: "
                     + "parameters are child elements");
         }
-        if (!NUMBERS.contains(name) && !OTHERS.contains(name)) {
-            throw rules.error(line, "unknown element <" + name + "> in <" + ROOT + ">");
+        boolean original = PARAMS.equals(container);
+        if (!NUMBERS.contains(name) && !OTHERS.contains(name) && !(original && name.equals("sonar"))
+                || original && name.equals("sonarUnit")) {
+            throw rules.error(line, "unknown element <" + name + "> in <" + container + ">");
         }
         Integer first = seen.putIfAbsent(name, line);
         if (first != null && !name.equals("sonarUnit")) {
@@ -134,6 +227,7 @@ public final class XmlParameterFileReader {
             case "subclass" -> rules.subclass(text(name, line));
             case "robotShape" -> rules.shape(text(name, line), line);
             case "sonarNum" -> rules.sonarNum(text(name, line), line);
+            case "sonar" -> forEachChild(name, line, this::originalSonarUnit);
             case "sonarUnit" -> {
                 Map<String, String> a = attributes(name, line, SONAR_ATTRIBUTES);
                 for (String wanted : SONAR_ATTRIBUTES) {

@@ -275,7 +275,7 @@ class ParameterFileReaderTest {
 
         ParameterFileException e = assertThrows(ParameterFileException.class, () -> ParameterFileReader.read(file));
 
-        assertNamesFileLineAndRule(file, 4, "SonarUnit needs 4 values (index x y th), found 3", e);
+        assertNamesFileLineAndRule(file, 4, "SonarUnit needs at least 4 values (index x y th), found 3", e);
     }
 
     @Test

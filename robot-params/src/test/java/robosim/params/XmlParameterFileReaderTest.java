@@ -190,7 +190,7 @@ class XmlParameterFileReaderTest {
                 <world width="10" height="10"/>
                 """);
 
-        assertRejected(file, 3, "the root element is <world>, expected <robotParameters>");
+        assertRejected(file, 3, "the root element is <world>, expected <robotParameters> or <robot>");
     }
 
     @Test

@@ -203,6 +203,18 @@ final class SessionRules {
         }
     }
 
+    /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
+    private void overriding(RobotHello hello) {
+        sim.world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
+            String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
+            if (difference != null) {
+                String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();
+                LOG.info(() -> "robot " + hello.name() + ": its program's parameters differ from the world's file"
+                        + file + " (first: " + difference + "); the program's parameters win");
+            }
+        });
+    }
+
     /** Closes a shared link, dropping each of its robots with a log line that names it. */
     private void closeLink(Connection c, String reason) {
         for (String robot : c.robots()) {
@@ -216,6 +228,7 @@ final class SessionRules {
                 sim.stepCount() > 0 || openStep > 0);
         if (refusal == null) {
             try {
+                overriding(hello);
                 sim.useParameters(hello.name(), hello.parameters());
             } catch (IllegalArgumentException e) {
                 refusal = e.getMessage();

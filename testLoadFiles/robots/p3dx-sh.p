@@ -1,0 +1,56 @@
+; Pioneer 3 DX with an SH microcontroller (firmware counts in mm): RoboSim robot model, ARIA's .p form (see docs/PARAMETER-FILES.md)
+ConfigVersion 2.0
+
+Section General settings
+Class Pioneer
+Subclass p3dx-sh
+RobotRadius 250        ; mm, the circle round the body
+RobotDiagonal 120      ; mm
+RobotWidth 425         ; mm
+RobotLength 511        ; mm, bumper to bumper
+RobotLengthFront 210   ; mm ahead of the turning centre
+RobotLengthRear 301    ; mm behind it
+MaxVelocity 2200       ; mm/s, the fastest the robot ever drives
+MaxRVelocity 500       ; deg/s, the fastest it ever turns
+
+Section Conversion factors
+; firmware units to ARIA's: what a Pioneer protocol server speaks
+AngleConvFactor 0.001534 ; rad per angle unit (2 pi / 4096)
+DistConvFactor 1.0     ; mm per distance unit
+VelConvFactor 1.0      ; mm/s per speed unit
+RangeConvFactor 1.0    ; mm per sonar range unit
+DiffConvFactor 0.0056  ; rad/s per mm/s of wheel speed difference
+Vel2Divisor 20         ; VEL2 wheel speed divisor
+
+Section Movement control parameters
+; 0: the firmware's own value (RoboSim: 300 mm/s2 and 100 deg/s2)
+TransAccel 0
+TransDecel 0
+RotAccel 0
+RotDecel 0
+
+Section Sonar parameters
+SonarNum 16            ; transducers
+; SonarUnit <number> <x mm forward> <y mm left> <heading deg>
+SonarUnit 0 69 136 90
+SonarUnit 1 114 119 50
+SonarUnit 2 148 78 30
+SonarUnit 3 166 27 10
+SonarUnit 4 166 -27 -10
+SonarUnit 5 148 -78 -30
+SonarUnit 6 114 -119 -50
+SonarUnit 7 69 -136 -90
+SonarUnit 8 -157 -136 -90
+SonarUnit 9 -203 -119 -130
+SonarUnit 10 -237 -78 -150
+SonarUnit 11 -255 -27 -170
+SonarUnit 12 -255 27 170
+SonarUnit 13 -237 78 150
+SonarUnit 14 -203 119 130
+SonarUnit 15 -157 136 90
+
+Section Laser parameters
+LaserX 21              ; mm forward of the centre
+LaserY 0               ; on the centre line
+LaserTh 0              ; facing forward
+LaserMaxRange 0        ; 0: the laser's default (8000 mm)
