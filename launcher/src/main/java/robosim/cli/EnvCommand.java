@@ -107,6 +107,10 @@ final class EnvCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        // the server's classes are read now, while files can still be opened (see ClassPreload)
+        ClassPreload.load(List.of("robosim."), EnvironmentServer.class, robosim.protocol.Message.class,
+                robosim.pioneer.server.PioneerPorts.class, robosim.pioneer.PioneerPacket.class,
+                robosim.comms.CommsSettings.class, robosim.geometry.GeometryClient.class, EnvCommand.class);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         World w;
