@@ -169,7 +169,7 @@ final class EnvCommand implements Callable<Integer> {
             if (pioneer.requested()) {
                 try {
                     pioneerPorts = pioneer.open(w, bind, server.robotPort(), secret, realtime, out);
-                } catch (IOException e) {
+                } catch (IOException | IllegalArgumentException e) {
                     err.println("robosim env: " + e.getMessage() + " (--pioneer-port chooses others; 0 takes free ports)");
                     return 1;
                 }

@@ -31,6 +31,7 @@ final class BridgeRobot extends AbstractRobot {
     private final CompletableFuture<Void> connected = new CompletableFuture<>();
     private volatile Attached attached;
     private volatile boolean frameResetDue;
+    private volatile boolean cancelled;
     private volatile boolean resetAfterStep;
     private volatile int simStatMode;
     private volatile RobotState latest;
@@ -60,11 +61,23 @@ final class BridgeRobot extends AbstractRobot {
         return connected;
     }
 
+    /** The port no longer waits for this robot's welcome: it leaves the run as soon as it has joined. */
+    void cancel() {
+        cancelled = true;
+        disconnect();
+    }
+
     private void run(String secret) {
         try {
             connectPresenting(options.hardware(), secret);
         } catch (IOException | RuntimeException e) {
             connected.completeExceptionally(e);
+            return;
+        }
+        if (cancelled) {
+            // the port stopped waiting for the welcome: the robot must not stay in the run unserved
+            disconnect();
+            connected.completeExceptionally(new IOException("cancelled"));
             return;
         }
         latest = state();

@@ -22,6 +22,8 @@ final class CommandHandler {
     /** Commands a Pioneer takes that RoboSim does not simulate, ignored after one log line. */
     private static final Set<Integer> NOT_SIMULATED = Set.of(Commands.POLLING, Commands.ENCODER, Commands.GRIPPER,
             Commands.IOREQUEST, Commands.LATVEL, Commands.SIM_CTRL, 26, 30, 31, 58, 92, 113);
+    /** The firmware version the CONFIG reply names. */
+    static final String FIRMWARE = "RoboSim";
     /** The laser commands of the older simulator, which ARIA's simulated laser still sends. */
     static final int OLD_LRF_ENABLE = 35;
     static final int OLD_LRF_START = 36;
@@ -62,9 +64,9 @@ final class CommandHandler {
     private final LaserScan laser;
     private final OdometryFrame frame;
     private final Set<Integer> loggedOnce = new HashSet<>();
-    private boolean motorsEnabled;
-    private boolean sonarOn = true;
-    private int bumpStall;
+    private volatile boolean motorsEnabled;
+    private volatile boolean sonarOn = true;
+    private volatile int bumpStall;
     private int transVelMax;
     private int rotVelMax;
     private int transAccel;
@@ -101,7 +103,7 @@ final class CommandHandler {
      * the parameter file gives them and as the client has set them since.
      *
      * @param name       the robot's name
-     * @param sipCycleMs ms between status packets
+     * @param sipCycleMs ms between status packets (the field holds at most 255)
      * @param watchdogMs the watchdog time
      * @return the reply
      */
@@ -111,8 +113,8 @@ final class CommandHandler {
                 (int) Math.round(params.maxRVelocity()), (int) Math.round(params.maxVelocity()),
                 (int) Math.round(Math.max(params.rotAccel(), params.rotDecel())),
                 (int) Math.round(Math.max(params.transAccel(), params.transDecel())),
-                name, sipCycleMs, false, sonars > 0, sonars > 8, watchdogMs, rotVelMax, transVelMax,
-                rotAccel, rotDecel, transAccel, transDecel, 0, 0, "RoboSim");
+                name, Math.min(sipCycleMs, 255), false, sonars > 0, sonars > 8, watchdogMs, rotVelMax, transVelMax,
+                rotAccel, rotDecel, transAccel, transDecel, 0, 0, FIRMWARE);
     }
 
     /** @return whether the motors are enabled */
@@ -159,11 +161,11 @@ final class CommandHandler {
                 effects.request(new Command.SetSonar(sonarOn));
             }
             case Commands.SETV -> {
-                transVelMax = Math.abs(d.intArgument("mm/s"));
+                transVelMax = (int) Math.min(Math.abs(d.intArgument("mm/s")), Math.round(params.maxVelocity()));
                 effects.request(new Command.SetMaxTransVel(transVelMax));
             }
             case Commands.SETRV -> {
-                rotVelMax = Math.abs(d.intArgument("deg/s"));
+                rotVelMax = (int) Math.min(Math.abs(d.intArgument("deg/s")), Math.round(params.maxRVelocity()));
                 effects.request(new Command.SetMaxRotVel(rotVelMax));
             }
             case Commands.SETA -> limit(d.intArgument("mm/s²"), Command.DriveLimit.TRANS_ACCEL,

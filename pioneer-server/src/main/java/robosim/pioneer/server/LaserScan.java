@@ -11,7 +11,7 @@ import robosim.protocol.Command;
  * −90° to +90° at 1° or 0.5°; a field of view within that is cut from the scan, and a resolution
  * that is a whole multiple of 1° (or of 0.5°) takes every n-th reading. A field of view wider
  * than ±90° is narrowed to it, and a resolution finer than 0.5° becomes 0.5°; each is logged by the
- * session once.
+ * session once. Set by the client's thread and read by the robot's: its methods hold its lock.
  */
 final class LaserScan {
     private boolean on;
@@ -25,13 +25,13 @@ final class LaserScan {
      *
      * @param mode 0 off, 1 plain packets, 2 extended packets
      */
-    void enable(int mode) {
+    synchronized void enable(int mode) {
         on = mode != 0;
         extended = mode == 2;
     }
 
     /** @return whether the laser is on */
-    boolean isOn() {
+    synchronized boolean isOn() {
         return on;
     }
 
@@ -39,7 +39,7 @@ final class LaserScan {
      * @param degrees the first reading's angle from the laser's heading
      * @return null, or what was changed to fit the Environment's laser
      */
-    String setStart(double degrees) {
+    synchronized String setStart(double degrees) {
         start = Math.max(-90, Math.min(90, degrees));
         return start == degrees ? null : "the laser's field of view starts at " + degrees + "°; it is cut to " + start + "°";
     }
@@ -48,7 +48,7 @@ final class LaserScan {
      * @param degrees the last reading's angle from the laser's heading
      * @return null, or what was changed to fit the Environment's laser
      */
-    String setEnd(double degrees) {
+    synchronized String setEnd(double degrees) {
         end = Math.max(-90, Math.min(90, degrees));
         return end == degrees ? null : "the laser's field of view ends at " + degrees + "°; it is cut to " + end + "°";
     }
@@ -57,14 +57,14 @@ final class LaserScan {
      * @param degrees the angle between readings
      * @return null, or what was changed to fit the Environment's laser
      */
-    String setResolution(double degrees) {
+    synchronized String setResolution(double degrees) {
         double r = Math.max(0.5, Math.round(degrees * 2) / 2.0);
         resolution = r;
         return r == degrees ? null : "the laser's resolution of " + degrees + "° is taken as " + r + "°";
     }
 
     /** @return the degrees between the Environment's readings that serve this resolution */
-    double baseIncrement() {
+    synchronized double baseIncrement() {
         return resolution % 1 == 0 ? 1 : 0.5;
     }
 
@@ -72,7 +72,7 @@ final class LaserScan {
      * @param maxRange the laser's range, mm
      * @return the Environment's laser switched as this scan needs
      */
-    Command.ConfigureLaser command(double maxRange) {
+    synchronized Command.ConfigureLaser command(double maxRange) {
         return new Command.ConfigureLaser(on, baseIncrement(), maxRange);
     }
 
@@ -82,7 +82,7 @@ final class LaserScan {
      *         {@value LaserPacket#MAX_READINGS} readings each; none when off or the scan is empty or
      *         of another increment
      */
-    List<LaserPacket> packets(int[] scan) {
+    synchronized List<LaserPacket> packets(int[] scan) {
         List<LaserPacket> out = new ArrayList<>();
         double base = baseIncrement();
         if (!on || scan.length != (int) Math.round(180 / base) + 1) {

@@ -13,6 +13,8 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.IntConsumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import robosim.pioneer.ConfigPacket;
+import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.RobotIdentity;
 
 /**
@@ -43,6 +45,7 @@ final class PioneerPort implements Closeable {
         this.envPort = envPort;
         this.secret = secret;
         this.simExit = simExit;
+        requireFits(served);
         server = new ServerSocket();
         try {
             server.bind(new InetSocketAddress(bind, port));
@@ -54,6 +57,31 @@ final class PioneerPort implements Closeable {
         Thread t = new Thread(this::accept, "pioneer-port-" + port());
         t.setDaemon(true);
         t.start();
+    }
+
+    /**
+     * The robot's name, class and subclass go into the SYNC2 answer and the CONFIG reply, which ARIA
+     * reads only up to {@value PioneerPacket#ARIA_LIMIT} bytes.
+     *
+     * @throws IllegalArgumentException naming the robot when they are too long
+     */
+    static void requireFits(ServedRobot r) {
+        String name = r.name();
+        String robotClass = r.parameters().robotClass();
+        String subclass = r.parameters().subclass();
+        int longest;
+        try {
+            longest = Math.max(new RobotIdentity(name, robotClass, subclass).toPacket().encode().length,
+                    new ConfigPacket(robotClass, subclass, "SIM", 0, 0, 0, 0, name, 0, false, false, false, 0, 0, 0, 0,
+                            0, 0, 0, 0, 0, CommandHandler.FIRMWARE).toPacket().encode().length);
+        } catch (IllegalArgumentException tooLong) {
+            longest = Integer.MAX_VALUE;
+        }
+        if (longest > PioneerPacket.ARIA_LIMIT) {
+            throw new IllegalArgumentException("robot " + name + "'s name, class and subclass (" + (name.length()
+                    + robotClass.length() + subclass.length()) + " characters) are too long for the Pioneer protocol's "
+                    + PioneerPacket.ARIA_LIMIT + "-byte packets; shorten them to serve it on a Pioneer port");
+        }
     }
 
     /** @return the port it listens on */
@@ -112,6 +140,10 @@ final class PioneerPort implements Closeable {
 
     /** A client finished the handshake: the robot joins the run if it has not, and the client drives it. */
     private void connected(PioneerSession session) {
+        if (closed) {
+            session.end("the Pioneer port closed");
+            return;
+        }
         BridgeRobot b = bridge;
         if (b == null || !b.isConnected()) {
             if (b != null && b.getRunEnd() != null) {
@@ -126,11 +158,18 @@ final class PioneerPort implements Closeable {
                         + ": " + e.getCause().getMessage());
                 return;
             } catch (TimeoutException e) {
+                b.cancel();
                 session.end("the Environment did not welcome robot " + served.name() + " in time");
                 return;
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
+                b.cancel();
                 session.end("interrupted");
+                return;
+            }
+            if (closed) {
+                b.disconnect();
+                session.end("the Pioneer port closed");
                 return;
             }
             bridge = b;
@@ -153,6 +192,10 @@ final class PioneerPort implements Closeable {
             server.close();
         } catch (IOException e) {
             LOG.log(Level.FINE, "closing", e);
+        }
+        PioneerSession s = current;
+        if (s != null) {
+            s.end("the Pioneer port closed");
         }
         BridgeRobot b = bridge;
         if (b != null) {

@@ -5,6 +5,9 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Level;
@@ -31,6 +34,8 @@ final class PioneerSession {
     /** How long a client may be silent before its port is freed, ms. */
     static final int SILENT_MS = 15_000;
     private static final int CHECK_MS = 1000;
+    /** The packets that may wait for a client that reads slowly. */
+    static final int MAX_QUEUED = 256;
 
     private enum Phase { SYNC0, SYNC1, SYNC2, CONNECTED }
 
@@ -47,6 +52,7 @@ final class PioneerSession {
     private volatile CommandHandler handler;
     private volatile Supplier<ConfigPacket> config;
     private volatile Runnable onEnd;
+    private final BlockingQueue<byte[]> outgoing = new ArrayBlockingQueue<>(MAX_QUEUED);
     private long drops;
     private long lastDropLogNanos;
 
@@ -74,6 +80,9 @@ final class PioneerSession {
         Thread t = new Thread(this::read, "pioneer-" + robot);
         t.setDaemon(true);
         t.start();
+        Thread w = new Thread(this::write, "pioneer-write-" + robot);
+        w.setDaemon(true);
+        w.start();
     }
 
     /**
@@ -114,22 +123,48 @@ final class PioneerSession {
                 try {
                     n = in.read(buf);
                 } catch (SocketTimeoutException e) {
-                    String late = late(started);
-                    if (late != null) {
-                        why = late;
-                        break;
-                    }
-                    continue;
+                    n = 0;
                 }
                 if (n < 0) {
                     break;
                 }
-                decoder.feed(buf, 0, n);
+                if (n > 0) {
+                    decoder.feed(buf, 0, n);
+                }
+                // checked after every read: bytes that never make a packet do not keep a client in
+                String late = late(started);
+                if (late != null) {
+                    why = late;
+                    break;
+                }
             }
         } catch (IOException e) {
             why = ended ? "closed" : "the connection failed: " + e.getMessage();
+        } catch (RuntimeException e) {
+            why = "serving it failed: " + e;
+            LOG.log(Level.WARNING, "robot " + robot + ": serving the ARIA client at " + client + " failed", e);
+        } finally {
+            end(why);
         }
-        end(why);
+    }
+
+    /** Writes the queued packets, on a thread of its own, so that a client that does not read holds back nobody. */
+    private void write() {
+        try {
+            while (!ended) {
+                byte[] bytes = outgoing.poll(CHECK_MS, TimeUnit.MILLISECONDS);
+                if (bytes != null) {
+                    out.write(bytes);
+                    if (outgoing.isEmpty()) {
+                        out.flush();
+                    }
+                }
+            }
+        } catch (IOException e) {
+            end("writing to the client failed: " + e.getMessage());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /**
@@ -220,7 +255,8 @@ final class PioneerSession {
     }
 
     /**
-     * Writes a packet; a failure ends the session.
+     * Queues a packet for the client. A client that has let {@value #MAX_QUEUED} packets (some
+     * seconds of status and laser packets) pile up unread is closed: it holds back nobody.
      *
      * @param p the packet
      */
@@ -228,13 +264,8 @@ final class PioneerSession {
         if (ended) {
             return;
         }
-        try {
-            synchronized (out) {
-                out.write(p.encode());
-                out.flush();
-            }
-        } catch (IOException e) {
-            end("writing to the client failed: " + e.getMessage());
+        if (!outgoing.offer(p.encode())) {
+            end("it has not read the last " + MAX_QUEUED + " packets sent to it");
         }
     }
 
