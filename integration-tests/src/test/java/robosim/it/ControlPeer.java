@@ -32,10 +32,13 @@ final class ControlPeer implements AutoCloseable {
         throw new AssertionError("expected a controlReply, got " + (m instanceof Bye b ? "bye: " + b.reason() : m));
     }
 
-    /** Sends a request and reads its answer. */
+    /** Sends a request and reads its answer, passing over the answers to requests sent before it without waiting. */
     ControlReply ask(String op, String... args) throws IOException {
         send(op, args);
         ControlReply r = reply();
+        while (r.id() < next - 1) {
+            r = reply();
+        }
         if (r.id() != next - 1) {
             throw new AssertionError("the answer " + r + " is not to request " + (next - 1));
         }

@@ -345,8 +345,9 @@ public final class EnvironmentServer implements AutoCloseable {
     /**
      * Sends a {@link KeepAlive} to every robot connection and shared link that has said hello, once
      * robots have been sent nothing for {@link #KEEP_ALIVE_MS}: before the first step while other
-     * robots are still connecting, and while a slow robot holds a step up. A robot that hears
-     * nothing, neither a step nor a keep-alive, for its lost time declares the Environment lost.
+     * robots are still connecting, while a slow robot holds a step up, and while the run is paused.
+     * A robot that hears nothing, neither a step nor a keep-alive, for its lost time declares the
+     * Environment lost.
      */
     private void keepRobotsAlive() {
         long now = System.nanoTime();
