@@ -1,8 +1,6 @@
 package robosim.cli;
 
 import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -11,13 +9,8 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.CommsUpdate;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
-import robosim.protocol.MessageCodec;
 import robosim.protocol.Bye;
-import robosim.protocol.ControlHello;
-import robosim.protocol.RunSecret;
 
 /** {@code robosim comms}: changes a running Environment's communication settings. */
 @Command(name = "comms", mixinStandardHelpOptions = true,
@@ -52,26 +45,11 @@ final class CommsCommand implements Callable<Integer> {
         if (range == null && wallsBlock == null && latency == null && loss == null && maxBytes == null) {
             throw new ParameterException(spec.commandLine(), "give at least one setting to change: --range, --walls-block, --latency, --loss or --max-bytes");
         }
-        String token;
-        try {
-            String bad = secret.apply();
-            if (bad != null) {
-                throw new IllegalArgumentException(bad);
-            }
-            token = RunSecret.find(null, at.host, at.port());
-        } catch (IllegalArgumentException e) {
-            throw new ParameterException(spec.commandLine(), e.getMessage());
-        }
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(at.host, at.port()), 10_000);
-            s.setSoTimeout(10_000);
-            MessageCodec codec = new MessageCodec();
-            FrameWriter w = new FrameWriter(s.getOutputStream(), codec);
-            w.write(new ControlHello("comms", token));
-            w.write(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
-            FrameReader r = new FrameReader(s.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
+        String token = ControlConnection.token(spec, secret, at);
+        try (ControlConnection c = ControlConnection.open(at, "comms", token, 10_000)) {
+            c.send(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
             Message m;
-            while ((m = r.read()) != null) {
+            while ((m = c.read()) != null) {
                 if (m instanceof CommsUpdate now) {
                     spec.commandLine().getOut().printf(java.util.Locale.ROOT,
                             "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",

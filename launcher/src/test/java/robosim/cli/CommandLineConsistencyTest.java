@@ -26,6 +26,8 @@ class CommandLineConsistencyTest {
             "env --port", "--robot-port",
             "viewer --port", "--viewer-port",
             "comms --port", "--viewer-port",
+            // control shares the viewer-port options, and so the old name, with comms and viewer
+            "control --port", "--viewer-port",
             "demo --out", "--out-dir",
             "demo --max-steps", "--steps",
             "goldfinder --out", "--out-dir",

@@ -27,8 +27,11 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = LinkRequests.class, name = "linkRequests"),
         @JsonSubTypes.Type(value = ControlHello.class, name = "controlHello"),
         @JsonSubTypes.Type(value = KeepAlive.class, name = "keepAlive"),
+        @JsonSubTypes.Type(value = ControlRequest.class, name = "controlRequest"),
+        @JsonSubTypes.Type(value = ControlReply.class, name = "controlReply"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
-        CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello, KeepAlive {
+        CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello, KeepAlive,
+        ControlRequest, ControlReply {
 }

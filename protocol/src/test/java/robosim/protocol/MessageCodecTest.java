@@ -163,6 +163,33 @@ class MessageCodecTest {
         assertEquals(new KeepAlive(42), roundTrip(format, Messages.keepAlive()));
     }
 
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void controlMessagesRoundTripTheirArgumentsAndAnswer(Format format) throws FrameException {
+        assertEquals(Messages.controlRequest(), roundTrip(format, Messages.controlRequest()));
+        assertEquals(Messages.controlReply(), roundTrip(format, Messages.controlReply()));
+    }
+
+    @Test
+    void controlRequestWithoutArgumentsOnTheWireHasNone() throws FrameException {
+        MessageCodec json = new MessageCodec(Format.JSON);
+
+        Message m = json.decode("{\"type\":\"controlRequest\",\"id\":3,\"op\":\"pause\"}".getBytes(StandardCharsets.UTF_8));
+
+        assertEquals(new ControlRequest(3, "pause", List.of()), m);
+    }
+
+    @Test
+    void controlRequestWithTooManyArgumentsBreaksItsRule() {
+        MessageCodec json = new MessageCodec(Format.JSON);
+        byte[] payload = ("{\"type\":\"controlRequest\",\"id\":3,\"op\":\"move\",\"args\":"
+                + "[\"1\",\"2\",\"3\",\"4\",\"5\",\"6\",\"7\",\"8\",\"9\"]}").getBytes(StandardCharsets.UTF_8);
+
+        InvalidValueException e = assertThrows(InvalidValueException.class, () -> json.decode(payload));
+
+        assertTrue(e.getMessage().contains("at most 8 arguments, got 9"), e.getMessage());
+    }
+
     @Test
     void fixturesHoldOneMessageOfEveryType() {
         Set<Class<?>> covered = Messages.all().stream().map(Object::getClass).collect(Collectors.toSet());
@@ -242,6 +269,8 @@ class MessageCodecTest {
         "TimeSteps, timeSteps",
         "LinkRequests, linkRequests",
         "KeepAlive, keepAlive",
+        "ControlRequest, controlRequest",
+        "ControlReply, controlReply",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
         Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))

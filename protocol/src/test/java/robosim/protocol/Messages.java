@@ -140,9 +140,17 @@ final class Messages {
         return new KeepAlive(42);
     }
 
+    static ControlRequest controlRequest() {
+        return new ControlRequest(7, "move", List.of("robot1", "1500", "-250.5", "90"));
+    }
+
+    static ControlReply controlReply() {
+        return new ControlReply(7, false, "move: no robot named 'robot9' in world demo");
+    }
+
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
                 snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), controlHello(),
-                keepAlive());
+                keepAlive(), controlRequest(), controlReply());
     }
 }

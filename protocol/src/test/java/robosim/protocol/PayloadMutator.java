@@ -38,7 +38,7 @@ public final class PayloadMutator {
     private static final SmileFactory SMILE = SmileFactory.builder().streamWriteConstraints(UNLIMITED).build();
     /** Every message type and command name, so that a swapped name makes a known type of the wrong shape. */
     private static final List<String> TYPES = List.of("robotHello", "welcome", "timeStep", "robotRequests",
-            "viewerHello", "world", "frame", "bye", "commsUpdate", "linkHello", "timeSteps", "linkRequests", "vel",
+            "viewerHello", "world", "frame", "bye", "commsUpdate", "linkHello", "timeSteps", "linkRequests", "controlRequest", "controlReply", "vel",
             "rotVel", "vel2", "move", "heading", "deltaHeading", "stop", "maxVel", "maxRotVel", "sonar", "laser",
             "heatSensor", "send", "join", "leave", "found", "say", "moveWheels", "accel", "teleport", "", "Frame");
 

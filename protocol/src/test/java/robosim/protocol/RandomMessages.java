@@ -25,7 +25,7 @@ public final class RandomMessages {
 
     /** @return a message of a random type */
     public Message any() {
-        return switch (random.nextInt(12)) {
+        return switch (random.nextInt(14)) {
             case 0 -> new RobotHello(text(), text(), nullOr(this::parameters));
             case 1 -> new Welcome(text(), (int) anyLong(), nullOr(this::state));
             case 2 -> new TimeStep(anyLong(), anyLong(), nullOr(this::state));
@@ -39,6 +39,8 @@ public final class RandomMessages {
             case 9 -> new LinkHello(text());
             case 10 -> new TimeSteps(anyLong(), anyLong(),
                     list(() -> new TimeSteps.ForRobot(text(), nullOr(this::state)), 4));
+            case 12 -> new ControlRequest(anyLong(), text(), list(() -> text(40), ControlRequest.MAX_ARGS));
+            case 13 -> new ControlReply(anyLong(), random.nextBoolean(), text());
             default -> new LinkRequests(anyLong(), list(() -> new LinkRequests.ForRobot(text(), commands()), 4));
         };
     }

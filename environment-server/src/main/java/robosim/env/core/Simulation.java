@@ -272,16 +272,55 @@ public final class Simulation {
         } else {
             throw new IllegalStateException("no handler for the simulator command " + c);
         }
-        String where = String.format("(%.0f, %.0f, %.0f)", to.x(), to.y(), Math.toDegrees(to.th()));
-        if (Math.abs(to.x()) > MAX_PLACEMENT || Math.abs(to.y()) > MAX_PLACEMENT) {
-            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where + " at step " + current
-                    + ": a pose is within " + (long) MAX_PLACEMENT + " mm of the origin");
-        } else if (geometry.overlaps(r.body, to, r.bodyId)) {
-            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where + " at step " + current
-                    + ": its body would overlap something there");
+        String refusal = placeRefusal(r, to);
+        if (refusal != null) {
+            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where(to) + " at step " + current
+                    + ": " + refusal);
         } else {
             r.place(geometry, to, reset);
         }
+    }
+
+    /** @return why a robot cannot stand at a pose, or null if it can */
+    private String placeRefusal(SimRobot r, Pose2D to) {
+        if (Math.abs(to.x()) > MAX_PLACEMENT || Math.abs(to.y()) > MAX_PLACEMENT) {
+            return "a pose is within " + (long) MAX_PLACEMENT + " mm of the origin";
+        }
+        if (geometry.overlaps(r.body, to, r.bodyId)) {
+            return "its body would overlap something there";
+        }
+        return null;
+    }
+
+    private static String where(Pose2D to) {
+        return String.format(java.util.Locale.ROOT, "(%.0f, %.0f, %.0f)", to.x(), to.y(), Math.toDegrees(to.th()));
+    }
+
+    /**
+     * Places a robot at a true pose between steps without changing its odometry, as a robot's own
+     * {@link Command.SetTruePose} does within a step (MobileSim's SIM_SET_POSE): its program sees the
+     * jump only in its true pose, its sensors read the new place at the next step.
+     *
+     * @param name the robot
+     * @param x    mm
+     * @param y    mm
+     * @param th   degrees
+     * @return why the robot cannot be placed there (the robot then stays where it is), or null once placed
+     * @throws IllegalArgumentException if the robot is unknown or a value is not finite
+     */
+    public String place(String name, double x, double y, double th) {
+        SimRobot r = robot(name);
+        if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(th)) {
+            throw new IllegalArgumentException("robot " + name + " cannot be placed at (" + x + ", " + y + ", " + th
+                    + "): a pose is finite");
+        }
+        Pose2D to = new Pose2D(x, y, Math.toRadians(th));
+        String refusal = placeRefusal(r, to);
+        if (refusal != null) {
+            return "robot " + name + " cannot be placed at " + where(to) + ": " + refusal;
+        }
+        r.place(geometry, to, false);
+        return null;
     }
 
     /** A robot's report of a find counts when its centre is this near the gold, mm. */

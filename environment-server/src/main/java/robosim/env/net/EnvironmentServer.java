@@ -36,7 +36,8 @@ import robosim.protocol.recording.SnapshotListeners;
  * The Environment on the network: accepts robots and viewers, waits for every robot the world
  * names, then drives lockstep steps: it sends each robot its time step and state, waits (up to the
  * step deadline) for every robot's requests for that step, advances the {@link Simulation}, and
- * sends the new snapshot to the viewers.
+ * sends the new snapshot to the viewers. Between two steps it carries out what control clients
+ * asked for ({@link RunControl}: pause, step, pace, move, remove, stop).
  *
  * <p>One thread does it all: the step loop serves every connection through one selector between
  * steps, so no thread handoff stands between a robot's requests and the next step. Only inside a
@@ -50,6 +51,8 @@ public final class EnvironmentServer implements AutoCloseable {
     static final int ROBOTS_PER_FRAME = 100;
     /** How long robots may hear nothing from the Environment before it sends them a {@link KeepAlive}, ms. */
     static final long KEEP_ALIVE_MS = 1_000;
+    /** How often a paused run looks up from waiting for requests, ms: well within {@link #KEEP_ALIVE_MS}. */
+    static final long PAUSED_WAKE_MS = 250;
 
     private final Simulation sim;
     private final ServerOptions options;
@@ -188,34 +191,39 @@ public final class EnvironmentServer implements AutoCloseable {
     }
 
     private String loop() throws InterruptedException {
-        long start = System.nanoTime();
-        progress.runningSince(start);
+        progress.runningSince(System.nanoTime());
         int stepMs = sim.world().stepMs();
+        RunControl control = rules.control();
+        control.startPace(options.realtime() ? 1 : 0);
         while (true) {
             if (progress.following()) {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
                 progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
-            if (rules.connectedRobots().isEmpty()) {
-                return "every robot has disconnected";
+            String end = endReason();
+            if (end == null) {
+                // control requests are carried out here, between steps, so the same requests at the same steps give the same run
+                end = control.atBoundary();
             }
-            if (options.maxSteps() > 0 && sim.stepCount() >= options.maxSteps()) {
-                return "step limit " + options.maxSteps() + " reached";
-            }
-            // a find ends the run once the finder's news has had time to reach its team
-            Find find = sim.find();
-            if (find != null && sim.stepCount() >= find.step() + sim.commsSettings().latencySteps() + 1) {
-                return "gold found by " + find.robot() + " at step " + find.step();
+            if (end != null) {
+                return end;
             }
             long current = sim.stepCount() + 1;
-            if (options.realtime()) {
-                long due = start + TimeUnit.MILLISECONDS.toNanos((current - 1) * stepMs);
-                while (System.nanoTime() < due) {
-                    pump(due);
-                }
+            if (control.holding()) {
+                // paused: no step is open, so no deadline runs; the pump keeps the robots alive
+                pump(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAUSED_WAKE_MS));
+                continue;
+            }
+            long now = System.nanoTime();
+            long due = control.due(current, stepMs, now);
+            if (now < due) {
+                // waking for a request too, so a pause or a new pace need not wait out a slow pace
+                pump(due);
+                continue;
             }
             Map<String, List<Command>> commands = collect(current);
             sim.step(commands);
+            control.stepped();
             // the snapshot is built only when someone watches: benchmarks and headless runs skip it
             if (rules.viewerCount() > 0 || listeners.size() > 0) {
                 Snapshot snapshot = sim.snapshot();
@@ -223,6 +231,22 @@ public final class EnvironmentServer implements AutoCloseable {
                 listeners.snapshot(snapshot);
             }
         }
+    }
+
+    /** @return why the run ends now of itself (no robots, the step limit, the gold found), or null */
+    private String endReason() {
+        if (rules.connectedRobots().isEmpty()) {
+            return "every robot has disconnected";
+        }
+        if (options.maxSteps() > 0 && sim.stepCount() >= options.maxSteps()) {
+            return "step limit " + options.maxSteps() + " reached";
+        }
+        // a find ends the run once the finder's news has had time to reach its team
+        Find find = sim.find();
+        if (find != null && sim.stepCount() >= find.step() + sim.commsSettings().latencySteps() + 1) {
+            return "gold found by " + find.robot() + " at step " + find.step();
+        }
+        return null;
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
@@ -321,8 +345,9 @@ public final class EnvironmentServer implements AutoCloseable {
     /**
      * Sends a {@link KeepAlive} to every robot connection and shared link that has said hello, once
      * robots have been sent nothing for {@link #KEEP_ALIVE_MS}: before the first step while other
-     * robots are still connecting, and while a slow robot holds a step up. A robot that hears
-     * nothing, neither a step nor a keep-alive, for its lost time declares the Environment lost.
+     * robots are still connecting, while a slow robot holds a step up, and while the run is paused.
+     * A robot that hears nothing, neither a step nor a keep-alive, for its lost time declares the
+     * Environment lost.
      */
     private void keepRobotsAlive() {
         long now = System.nanoTime();

@@ -44,6 +44,7 @@ final class SessionRules {
     private final RobotAdmission admission;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final ViewerPortRules viewerPort;
+    private final RunControl control;
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
     private long openStep;
@@ -58,7 +59,13 @@ final class SessionRules {
         this.sim = sim;
         this.access = access;
         this.admission = new RobotAdmission(sim, access);
-        this.viewerPort = new ViewerPortRules(sim, access, limits);
+        this.control = new RunControl(sim, this);
+        this.viewerPort = new ViewerPortRules(sim, access, limits, control);
+    }
+
+    /** @return the control clients' requests, for the step loop to carry out between steps */
+    RunControl control() {
+        return control;
     }
 
     boolean allConnected() {

@@ -9,6 +9,7 @@ import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlHello;
+import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
@@ -19,7 +20,7 @@ import robosim.protocol.ViewerHello;
 /**
  * The protocol's rules for the viewer port, part of {@link SessionRules}: a viewer says hello (with
  * the run secret, unless anyone may watch) and then only listens; a control client says hello with
- * the secret and may then change the comms settings. Both are capped in number, and all viewers'
+ * the secret and may then change the comms settings and control the run ({@link RunControl}). Both are capped in number, and all viewers'
  * queues share one budget: past it, the viewer furthest behind is dropped, named.
  */
 final class ViewerPortRules {
@@ -30,9 +31,11 @@ final class ViewerPortRules {
     private final Limits limits;
     private final List<Connection> viewers = new ArrayList<>();
     private final List<Connection> controls = new ArrayList<>();
+    private final RunControl control;
 
-    ViewerPortRules(Simulation sim, Access access, Limits limits) {
+    ViewerPortRules(Simulation sim, Access access, Limits limits, RunControl control) {
         this.sim = sim;
+        this.control = control;
         this.access = access;
         this.limits = limits;
     }
@@ -91,12 +94,15 @@ final class ViewerPortRules {
             controlHello(c, hello);
         } else if (c.isControl() && m instanceof CommsUpdate u) {
             commsUpdate(c, u);
-        } else if (c.greeted() && !c.isControl() && m instanceof CommsUpdate) {
+        } else if (c.isControl() && m instanceof ControlRequest r) {
+            control.received(c, r);
+        } else if (c.greeted() && !c.isControl() && (m instanceof CommsUpdate || m instanceof ControlRequest)) {
             c.sendAndClose(new Bye(Bye.REFUSED + "a viewer cannot change the run; a control client that presents the"
-                    + " run secret can (robosim comms)"));
-            LOG.warning(() -> "closing " + c.peer() + ": it sent commsUpdate; a viewer cannot change the run");
+                    + " run secret can (robosim comms, robosim control)"));
+            LOG.warning(() -> "closing " + c.peer() + ": it sent " + typeOf(m) + "; a viewer cannot change the run");
         } else if (c.isControl()) {
-            c.close("sent " + typeOf(m) + "; a control client sends controlHello once, then only commsUpdate");
+            c.close("sent " + typeOf(m) + "; a control client sends controlHello once, then only commsUpdate and"
+                    + " controlRequest");
         } else if (!c.greeted()) {
             c.close("sent " + typeOf(m) + "; the viewer port's first message is viewerHello or controlHello");
         } else {

@@ -28,6 +28,7 @@ import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlHello;
+import robosim.protocol.ControlRequest;
 import robosim.protocol.InvalidValueException;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
@@ -695,6 +696,23 @@ class SessionRulesTest {
             Bye bye = assertInstanceOf(Bye.class, viewer.read());
             assertTrue(bye.reason().startsWith("refused: a viewer cannot change the run"), bye.reason());
             assertEquals(0.0, sim.commsSettings().lossProbability());
+        }
+
+        @Test
+        void aViewerCannotControlTheRun() throws IOException {
+            guard(true);
+            Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+            viewer.send(new ViewerHello("v", SECRET));
+            deliver(viewer);
+            viewer.read();
+            viewer.read();
+
+            viewer.send(new ControlRequest(1, "stop", List.of()));
+            deliver(viewer);
+
+            Bye bye = assertInstanceOf(Bye.class, viewer.read());
+            assertTrue(bye.reason().startsWith("refused: a viewer cannot change the run"), bye.reason());
+            assertEquals(null, rules.control().atBoundary(), "nothing was queued to stop the run");
         }
 
         @Test

@@ -1,0 +1,199 @@
+package robosim.env.net;
+
+import java.util.ArrayDeque;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Logger;
+import robosim.env.core.Simulation;
+import robosim.protocol.ControlReply;
+import robosim.protocol.ControlRequest;
+import robosim.protocol.RobotHello;
+
+/**
+ * Run control, part of {@link SessionRules}: the control clients' pause, resume, step N, stop, pace,
+ * move and remove. A request whose values break a rule is refused at once and changes nothing; the
+ * others wait for the next step boundary (after the step under way, before the next is opened) and
+ * are carried out there in the order they came, so that the same requests at the same steps give the
+ * same run. Each is answered with a {@link ControlReply}; a client that has gone meanwhile is not
+ * answered, but what it asked for is still done.
+ *
+ * <p>While paused no step is opened, so no robot's step deadline runs; the step loop keeps the robots
+ * connected with keep-alives. {@code step N} runs N steps and pauses again, answering once they are run.
+ */
+final class RunControl {
+    private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
+    /** The most requests waiting for a step boundary, all clients together. */
+    static final int MAX_PENDING = 64;
+
+    /** A request checked and waiting for the step boundary. */
+    private record Pending(Connection from, long id, ControlOp op) { }
+
+    private final Simulation sim;
+    private final SessionRules rules;
+    private final ArrayDeque<Pending> pending = new ArrayDeque<>();
+    private boolean paused;
+    private long stepsLeft;
+    private Pending stepping;
+    /** 0 for as fast as possible, else a factor of real time. */
+    private double pace;
+    private boolean rebase = true;
+    private long baseNanos;
+    private long baseStep;
+
+    RunControl(Simulation sim, SessionRules rules) {
+        this.sim = sim;
+        this.rules = rules;
+    }
+
+    /** @param factor the pace the run starts with: 0 for as fast as possible, 1 for real time */
+    void startPace(double factor) {
+        pace = factor;
+    }
+
+    /** A control client sent a request: refused now if a value breaks a rule, else kept for the step boundary. */
+    void received(Connection c, ControlRequest r) {
+        ControlOp op;
+        try {
+            op = ControlOp.parse(r, sim);
+        } catch (IllegalArgumentException e) {
+            refuse(c, r.id(), e.getMessage());
+            return;
+        }
+        if (pending.size() >= MAX_PENDING) {
+            refuse(c, r.id(), MAX_PENDING + " control requests already wait for the end of the step under way");
+            return;
+        }
+        pending.add(new Pending(c, r.id(), op));
+    }
+
+    /**
+     * Between two steps: carries out the waiting requests in the order they came.
+     *
+     * @return why the run ends, if a client stopped it; else null
+     */
+    String atBoundary() {
+        while (!pending.isEmpty()) {
+            String end = apply(pending.poll());
+            if (end != null) {
+                return end;
+            }
+        }
+        return null;
+    }
+
+    /** @return whether the loop must not open a step now: paused, and no {@code step N} under way */
+    boolean holding() {
+        return paused && stepsLeft == 0;
+    }
+
+    /**
+     * @param current the step about to be opened
+     * @param stepMs  the world's step length
+     * @param now     the time now, ns
+     * @return when the step may be opened at the pace in force (counted from the last change of pace
+     *         or resume, so that a pause is not made up for by a burst), ns; now when there is no pace
+     */
+    long due(long current, int stepMs, long now) {
+        if (pace == 0) {
+            return now;
+        }
+        if (rebase) {
+            rebase = false;
+            baseNanos = now;
+            baseStep = current - 1;
+        }
+        return baseNanos + (long) ((current - 1 - baseStep) * (double) TimeUnit.MILLISECONDS.toNanos(stepMs) / pace);
+    }
+
+    /** A step has been run: counts down a {@code step N}, answering it when its steps are done. */
+    void stepped() {
+        if (stepsLeft > 0 && --stepsLeft == 0) {
+            ControlOp.Step s = (ControlOp.Step) stepping.op();
+            reply(stepping, true, "ran " + s.steps() + " step" + (s.steps() == 1 ? "" : "s") + "; paused after step "
+                    + sim.stepCount());
+            stepping = null;
+        }
+    }
+
+    private String apply(Pending p) {
+        long k = sim.stepCount();
+        String who = "control client " + RobotHello.printable(p.from().name());
+        ControlOp op = p.op();
+        if (op instanceof ControlOp.Pause) {
+            reply(p, true, paused ? "already paused at step " + k : "paused after step " + k);
+            paused = true;
+        } else if (op instanceof ControlOp.Resume) {
+            if (stepping != null) {
+                reply(stepping, true, "resumed by " + who + " after step " + k + " with "
+                        + stepsLeft + " of the steps still to run");
+                stepping = null;
+                stepsLeft = 0;
+            }
+            reply(p, true, paused ? "resumed after step " + k : "already running (step " + k + ")");
+            paused = false;
+            rebase = true;
+        } else if (op instanceof ControlOp.Step s) {
+            if (!paused) {
+                reply(p, false, "step N runs steps while the run is paused; it runs (step " + k + "): pause it first");
+            } else if (stepping != null) {
+                reply(p, false, "a step N is under way: " + stepsLeft + " steps still to run");
+            } else {
+                stepping = p;
+                stepsLeft = s.steps();
+                rebase = true;
+            }
+        } else if (op instanceof ControlOp.Stop) {
+            reply(p, true, "stopped after step " + k);
+            LOG.info(() -> who + " stopped the run after step " + k);
+            return "stopped by " + who;
+        } else if (op instanceof ControlOp.Pace pc) {
+            pace = pc.factor();
+            rebase = true;
+            reply(p, true, "pace " + describe(pace) + " from step " + (k + 1));
+        } else if (op instanceof ControlOp.Move m) {
+            move(p, m, k);
+        } else if (op instanceof ControlOp.Remove r) {
+            remove(p, r, who, k);
+        }
+        return null;
+    }
+
+    private void move(Pending p, ControlOp.Move m, long k) {
+        String refusal = sim.place(m.robot(), m.x(), m.y(), m.th());
+        if (refusal != null) {
+            reply(p, false, refusal + " (after step " + k + ")");
+            return;
+        }
+        LOG.info(() -> "control client " + RobotHello.printable(p.from().name()) + " moved robot " + m.robot()
+                + " after step " + k);
+        reply(p, true, String.format(Locale.ROOT, "robot %s moved to (%.0f, %.0f, %.0f) after step %d", m.robot(),
+                m.x(), m.y(), m.th(), k));
+    }
+
+    private void remove(Pending p, ControlOp.Remove r, String who, long k) {
+        if (!rules.connectedRobots().containsKey(r.robot())) {
+            reply(p, false, "robot " + r.robot() + " is not in the run: its program is not connected");
+            return;
+        }
+        LOG.info(() -> who + " removed robot " + r.robot() + " after step " + k);
+        rules.drop(r.robot(), "removed by " + who + " after step " + k);
+        reply(p, true, "robot " + r.robot() + " removed after step " + k + "; it stays where it stopped");
+    }
+
+    /** @return the pace as a user gives it */
+    static String describe(double pace) {
+        if (pace == 0) {
+            return "max (as fast as possible)";
+        }
+        return pace == 1 ? "realtime" : String.format(Locale.ROOT, "%s x real time", pace);
+    }
+
+    private static void reply(Pending p, boolean ok, String text) {
+        p.from().send(new ControlReply(p.id(), ok, text));
+    }
+
+    private static void refuse(Connection c, long id, String reason) {
+        LOG.info(() -> "refusing " + c.peer() + "'s control request: " + reason);
+        c.send(new ControlReply(id, false, reason));
+    }
+}

@@ -1,0 +1,93 @@
+package robosim.cli;
+
+import java.io.IOException;
+import java.net.SocketTimeoutException;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import robosim.protocol.Bye;
+import robosim.protocol.ControlReply;
+import robosim.protocol.ControlRequest;
+import robosim.protocol.Message;
+
+/**
+ * {@code robosim control}: pauses, resumes, steps, paces or stops a running Environment, or moves or
+ * removes one of its robots, for scripts: the Environment's answer is printed, and a refusal exits 1.
+ */
+@Command(name = "control", mixinStandardHelpOptions = true,
+        description = {"Control a running Environment and print its answer; exit 1 when it refuses.",
+            "Operations: pause | resume | step N (while paused: run N steps, then pause) | stop (end the run"
+                    + " cleanly) | pace max|realtime|K (K times real time) | move NAME X Y TH (mm, mm, degrees;"
+                    + " odometry unchanged) | remove NAME.",
+            "The Environment carries each out between two steps. restart and load are not yet supported."})
+final class ControlCommand implements Callable<Integer> {
+    /** The id of the one request the command sends. */
+    private static final long ID = 1;
+
+    @Spec
+    CommandSpec spec;
+
+    @Mixin
+    ViewerPortOptions at;
+
+    @Mixin
+    SecretOption secret;
+
+    @Option(names = "--timeout", defaultValue = "60", paramLabel = "SECONDS",
+            description = "the longest wait for the answer (a step N answers once its steps are run); default"
+                    + " ${DEFAULT-VALUE}")
+    int timeoutSeconds;
+
+    @Parameters(index = "0", paramLabel = "OPERATION", description = "pause, resume, step, stop, pace, move or remove")
+    String op;
+
+    @Parameters(index = "1..*", paramLabel = "ARG", description = "the operation's arguments")
+    List<String> args = List.of();
+
+    @Override
+    public Integer call() {
+        if (timeoutSeconds < 1 || timeoutSeconds > 3600) {
+            throw new ParameterException(spec.commandLine(), "--timeout: from 1 to 3600 seconds, got " + timeoutSeconds);
+        }
+        if (args.size() > ControlRequest.MAX_ARGS) {
+            throw new ParameterException(spec.commandLine(), "at most " + ControlRequest.MAX_ARGS
+                    + " arguments, got " + args.size());
+        }
+        String token = ControlConnection.token(spec, secret, at);
+        try (ControlConnection c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
+            c.send(new ControlRequest(ID, op, args));
+            Message m;
+            while ((m = c.read()) != null) {
+                if (m instanceof ControlReply reply && reply.id() == ID) {
+                    if (reply.ok()) {
+                        spec.commandLine().getOut().println(reply.text());
+                        return 0;
+                    }
+                    spec.commandLine().getErr().println("robosim control: refused: " + reply.text());
+                    return 1;
+                }
+                if (m instanceof Bye bye) {
+                    spec.commandLine().getErr().println("robosim control: the Environment " + bye.reason());
+                    return 1;
+                }
+            }
+            spec.commandLine().getErr().println("robosim control: the Environment closed the connection without an"
+                    + " answer (its log says why)");
+            return 1;
+        } catch (SocketTimeoutException e) {
+            spec.commandLine().getErr().println("robosim control: no answer within " + timeoutSeconds + " s (--timeout);"
+                    + " the Environment may still carry the request out");
+            return 1;
+        } catch (IOException e) {
+            spec.commandLine().getErr().println("robosim control: cannot reach the Environment at " + at.host + ":"
+                    + at.port() + ": " + e.getMessage());
+            return 1;
+        }
+    }
+}
