@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.params.ConversionFactors;
+import robosim.params.RobotParameterFiles;
 import robosim.pioneer.Commands;
 import robosim.pioneer.ConfigPacket;
 import robosim.pioneer.LaserPacket;
@@ -61,7 +62,7 @@ public final class PioneerLink extends ReleasedOnClose {
             PioneerClient c = PioneerClient.connect(host, port, options.connectTimeoutMs());
             client = c;
             ConfigPacket config = c.open(options.connectTimeoutMs());
-            ConversionFactors factors = PioneerFactors.forSubclass(c.identity().subclass());
+            ConversionFactors factors = RobotParameterFiles.conversionFactorsOfSubclass(c.identity().subclass());
             LOG.info(() -> "robot " + hello.name() + " drives the " + c.identity().robotClass() + " "
                     + c.identity().subclass() + " '" + c.identity().name() + "' at " + environment()
                     + ", status every " + config.sipCycle() + " ms, conversion factors " + factors);

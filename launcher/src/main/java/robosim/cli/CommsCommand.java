@@ -9,8 +9,6 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.CommsUpdate;
-import robosim.protocol.Message;
-import robosim.protocol.Bye;
 
 /** {@code robosim comms}: changes a running Environment's communication settings. */
 @Command(name = "comms", mixinStandardHelpOptions = true,
@@ -48,21 +46,13 @@ final class CommsCommand implements Callable<Integer> {
         String token = ControlConnection.token(spec, secret, at);
         try (ControlConnection c = ControlConnection.open(at, "comms", token, 10_000)) {
             c.send(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
-            Message m;
-            while ((m = c.read()) != null) {
-                if (m instanceof CommsUpdate now) {
-                    spec.commandLine().getOut().printf(java.util.Locale.ROOT,
-                            "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",
-                            now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());
-                    return 0;
-                }
-                if (m instanceof Bye bye) {
-                    spec.commandLine().getErr().println("robosim comms: the Environment " + bye.reason());
-                    return 1;
-                }
-            }
-            spec.commandLine().getErr().println("robosim comms: the Environment closed the connection without an answer"
-                    + " (its log says why)");
+            CommsUpdate now = c.answer(CommsUpdate.class, u -> true);
+            spec.commandLine().getOut().printf(java.util.Locale.ROOT,
+                    "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",
+                    now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());
+            return 0;
+        } catch (ControlConnection.NoAnswerException e) {
+            spec.commandLine().getErr().println("robosim comms: " + e.getMessage());
             return 1;
         } catch (IOException e) {
             spec.commandLine().getErr().println("robosim comms: cannot reach the Environment at " + at.host + ":" + at.port()

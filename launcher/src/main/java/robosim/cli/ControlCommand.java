@@ -11,10 +11,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
-import robosim.protocol.Bye;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
-import robosim.protocol.Message;
 
 /**
  * {@code robosim control}: pauses, resumes, steps, paces or stops a running Environment, or moves or
@@ -62,27 +60,19 @@ final class ControlCommand implements Callable<Integer> {
         String token = ControlConnection.token(spec, secret, at);
         try (ControlConnection c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
             c.send(new ControlRequest(ID, op, args));
-            Message m;
-            while ((m = c.read()) != null) {
-                if (m instanceof ControlReply reply && reply.id() == ID) {
-                    if (reply.ok()) {
-                        spec.commandLine().getOut().println(reply.text());
-                        return 0;
-                    }
-                    spec.commandLine().getErr().println("robosim control: refused: " + reply.text());
-                    return 1;
-                }
-                if (m instanceof Bye bye) {
-                    spec.commandLine().getErr().println("robosim control: the Environment " + bye.reason());
-                    return 1;
-                }
+            ControlReply reply = c.answer(ControlReply.class, r -> r.id() == ID);
+            if (reply.ok()) {
+                spec.commandLine().getOut().println(reply.text());
+                return 0;
             }
-            spec.commandLine().getErr().println("robosim control: the Environment closed the connection without an"
-                    + " answer (its log says why)");
+            spec.commandLine().getErr().println("robosim control: refused: " + reply.text());
             return 1;
         } catch (SocketTimeoutException e) {
             spec.commandLine().getErr().println("robosim control: no answer within " + timeoutSeconds + " s (--timeout);"
                     + " the Environment may still carry the request out");
+            return 1;
+        } catch (ControlConnection.NoAnswerException e) {
+            spec.commandLine().getErr().println("robosim control: " + e.getMessage());
             return 1;
         } catch (IOException e) {
             spec.commandLine().getErr().println("robosim control: cannot reach the Environment at " + at.host + ":"

@@ -3,8 +3,10 @@ package robosim.cli;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.util.function.Predicate;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ParameterException;
+import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
@@ -76,9 +78,36 @@ final class ControlConnection implements AutoCloseable {
         writer.write(m);
     }
 
-    /** @return the next message, or null when the Environment closed the connection */
-    Message read() throws IOException {
-        return reader.read();
+    /** The Environment said bye, or closed the connection, before the answer came. */
+    static final class NoAnswerException extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        NoAnswerException(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * Reads until the answer wanted comes, skipping other messages.
+     *
+     * @param type   the answer's type
+     * @param wanted which message of that type is the answer
+     * @param <T>    the answer's type
+     * @return the answer
+     * @throws NoAnswerException saying why, when a bye or the connection's end comes first
+     * @throws IOException       if reading fails or times out
+     */
+    <T extends Message> T answer(Class<T> type, Predicate<T> wanted) throws IOException {
+        Message m;
+        while ((m = reader.read()) != null) {
+            if (type.isInstance(m) && wanted.test(type.cast(m))) {
+                return type.cast(m);
+            }
+            if (m instanceof Bye bye) {
+                throw new NoAnswerException("the Environment " + bye.reason());
+            }
+        }
+        throw new NoAnswerException("the Environment closed the connection without an answer (its log says why)");
     }
 
     @Override

@@ -95,11 +95,7 @@ final class PioneerOptions {
         if (file.toLowerCase(Locale.ROOT).endsWith(".p")) {
             return RobotParameterFiles.conversionFactors(file);
         }
-        try {
-            return RobotParameterFiles.conversionFactors(r.parameters().subclass() + ".p");
-        } catch (IllegalArgumentException noModel) {
-            return ConversionFactors.ARIA_DEFAULTS;
-        }
+        return RobotParameterFiles.conversionFactorsOfSubclass(r.parameters().subclass());
     }
 
     /** The address a bridge robot in this process reaches the Environment at. */

@@ -48,6 +48,23 @@ public final class RobotParameterFiles {
     }
 
     /**
+     * The conversion factors of a subclass's ARIA model, found as ARIA finds them: the {@code .p}
+     * file named after the subclass (a shipped one such as {@code p3dx.p}). This is the file an ARIA
+     * program loads for a robot whose server names that subclass.
+     *
+     * @param subclass for example {@code p3dx}
+     * @return its factors, or ARIA's defaults when there is no such file
+     * @throws robosim.params.ParameterFileException if the file breaks a rule
+     */
+    public static ConversionFactors conversionFactorsOfSubclass(String subclass) {
+        try {
+            return conversionFactors(subclass + ".p");
+        } catch (IllegalArgumentException noModel) {
+            return ConversionFactors.ARIA_DEFAULTS;
+        }
+    }
+
+    /**
      * @return the RoboSim root: system property {@code robosim.root}, else the working directory
      */
     public static Path root() {

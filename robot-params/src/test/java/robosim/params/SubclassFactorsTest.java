@@ -1,15 +1,14 @@
-package robosim.hw;
+package robosim.params;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
-import robosim.params.ConversionFactors;
 
 /** A Pioneer's conversion factors come from the parameter file named after the server's subclass. */
-class PioneerFactorsTest {
+class SubclassFactorsTest {
     @Test
     void theShippedP3dxHasItsDistConvFactorAndAriasDefaultsBesides() {
-        ConversionFactors f = PioneerFactors.forSubclass("p3dx");
+        ConversionFactors f = RobotParameterFiles.conversionFactorsOfSubclass("p3dx");
         assertEquals(0.485, f.distConvFactor());
         assertEquals(0.001534, f.angleConvFactor());
         assertEquals(20, f.vel2Divisor());
@@ -17,11 +16,11 @@ class PioneerFactorsTest {
 
     @Test
     void theShTypesHaveFactorsOfOne() {
-        assertEquals(1.0, PioneerFactors.forSubclass("p3dx-sh").distConvFactor());
+        assertEquals(1.0, RobotParameterFiles.conversionFactorsOfSubclass("p3dx-sh").distConvFactor());
     }
 
     @Test
     void aSubclassWithoutAFileHasAriasDefaults() {
-        assertEquals(ConversionFactors.ARIA_DEFAULTS, PioneerFactors.forSubclass("no-such-robot"));
+        assertEquals(ConversionFactors.ARIA_DEFAULTS, RobotParameterFiles.conversionFactorsOfSubclass("no-such-robot"));
     }
 }
