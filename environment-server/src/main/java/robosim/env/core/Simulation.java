@@ -51,6 +51,7 @@ public final class Simulation {
     private final World world;
     private final long seed;
     private final GeometryClient geometry;
+    private final Placement placement;
     /** The robots in the world file's order, and where each name stands in it. */
     private final List<SimRobot> order = new ArrayList<>();
     private final Map<String, Integer> indexes = new HashMap<>();
@@ -95,6 +96,7 @@ public final class Simulation {
             obstacles.add(o.polygon());
         }
         geometry = new GeometryClient(obstacles);
+        placement = new Placement(geometry);
         SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
             BodyShape body = RobotSpec.bodyOf(spec.parameters());
@@ -256,44 +258,20 @@ public final class Simulation {
         }
     }
 
-    /** The farthest from the origin a robot may be placed, mm: the world file's coordinate bound. */
-    private static final double MAX_PLACEMENT = 1e8;
-
     private void simulator(SimRobot r, Command.Simulator c, long current) {
         Pose2D to;
-        boolean reset;
         if (c instanceof Command.SetTruePose p) {
             to = new Pose2D(p.x(), p.y(), Math.toRadians(p.th()));
-            reset = false;
         } else if (c instanceof Command.ResetToStart) {
             RobotSpec spec = world.robots().get(indexes.get(r.name));
             to = new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th()));
-            reset = true;
         } else {
             throw new IllegalStateException("no handler for the simulator command " + c);
         }
-        String refusal = placeRefusal(r, to);
+        String refusal = placement.place(r, to, c instanceof Command.ResetToStart, " at step " + current);
         if (refusal != null) {
-            messages.error(r.name, "robot " + r.name + " cannot be placed at " + where(to) + " at step " + current
-                    + ": " + refusal);
-        } else {
-            r.place(geometry, to, reset);
+            messages.error(r.name, refusal);
         }
-    }
-
-    /** @return why a robot cannot stand at a pose, or null if it can */
-    private String placeRefusal(SimRobot r, Pose2D to) {
-        if (Math.abs(to.x()) > MAX_PLACEMENT || Math.abs(to.y()) > MAX_PLACEMENT) {
-            return "a pose is within " + (long) MAX_PLACEMENT + " mm of the origin";
-        }
-        if (geometry.overlaps(r.body, to, r.bodyId)) {
-            return "its body would overlap something there";
-        }
-        return null;
-    }
-
-    private static String where(Pose2D to) {
-        return String.format(java.util.Locale.ROOT, "(%.0f, %.0f, %.0f)", to.x(), to.y(), Math.toDegrees(to.th()));
     }
 
     /**
@@ -314,13 +292,7 @@ public final class Simulation {
             throw new IllegalArgumentException("robot " + name + " cannot be placed at (" + x + ", " + y + ", " + th
                     + "): a pose is finite");
         }
-        Pose2D to = new Pose2D(x, y, Math.toRadians(th));
-        String refusal = placeRefusal(r, to);
-        if (refusal != null) {
-            return "robot " + name + " cannot be placed at " + where(to) + ": " + refusal;
-        }
-        r.place(geometry, to, false);
-        return null;
+        return placement.place(r, new Pose2D(x, y, Math.toRadians(th)), false, "");
     }
 
     /** A robot's report of a find counts when its centre is this near the gold, mm. */

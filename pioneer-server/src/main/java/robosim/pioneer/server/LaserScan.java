@@ -1,6 +1,7 @@
 package robosim.pioneer.server;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import robosim.pioneer.LaserPacket;
 import robosim.protocol.Command;
@@ -91,15 +92,14 @@ final class LaserScan {
         int stride = (int) Math.round(resolution / base);
         int first = (int) Math.round((start + 90) / base);
         int last = (int) Math.round((end + 90) / base);
-        int direction = last >= first ? 1 : -1;
-        List<Integer> ranges = new ArrayList<>();
-        for (int i = first; direction > 0 ? i <= last : i >= last; i += direction * stride) {
-            ranges.add(scan[i]);
+        int step = (last >= first ? 1 : -1) * stride;
+        int[] ranges = new int[Math.abs(last - first) / stride + 1];
+        for (int k = 0; k < ranges.length; k++) {
+            ranges[k] = scan[first + k * step];
         }
-        for (int from = 0; from < ranges.size(); from += LaserPacket.MAX_READINGS) {
-            int to = Math.min(ranges.size(), from + LaserPacket.MAX_READINGS);
-            int[] part = ranges.subList(from, to).stream().mapToInt(Integer::intValue).toArray();
-            out.add(new LaserPacket(extended, 0, 0, 0, ranges.size(), from, part, null));
+        for (int from = 0; from < ranges.length; from += LaserPacket.MAX_READINGS) {
+            int to = Math.min(ranges.length, from + LaserPacket.MAX_READINGS);
+            out.add(new LaserPacket(extended, 0, 0, 0, ranges.length, from, Arrays.copyOfRange(ranges, from, to), null));
         }
         return out;
     }
