@@ -1,0 +1,113 @@
+package robosim.remote.robot;
+
+import java.util.List;
+import robosim.aria.ArHeatSensor;
+import robosim.aria.ArRobot;
+import robosim.aria.ArSick;
+import robosim.hw.AbstractRobot;
+import robosim.protocol.RobotParameters;
+import robosim.remote.Readings;
+
+/**
+ * A Pioneer driven by hand through ARIA's API: {@code setVel}/{@code setRotVel}, {@code stop},
+ * {@code move}, {@code setHeading}, {@code enableSonar}/{@code disableSonar}, an {@link ArSick} laser
+ * and an {@link ArHeatSensor}. Every call queues a request for the next step (ArRobot's motion calls
+ * never block), so the window's thread may make them at any time.
+ */
+public final class PioneerRemote extends RemoteRobot {
+    /** The heat sensor's field of view, degrees: no parameter file names one, so a wide forward cone. */
+    public static final double HEAT_FIELD_OF_VIEW = 120;
+    /** The heat sensor's range, mm, matching a Pioneer's sonar range. */
+    public static final double HEAT_RANGE = 5000;
+
+    private final ArRobot robot;
+    private final ArSick laser = new ArSick();
+    private final ArHeatSensor heat = new ArHeatSensor(HEAT_FIELD_OF_VIEW, HEAT_RANGE);
+    private volatile boolean heatOn;
+
+    /** @param robot a connected robot; its laser is attached here and starts off */
+    public PioneerRemote(ArRobot robot) {
+        this.robot = robot;
+        robot.addRangeDevice(laser);
+    }
+
+    @Override
+    protected AbstractRobot robot() {
+        return robot;
+    }
+
+    @Override
+    protected boolean awaitStep() {
+        robot.sleepSimulated(robot.getStepMs());
+        return robot.isConnected();
+    }
+
+    @Override
+    protected Readings read() {
+        RobotParameters p = robot.getParameters();
+        boolean sonarOn = robot.areSonarsEnabled();
+        int[] ranges = new int[robot.getNumSonar()];
+        for (int i = 0; i < ranges.length; i++) {
+            // a sonar that never reported has nothing to draw yet
+            ranges[i] = robot.getSonarReading(i) != null && robot.getSonarReading(i).getCounterTaken() > 0
+                    ? robot.getSonarRange(i) : -1;
+        }
+        boolean laserOn = laser.isConnected();
+        List<Readings.Point> hits = laserOn ? Readings.laserHits(p, laser.getRawScan(), laser.getMaxRange()) : List.of();
+        Readings.Heat h = heatOn ? new Readings.Heat(heat.getIntensity(), heat.getBearing(), heat.getDistance()) : null;
+        return new Readings(robot.getStep(), robot.getSimTimeMs(), robot.getX(), robot.getY(), robot.getTh(),
+                robot.getVel(), robot.getRotVel(), robot.isStalled(), sonarOn,
+                sonarOn ? Readings.sonarRays(p, ranges) : List.of(), laserOn, hits, h,
+                Math.max(p.sonarMaxRange(), laserOn ? laser.getMaxRange() : 0));
+    }
+
+    @Override
+    public void drive(double vel, double rotVel) {
+        robot.setVel(vel);
+        robot.setRotVel(rotVel);
+    }
+
+    @Override
+    public void stop() {
+        robot.stop();
+    }
+
+    @Override
+    public void move(double distance) {
+        robot.move(distance);
+    }
+
+    @Override
+    public void setHeading(double heading) {
+        robot.setHeading(heading);
+    }
+
+    @Override
+    public void sonar(boolean on) {
+        if (on) {
+            robot.enableSonar();
+        } else {
+            robot.disableSonar();
+        }
+    }
+
+    @Override
+    public String laser(boolean on) {
+        if (!on) {
+            laser.disconnect();
+            return null;
+        }
+        return laser.blockingConnect() ? null : laser.getConnectionError();
+    }
+
+    @Override
+    public String heat(boolean on) {
+        if (on && !heatOn) {
+            heat.attach(robot);
+        } else if (!on && heatOn) {
+            heat.detach();
+        }
+        heatOn = on;
+        return null;
+    }
+}
