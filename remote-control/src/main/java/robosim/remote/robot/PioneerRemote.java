@@ -31,6 +31,25 @@ public final class PioneerRemote extends RemoteRobot {
         robot.addRangeDevice(laser);
     }
 
+    /**
+     * Connects a Pioneer; the calling thread becomes the robot's program, so call {@link #run()} on it.
+     *
+     * @param name       the robot's name in the world
+     * @param host       the Environment's host
+     * @param port       the Environment's robot port
+     * @param parameters the robot's parameters
+     * @return the connected robot
+     * @throws IllegalStateException saying why it could not connect
+     */
+    public static PioneerRemote connect(String name, String host, int port, RobotParameters parameters) {
+        ArRobot robot = new ArRobot(name, host, port, parameters);
+        if (!robot.blockingConnect()) {
+            throw new IllegalStateException("robot " + name + " could not connect to " + host + ":" + port + ": "
+                    + robot.getConnectionError());
+        }
+        return new PioneerRemote(robot);
+    }
+
     @Override
     protected AbstractRobot robot() {
         return robot;

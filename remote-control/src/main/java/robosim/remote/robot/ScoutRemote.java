@@ -2,6 +2,7 @@ package robosim.remote.robot;
 
 import java.util.List;
 import robosim.hw.AbstractRobot;
+import robosim.protocol.RobotParameters;
 import robosim.remote.Readings;
 import robosim.scout.NomadUnits;
 import robosim.scout.Scout;
@@ -23,6 +24,25 @@ public final class ScoutRemote extends RemoteRobot {
     /** @param scout a connected Scout */
     public ScoutRemote(Scout scout) {
         this.scout = scout;
+    }
+
+    /**
+     * Connects a Scout; the calling thread becomes the robot's program, so call {@link #run()} on it.
+     *
+     * @param name       the robot's name in the world
+     * @param host       the Environment's host
+     * @param port       the Environment's robot port
+     * @param parameters the robot's parameters
+     * @return the connected robot
+     * @throws IllegalStateException saying why it could not connect
+     */
+    public static ScoutRemote connect(String name, String host, int port, RobotParameters parameters) {
+        Scout scout = new Scout(name, host, port, parameters);
+        if (!scout.connect_robot()) {
+            throw new IllegalStateException("robot " + name + " could not connect to " + host + ":" + port + ": "
+                    + scout.getConnectionError());
+        }
+        return new ScoutRemote(scout);
     }
 
     @Override

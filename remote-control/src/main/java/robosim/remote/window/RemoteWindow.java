@@ -46,6 +46,7 @@ public final class RemoteWindow {
     private final Timer timer;
     private final KeyEventDispatcher keys = this::dispatch;
     private final CountDownLatch closed = new CountDownLatch(1);
+    private boolean endShown;
 
     /**
      * Builds the window, on the Swing event thread; it shows once {@link #show()} is called.
@@ -92,6 +93,10 @@ public final class RemoteWindow {
         timer = new Timer(REFRESH_MS, e -> {
             lines.sent(control.tick(System.currentTimeMillis()));
             readings.refresh();
+            if (robot.runEnd() != null && !endShown) {
+                endShown = true;
+                lines.error(robot.runEnd().describe());
+            }
         });
         frame.addWindowListener(new WindowAdapter() {
             @Override
