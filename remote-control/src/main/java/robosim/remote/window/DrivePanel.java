@@ -54,7 +54,7 @@ final class DrivePanel extends JPanel {
     }
 
     private JPanel buttons() {
-        JPanel grid = new JPanel(new GridLayout(3, 3, 4, 4));
+        JPanel grid = new JPanel(new GridLayout(4, 3, 4, 4));
         grid.add(new JLabel());
         grid.add(button("Forward", "forward", RemoteControl.Button.FORWARD));
         grid.add(new JLabel());
@@ -64,7 +64,10 @@ final class DrivePanel extends JPanel {
         grid.add(new JLabel());
         grid.add(button("Back", "back", RemoteControl.Button.BACK));
         grid.add(new JLabel());
-        grid.setBorder(BorderFactory.createTitledBorder("drive (or hold the arrow keys; space stops)"));
+        grid.add(new JLabel("or hold the"));
+        grid.add(new JLabel("arrow keys;"));
+        grid.add(new JLabel("space stops"));
+        grid.setBorder(BorderFactory.createTitledBorder("drive"));
         return grid;
     }
 
