@@ -8,6 +8,8 @@ import java.awt.Dimension;
 import java.awt.KeyEventDispatcher;
 import java.awt.KeyboardFocusManager;
 import java.awt.event.KeyEvent;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.util.concurrent.CountDownLatch;
@@ -46,6 +48,7 @@ public final class RemoteWindow {
     private final Timer timer;
     private final KeyEventDispatcher keys = this::dispatch;
     private final CountDownLatch closed = new CountDownLatch(1);
+    private final JPanel content = new JPanel(new BorderLayout(4, 4));
     private boolean endShown;
 
     /**
@@ -81,7 +84,15 @@ public final class RemoteWindow {
         JTabbedPane right = new JTabbedPane();
         right.addTab("readings", readings);
         right.addTab("parameters", new ParametersPanel(ParameterRows.of(paramFile, robot.parameters())));
-        JPanel content = new JPanel(new BorderLayout(4, 4));
+        // the window itself takes the keyboard at first and on a click anywhere off the controls, so the
+        // arrow keys drive until a text field is clicked (where they move the caret)
+        content.setFocusable(true);
+        content.addMouseListener(new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                content.requestFocusInWindow();
+            }
+        });
         content.add(left, BorderLayout.WEST);
         content.add(view == null ? new JLabel("no view: the Environment's viewer port was not reached", JLabel.CENTER)
                 : followingView(view, robot.name()), BorderLayout.CENTER);
@@ -128,6 +139,7 @@ public final class RemoteWindow {
         frame.pack();
         frame.setLocationByPlatform(true);
         frame.setVisible(true);
+        content.requestFocusInWindow();
     }
 
     /** The arrow keys and the space bar, for this window, unless a text field is typing. */

@@ -142,8 +142,9 @@ class RemoteWindowTest {
         });
         // a click on the window's status line gives it the keyboard where no window manager does
         click("status");
-        assertTrue(LiveEnvironment.await(() -> onEdt(() -> session.window().frame().isFocused()), 5_000),
-                "the window has the keyboard");
+        assertTrue(LiveEnvironment.await(() -> onEdt(() -> session.window().frame().isFocused()
+                && !(java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner()
+                        instanceof javax.swing.text.JTextComponent)), 5_000), "the window has the keyboard, not a text field");
         double x0 = r1().x();
         mouse.keyPress(KeyEvent.VK_UP);
         try {
