@@ -158,6 +158,19 @@ class RemoteWindowTest {
     }
 
     @Test
+    void theUpArrowInATextFieldMovesTheCaretAndDoesNotDrive() throws Exception {
+        click("distance");
+        assertTrue(LiveEnvironment.await(() -> onEdt(() -> session.window().find("distance").isFocusOwner()), 5_000),
+                "the distance field has the keyboard");
+        mouse.keyPress(KeyEvent.VK_UP);
+        Thread.sleep(500);
+        mouse.keyRelease(KeyEvent.VK_UP);
+        Thread.sleep(300);
+        assertEquals(0, r1().vel());
+        assertEquals(1500, r1().x(), 1e-6);
+    }
+
+    @Test
     void aBadMoveDistanceIsNamedInTheStatusAndSendsNothing() throws Exception {
         onEdt(() -> {
             ((javax.swing.JTextField) session.window().find("distance")).setText("far");
