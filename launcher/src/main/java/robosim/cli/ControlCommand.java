@@ -11,6 +11,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import robosim.panel.net.ControlClient;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
 
@@ -58,7 +59,7 @@ final class ControlCommand implements Callable<Integer> {
                     + " arguments, got " + args.size());
         }
         String token = ControlConnection.token(spec, secret, at);
-        try (ControlConnection c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
+        try (ControlClient c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
             c.send(new ControlRequest(ID, op, args));
             ControlReply reply = c.answer(ControlReply.class, r -> r.id() == ID);
             if (reply.ok()) {
@@ -71,7 +72,7 @@ final class ControlCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim control: no answer within " + timeoutSeconds + " s (--timeout);"
                     + " the Environment may still carry the request out");
             return 1;
-        } catch (ControlConnection.NoAnswerException e) {
+        } catch (ControlClient.NoAnswerException e) {
             spec.commandLine().getErr().println("robosim control: " + e.getMessage());
             return 1;
         } catch (IOException e) {
