@@ -22,6 +22,8 @@ public final class ChildJvm implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(ChildJvm.class.getName());
     /** The launcher's entry point, named rather than linked: the panel does not depend on the launcher. */
     public static final String MAIN = "robosim.cli.Main";
+    /** The system property naming RoboSim's folder, passed on to the JVMs started. */
+    static final String ROOT = "robosim.root";
     /** How long {@link #stop()} waits for a polite end before it forces one. */
     static final long GRACE_MS = 3000;
 
@@ -44,8 +46,19 @@ public final class ChildJvm implements AutoCloseable {
      */
     public static ChildJvm start(String label, String classpath, List<String> args, Map<String, String> env,
                                  Consumer<String> lines) throws IOException {
-        List<String> command = new ArrayList<>(List.of(javaBinary(), "-cp",
-                classpath != null ? classpath : System.getProperty("java.class.path"), MAIN));
+        return start(label, classpath, MAIN, args, env, lines);
+    }
+
+    /** As {@link #start(String, String, List, Map, Consumer)}, with another main class (for tests). */
+    static ChildJvm start(String label, String classpath, String mainClass, List<String> args, Map<String, String> env,
+                          Consumer<String> lines) throws IOException {
+        List<String> command = new ArrayList<>(List.of(javaBinary()));
+        String root = System.getProperty(ROOT);
+        if (root != null) {
+            // where RoboSim's shipped worlds and robot files are, as bin/robosim told this JVM
+            command.add("-D" + ROOT + "=" + root);
+        }
+        command.addAll(List.of("-cp", classpath != null ? classpath : System.getProperty("java.class.path"), mainClass));
         command.addAll(args);
         ProcessBuilder b = new ProcessBuilder(command).redirectErrorStream(true);
         b.environment().putAll(env);
