@@ -176,6 +176,10 @@ class ControlPanelWindowTest {
             await("r2 removed", () -> !connected(h, "r2"));
             assertTrue(connected(h, "r1"), "r1 stays");
 
+            type("commsLatency", "2");
+            click("applyComms");
+            await("the latency changed", () -> h.sim.commsSettings().latencySteps() == 2);
+
             click("stop");
             RunReport report = h.await(60);
             assertEquals("stopped by control client control-panel", report.endReason());

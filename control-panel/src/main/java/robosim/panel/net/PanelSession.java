@@ -10,6 +10,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.logging.Logger;
 import robosim.panel.model.Request;
+import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlReply;
 import robosim.protocol.RunStatus;
 
@@ -68,6 +69,24 @@ public final class PanelSession implements AutoCloseable {
                 closeQuietly(requestClient);
                 requestClient = null;
                 throw new java.util.concurrent.CompletionException(new IOException(r + ": " + e.getMessage(), e));
+            }
+        }, requests);
+    }
+
+    /**
+     * Changes the comms settings, on the requests' thread, over a connection of its own (the
+     * Environment closes a connection whose settings break a rule).
+     *
+     * @param change the settings to change; null fields are kept
+     * @return the settings now in force; completes exceptionally, saying why, when refused
+     */
+    public CompletableFuture<CommsUpdate> comms(CommsUpdate change) {
+        return CompletableFuture.supplyAsync(() -> {
+            try (ControlClient c = ControlClient.open(host, port, "control-panel-comms", token, STATUS_TIMEOUT_MS)) {
+                c.send(change);
+                return c.answer(CommsUpdate.class, u -> true);
+            } catch (IOException e) {
+                throw new java.util.concurrent.CompletionException(new IOException("comms: " + e.getMessage(), e));
             }
         }, requests);
     }

@@ -70,13 +70,15 @@ public final class ControlPanelWindow extends JFrame {
         north.setLayout(new BoxLayout(north, BoxLayout.Y_AXIS));
         north.add(form);
         north.add(controls);
+        north.add(new CommsForm(controller::comms, this::error));
         JPanel table = new JPanel(new BorderLayout());
         table.add(robots, BorderLayout.CENTER);
         table.add(robotForm, BorderLayout.SOUTH);
         JSplitPane right = new JSplitPane(JSplitPane.VERTICAL_SPLIT, table, log);
         right.setResizeWeight(0.6);
         JSplitPane center = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, view, right);
-        center.setResizeWeight(0.45);
+        center.setResizeWeight(0.4);
+        center.setDividerLocation(640);
         getContentPane().add(north, BorderLayout.NORTH);
         getContentPane().add(center, BorderLayout.CENTER);
         setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
@@ -91,7 +93,7 @@ public final class ControlPanelWindow extends JFrame {
                 t.start();
             }
         });
-        setSize(1550, 950);
+        setSize(1600, 1000);
     }
 
     private void controlsShow(robosim.protocol.RunStatus status) {

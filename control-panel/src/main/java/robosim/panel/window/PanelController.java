@@ -10,6 +10,7 @@ import java.util.function.Consumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.SwingUtilities;
+import robosim.panel.model.CommsChange;
 import robosim.panel.model.EnvironmentLine;
 import robosim.panel.model.Request;
 import robosim.panel.model.RobotLaunch;
@@ -17,6 +18,7 @@ import robosim.panel.model.RunSettings;
 import robosim.panel.net.PanelSession;
 import robosim.panel.process.ChildJvm;
 import robosim.panel.process.RunProcesses;
+import robosim.protocol.CommsUpdate;
 import robosim.protocol.RunSecret;
 import robosim.protocol.RunStatus;
 import robosim.viewer.net.ViewerClient;
@@ -146,6 +148,18 @@ final class PanelController implements AutoCloseable {
             }
             return null;
         });
+    }
+
+    /** Changes the comms settings; the settings now in force go to the log. */
+    void comms(CommsUpdate change) {
+        PanelSession s = session;
+        if (s == null) {
+            log.accept("panel: comms: not attached to an Environment (Start one, or Attach)");
+            return;
+        }
+        s.comms(change).whenComplete((now, failure) -> log.accept("panel: " + (failure != null
+                ? (failure.getCause() != null ? failure.getCause() : failure).getMessage()
+                : "comms settings now: " + CommsChange.describe(now))));
     }
 
     /** Starts a robot program in a JVM of its own, and places it once it has joined if a pose was given. */

@@ -31,6 +31,12 @@ public final class RobotTable extends JPanel {
         table.setName("robots");
         table.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         table.setAutoCreateRowSorter(false);
+        // every column readable at once; the table scrolls sideways when the pane is narrow
+        table.setAutoResizeMode(JTable.AUTO_RESIZE_OFF);
+        int[] widths = {70, 70, 170, 120, 130, 60, 70, 50, 70, 70, 130};
+        for (int i = 0; i < widths.length; i++) {
+            table.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
+        }
         add(new JScrollPane(table), BorderLayout.CENTER);
         JPanel actions = new JPanel(new FlowLayout(FlowLayout.LEFT));
         actions.add(remove);

@@ -51,6 +51,8 @@ public final class RunControls extends JPanel {
         pace.setPaintLabels(true);
         pace.setSnapToTicks(true);
         pace.setMajorTickSpacing(1);
+        // wide enough that the stops' labels do not overlap
+        pace.setPreferredSize(new java.awt.Dimension(420, pace.getPreferredSize().height));
         pace.addChangeListener(e -> {
             // only the user's settled choice is sent: not each stop passed while dragging, nor a status shown
             if (!showing && !pace.getValueIsAdjusting()) {
