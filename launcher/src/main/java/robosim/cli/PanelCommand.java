@@ -25,7 +25,7 @@ import robosim.protocol.RunSecret;
  */
 @Command(name = "panel", mixinStandardHelpOptions = true,
         description = {"Open the ControlPanel: start an Environment on WORLD in a JVM of its own (or attach to a"
-                + " running one with --port), control the run (pause, resume, step, stop, restart, pace), watch it live,"
+                + " running one with --attach), control the run (pause, resume, step, stop, restart, pace), watch it live,"
                 + " add robot programs, move and remove robots, read the Environment's log.",
             "Closing the window stops every JVM it started."})
 final class PanelCommand implements Callable<Integer> {
@@ -33,22 +33,27 @@ final class PanelCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "WORLD",
-            description = "the world to select (and, without --port, to offer first); default: the shipped worlds")
+            description = "the world to select in the new-run form (with --start: to start); default: the first shipped world")
     Path world;
 
-    @Option(names = "--host", defaultValue = "127.0.0.1", paramLabel = "HOST",
-            description = "with --port: the running Environment's host; default ${DEFAULT-VALUE}")
+    @Option(names = "--attach", description = "attach at once to the running Environment at --host and --viewer-port"
+            + " instead of starting one")
+    boolean attach;
+
+    @Option(names = "--host", defaultValue = "localhost", paramLabel = "HOST",
+            description = "the Environment's host; with --attach; default ${DEFAULT-VALUE}")
     String host;
 
-    @Option(names = "--port", paramLabel = "PORT", description = "attach at once to the Environment whose viewer port"
-            + " this is, instead of starting one")
-    Integer port;
+    @Option(names = "--viewer-port", defaultValue = "3000", paramLabel = "PORT", description = OptionTexts.VIEWER_PORT
+            + "; with --attach: the running Environment's, where the panel attaches; default ${DEFAULT-VALUE}")
+    int viewerPort;
 
-    @Option(names = "--robot-port", defaultValue = "0", paramLabel = "PORT",
-            description = "with --port: its robot port, so that robots can be added; default: not known")
+    @Option(names = "--robot-port", defaultValue = "5000", paramLabel = "PORT", description = OptionTexts.ROBOT_PORT
+            + "; with --attach: the running Environment's, where the robots the panel adds connect; default"
+            + " ${DEFAULT-VALUE}")
     int robotPort;
 
-    @Option(names = "--secret-file", paramLabel = "FILE", description = "with --port: the file holding the run"
+    @Option(names = "--secret-file", paramLabel = "FILE", description = "with --attach: the file holding the run"
             + " secret; default: as every client finds it ($" + RunSecret.ENV + ", $" + RunSecret.FILE_ENV
             + ", ~/.robosim/tokens/PORT)")
     Path secretFile;
@@ -58,11 +63,13 @@ final class PanelCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (port != null && (port < 1 || port > 65535)) {
-            throw new ParameterException(spec.commandLine(), "--port: a port from 1 to 65535, got " + port);
-        }
+        requirePort("--viewer-port", viewerPort);
+        requirePort("--robot-port", robotPort);
         if (world != null && !Files.isRegularFile(world)) {
             throw new ParameterException(spec.commandLine(), "WORLD: no such file: " + world);
+        }
+        if (start && attach) {
+            throw new ParameterException(spec.commandLine(), "--start and --attach: give one, a panel runs one Environment");
         }
         if (start && world == null) {
             throw new ParameterException(spec.commandLine(), "--start: give the WORLD to start");
@@ -77,8 +84,8 @@ final class PanelCommand implements Callable<Integer> {
                 w[0] = new ControlPanelWindow(RunForm.worldsIn(RobotParameterFiles.root()
                         .resolve("testLoadFiles/environment")), world == null ? null : world.toAbsolutePath());
                 w[0].setVisible(true);
-                if (port != null) {
-                    w[0].attach(host, port, robotPort, token);
+                if (attach) {
+                    w[0].attach(host, viewerPort, robotPort, token);
                 } else if (start) {
                     w[0].start(RunSettings.parse(world.toString(), "1", "0", "0", "127.0.0.1"));
                 }
@@ -89,6 +96,12 @@ final class PanelCommand implements Callable<Integer> {
         }
         w[0].awaitClosed();
         return 0;
+    }
+
+    private void requirePort(String option, int value) {
+        if (value < 1 || value > 65535) {
+            throw new ParameterException(spec.commandLine(), option + ": a port from 1 to 65535, got " + value);
+        }
     }
 
     private String token() {
