@@ -14,6 +14,10 @@ import java.awt.event.InputEvent;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
@@ -184,6 +188,59 @@ class ControlPanelWindowTest {
             RunReport report = h.await(60);
             assertEquals("stopped by control client control-panel", report.endReason());
             assertFalse(log().contains("refused"), log());
+        }
+    }
+
+    /** @return the pids the log gives for what it says was started ("started an Environment", "started robot r1") */
+    private List<Long> pids(String started) throws Exception {
+        List<Long> pids = new ArrayList<>();
+        Matcher m = Pattern.compile(Pattern.quote(started) + "[^\\n]*pid (\\d+)\\)").matcher(log());
+        while (m.find()) {
+            pids.add(Long.parseLong(m.group(1)));
+        }
+        return pids;
+    }
+
+    private static boolean alive(long pid) {
+        return ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false);
+    }
+
+    @Test
+    void startsAnEnvironmentInAJvmOfItsOwnRestartsItWithItsRobotsAndStopsThemWhenClosed() throws Exception {
+        String why = Displays.unavailable();
+        if (why != null) {
+            System.err.println("ControlPanelWindowTest skipped: " + why);
+        }
+        assumeTrue(why == null, why);
+        Path room = LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml");
+        SwingUtilities.invokeAndWait(() -> {
+            window = new ControlPanelWindow(RunForm.worldsIn(room.getParent()), room);
+            window.setVisible(true);
+        });
+        mouseClick("start");
+        await("attached to the Environment started", () -> uncheck(() -> log().contains("attached to the Environment")));
+        addWanderer("r1");
+        addWanderer("r2");
+        await("the run under way with both robots", () -> uncheck(() -> onEdt(() -> window.controls().line())
+                .matches("world empty-room - step [1-9]\\d* .* 2 of 2 robots connected")));
+        long first = pids("started an Environment").get(0);
+
+        click("restart");
+        await("a second Environment", () -> uncheck(() -> pids("started an Environment").size() == 2));
+        long second = pids("started an Environment").get(1);
+        await("the first Environment ended", () -> !alive(first));
+        await("the robots started again", () -> uncheck(() -> pids("started robot").size() == 4));
+        await("the new run under way with both robots", () -> uncheck(() -> log().split("attached to the Environment",
+                -1).length == 3 && onEdt(() -> window.controls().line()).matches(".* 2 of 2 robots connected")));
+        List<Long> robots = pids("started robot");
+
+        SwingUtilities.invokeAndWait(window::dispose);
+        window.awaitClosed();
+        window = null;
+
+        assertFalse(alive(second), "the Environment the panel started ends with the panel");
+        for (long r : robots) {
+            assertFalse(alive(r), "robot JVM " + r + " ends with the panel");
         }
     }
 

@@ -24,6 +24,8 @@ public final class RunProcesses implements AutoCloseable {
     private final String classpath;
     private ChildJvm environment;
     private Path secretDir;
+    /** Stops the JVMs started here when this JVM ends without the window being closed (Ctrl-C, a kill). */
+    private final Thread hook = new Thread(this::closeQuietly, "panel-stop-children");
 
     /**
      * @param classpath the classpath of the JVMs started, or null for this JVM's
@@ -32,7 +34,9 @@ public final class RunProcesses implements AutoCloseable {
     public RunProcesses(String classpath, Consumer<String> log) {
         this.classpath = classpath;
         this.log = log;
+        Runtime.getRuntime().addShutdownHook(hook);
     }
+
 
     /**
      * Starts an Environment. Its secret is written to a file only this user can read, which robots
@@ -40,10 +44,12 @@ public final class RunProcesses implements AutoCloseable {
      *
      * @param settings the new run's settings
      * @param ready    gets where it listens, once it says so (on the output's thread)
+     * @return its JVM
      * @throws IOException if it cannot be started
      * @throws IllegalStateException if an Environment started here still runs
      */
-    public synchronized void startEnvironment(RunSettings settings, Consumer<EnvironmentLine> ready) throws IOException {
+    public synchronized ChildJvm startEnvironment(RunSettings settings, Consumer<EnvironmentLine> ready)
+            throws IOException {
         if (environment != null && environment.isAlive()) {
             throw new IllegalStateException("an Environment started by this panel still runs (pid "
                     + environment.pid() + "): stop it first");
@@ -58,6 +64,7 @@ public final class RunProcesses implements AutoCloseable {
             EnvironmentLine.parse(line).ifPresent(ready);
         });
         children.add(environment);
+        return environment;
     }
 
     /** @return the file the Environment started here writes its secret to, or null before one started */
@@ -121,9 +128,22 @@ public final class RunProcesses implements AutoCloseable {
         environment = null;
     }
 
+    private void closeQuietly() {
+        try {
+            close();
+        } catch (IOException e) {
+            log.accept("panel: cannot remove the secret's folder " + secretDir + ": " + e.getMessage());
+        }
+    }
+
     @Override
     public synchronized void close() throws IOException {
         stopAll();
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // this JVM is ending: the hook runs, or has run, stopAll itself
+        }
         if (secretDir != null) {
             Files.deleteIfExists(secretDir.resolve("secret"));
             Files.deleteIfExists(secretDir);

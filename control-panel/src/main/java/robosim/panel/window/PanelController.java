@@ -74,8 +74,8 @@ final class PanelController implements AutoCloseable {
         work.execute(() -> {
             try {
                 detach();
-                processes.startEnvironment(settings, where -> work.execute(() -> attachStarted(where)));
-                log.accept("panel: starting an Environment on " + settings.world());
+                ChildJvm env = processes.startEnvironment(settings, where -> work.execute(() -> attachStarted(where)));
+                log.accept("panel: started an Environment (pid " + env.pid() + ") on " + settings.world());
             } catch (IOException | IllegalStateException e) {
                 log.accept("panel: cannot start the Environment: " + e.getMessage());
             }
