@@ -32,7 +32,15 @@ public final class PanelSession implements AutoCloseable {
     private final String token;
     private final ExecutorService requests = Executors.newSingleThreadExecutor(daemon("panel-requests"));
     private final ScheduledExecutorService polls = Executors.newSingleThreadScheduledExecutor(daemon("panel-status"));
+    /**
+     * A request connection quiet for longer than this is replaced before use: the Environment closes
+     * a control client that sends nothing for its idle timeout (two minutes by default), and a
+     * request sent into a connection it is closing would be lost.
+     */
+    static final long REOPEN_AFTER_MS = 60_000;
+
     private volatile ControlClient requestClient;
+    private long requestUsedNanos;
     private volatile ControlClient statusClient;
     private volatile boolean closed;
 
@@ -61,10 +69,17 @@ public final class PanelSession implements AutoCloseable {
     public CompletableFuture<ControlReply> send(Request r) {
         return CompletableFuture.supplyAsync(() -> {
             try {
+                long now = System.nanoTime();
+                if (requestClient != null && now - requestUsedNanos > TimeUnit.MILLISECONDS.toNanos(REOPEN_AFTER_MS)) {
+                    closeQuietly(requestClient);
+                    requestClient = null;
+                }
                 if (requestClient == null) {
                     requestClient = ControlClient.open(host, port, "control-panel", token, ANSWER_TIMEOUT_MS);
                 }
-                return requestClient.ask(r.op(), r.args().toArray(String[]::new));
+                ControlReply reply = requestClient.ask(r.op(), r.args().toArray(String[]::new));
+                requestUsedNanos = System.nanoTime();
+                return reply;
             } catch (IOException e) {
                 closeQuietly(requestClient);
                 requestClient = null;
