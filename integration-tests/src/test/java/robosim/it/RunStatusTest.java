@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -12,6 +14,8 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import picocli.CommandLine;
+import robosim.cli.Main;
 import robosim.env.net.ServerOptions;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
@@ -81,6 +85,30 @@ class RunStatusTest {
 
             assertFalse(r2.connected());
             assertEquals("", r2.drivenBy());
+        }
+    }
+
+    @Test
+    void theControlCommandPrintsTheRunLineAndATableOfTheRobots() throws Exception {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback());
+             ControlPeer control = new ControlPeer(h.viewerPort(), "ctl")) {
+            control.send("pause");
+            threads.submit(new ScriptedRobot(h.robotPort(), "r1", h.sim.world().robots().get(0).parameters(), false));
+            threads.submit(new ScriptedRobot(h.robotPort(), "r2", h.sim.world().robots().get(1).parameters(), false));
+            assertEquals("paused after step 0", control.reply().text());
+            StringWriter out = new StringWriter();
+            CommandLine cl = Main.commandLine();
+            cl.setOut(new PrintWriter(out, true));
+            cl.setErr(new PrintWriter(new StringWriter(), true));
+
+            assertEquals(0, cl.execute("control", "--viewer-port", Integer.toString(h.viewerPort()), "status"));
+
+            List<String> lines = out.toString().lines().toList();
+            assertEquals("world empty-room - step 0 (0.0 s) - paused - pace max - 2 of 2 robots connected", lines.get(0));
+            assertTrue(lines.get(1).startsWith("Name\tType\tDriven by\t"), lines.get(1));
+            assertTrue(lines.get(2).matches("r1\tpioneer\tprogram at 127\\.0\\.0\\.1:\\d+\t1500, 1500, 45\t0, 0\\.0\tno"
+                    + "\t0\t0\t0\t0\tconnected"), lines.get(2));
+            assertEquals(4, lines.size());
         }
     }
 
