@@ -2,7 +2,6 @@ package robosim.panel.model;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -74,9 +73,8 @@ public record RunSettings(Path world, long seed, int robotPort, int viewerPort, 
      * @return the arguments of {@code robosim env}, from the subcommand's name on
      */
     public List<String> envArguments(Path tokenFile) {
-        List<String> a = new ArrayList<>(List.of("env", world.toString(), "--seed", Long.toString(seed),
-                "--robot-port", Integer.toString(robotPort), "--viewer-port", Integer.toString(viewerPort),
-                "--bind", bind, "--token-file", tokenFile.toString()));
-        return a;
+        return List.of("env", world.toString(), "--seed", Long.toString(seed), "--robot-port",
+                Integer.toString(robotPort), "--viewer-port", Integer.toString(viewerPort), "--bind", bind,
+                "--token-file", tokenFile.toString());
     }
 }

@@ -3,6 +3,7 @@ package robosim.panel.net;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.util.List;
 import java.util.function.Predicate;
 import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
@@ -112,7 +113,7 @@ public final class ControlClient implements AutoCloseable {
      */
     public ControlReply ask(String op, String... args) throws IOException {
         long id = nextId++;
-        send(new ControlRequest(id, op, java.util.List.of(args)));
+        send(new ControlRequest(id, op, List.of(args)));
         return answer(ControlReply.class, r -> r.id() == id);
     }
 
@@ -125,7 +126,7 @@ public final class ControlClient implements AutoCloseable {
      */
     public RunStatus status() throws IOException {
         long id = nextId++;
-        send(new ControlRequest(id, "status", java.util.List.of()));
+        send(new ControlRequest(id, "status", List.of()));
         Message m = answer(Message.class, x -> x instanceof RunStatus s && s.id() == id
                 || x instanceof ControlReply r && r.id() == id);
         if (m instanceof ControlReply refused) {

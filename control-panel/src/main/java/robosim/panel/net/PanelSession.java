@@ -2,6 +2,7 @@ package robosim.panel.net;
 
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
@@ -83,7 +84,7 @@ public final class PanelSession implements AutoCloseable {
             } catch (IOException e) {
                 closeQuietly(requestClient);
                 requestClient = null;
-                throw new java.util.concurrent.CompletionException(new IOException(r + ": " + e.getMessage(), e));
+                throw new CompletionException(new IOException(r + ": " + e.getMessage(), e));
             }
         }, requests);
     }
@@ -101,7 +102,7 @@ public final class PanelSession implements AutoCloseable {
                 c.send(change);
                 return c.answer(CommsUpdate.class, u -> true);
             } catch (IOException e) {
-                throw new java.util.concurrent.CompletionException(new IOException("comms: " + e.getMessage(), e));
+                throw new CompletionException(new IOException("comms: " + e.getMessage(), e));
             }
         }, requests);
     }

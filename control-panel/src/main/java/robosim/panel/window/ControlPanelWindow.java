@@ -11,7 +11,9 @@ import javax.swing.JFrame;
 import javax.swing.JPanel;
 import javax.swing.JSplitPane;
 import javax.swing.WindowConstants;
+import robosim.panel.model.Request;
 import robosim.panel.model.RunSettings;
+import robosim.protocol.RunStatus;
 import robosim.viewer.window.ViewModel;
 import robosim.viewer.window.ViewState;
 import robosim.viewer.window.ViewerPane;
@@ -42,10 +44,8 @@ public final class ControlPanelWindow extends JFrame {
         super("RoboSim ControlPanel");
         ViewModel model = new ViewModel();
         view = new ViewerPane(model, new ViewState());
-        controller = new PanelController(model, log::append, status -> {
-            robots.show(status);
-            controlsShow(status);
-        });
+        // a method reference, not a lambda: the controls are made after the controller
+        controller = new PanelController(model, log::append, this::showStatus);
         form = new RunForm(worlds, selected, controller::start,
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
@@ -55,7 +55,7 @@ public final class ControlPanelWindow extends JFrame {
             if (r == null) {
                 error("Remove: select a robot in the table first");
             } else {
-                controller.send(robosim.panel.model.Request.remove(r));
+                controller.send(Request.remove(r));
             }
         });
         robots.remote.addActionListener(e -> {
@@ -96,7 +96,8 @@ public final class ControlPanelWindow extends JFrame {
         setSize(1600, 1000);
     }
 
-    private void controlsShow(robosim.protocol.RunStatus status) {
+    private void showStatus(RunStatus status) {
+        robots.show(status);
         controls.show(status);
     }
 

@@ -3,6 +3,7 @@ package robosim.panel.window;
 import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -54,7 +55,7 @@ final class PanelController implements AutoCloseable {
     private volatile String robotHost;
     private volatile int robotPort;
     private RunSettings lastRun;
-    private final List<RobotLaunch> launched = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final List<RobotLaunch> launched = new CopyOnWriteArrayList<>();
 
     /**
      * @param model    the live view's model, fed by the viewer
