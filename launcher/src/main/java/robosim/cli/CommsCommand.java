@@ -8,6 +8,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.panel.net.ControlClient;
 import robosim.protocol.CommsUpdate;
 
 /** {@code robosim comms}: changes a running Environment's communication settings. */
@@ -44,14 +45,14 @@ final class CommsCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "give at least one setting to change: --range, --walls-block, --latency, --loss or --max-bytes");
         }
         String token = ControlConnection.token(spec, secret, at);
-        try (ControlConnection c = ControlConnection.open(at, "comms", token, 10_000)) {
+        try (ControlClient c = ControlConnection.open(at, "comms", token, 10_000)) {
             c.send(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
             CommsUpdate now = c.answer(CommsUpdate.class, u -> true);
             spec.commandLine().getOut().printf(java.util.Locale.ROOT,
                     "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",
                     now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());
             return 0;
-        } catch (ControlConnection.NoAnswerException e) {
+        } catch (ControlClient.NoAnswerException e) {
             spec.commandLine().getErr().println("robosim comms: " + e.getMessage());
             return 1;
         } catch (IOException e) {

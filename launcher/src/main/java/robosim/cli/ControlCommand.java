@@ -1,6 +1,7 @@
 package robosim.cli;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -11,8 +12,11 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import robosim.panel.net.ControlClient;
+import robosim.panel.model.RobotRows;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
+import robosim.protocol.RunStatus;
 
 /**
  * {@code robosim control}: pauses, resumes, steps, paces or stops a running Environment, or moves or
@@ -22,7 +26,7 @@ import robosim.protocol.ControlRequest;
         description = {"Control a running Environment and print its answer; exit 1 when it refuses.",
             "Operations: pause | resume | step N (while paused: run N steps, then pause) | stop (end the run"
                     + " cleanly) | pace max|realtime|K (K times real time) | move NAME X Y TH (mm, mm, degrees;"
-                    + " odometry unchanged) | remove NAME.",
+                    + " odometry unchanged) | remove NAME | status (the run and a tab-separated table of its robots).",
             "The Environment carries each out between two steps. restart and load are not yet supported."})
 final class ControlCommand implements Callable<Integer> {
     /** The id of the one request the command sends. */
@@ -42,11 +46,22 @@ final class ControlCommand implements Callable<Integer> {
                     + " ${DEFAULT-VALUE}")
     int timeoutSeconds;
 
-    @Parameters(index = "0", paramLabel = "OPERATION", description = "pause, resume, step, stop, pace, move or remove")
+    @Parameters(index = "0", paramLabel = "OPERATION", description = "pause, resume, step, stop, pace, move, remove or status")
     String op;
 
     @Parameters(index = "1..*", paramLabel = "ARG", description = "the operation's arguments")
     List<String> args = List.of();
+
+    /** Prints the run's line, then a tab-separated table of the robots with a heading. */
+    private void printStatus(RunStatus status) {
+        PrintWriter out = spec.commandLine().getOut();
+        out.println(RobotRows.runLine(status));
+        out.println(String.join("\t", RobotRows.COLUMNS));
+        for (List<String> row : RobotRows.of(status)) {
+            out.println(String.join("\t", row));
+        }
+        out.flush();
+    }
 
     @Override
     public Integer call() {
@@ -58,7 +73,11 @@ final class ControlCommand implements Callable<Integer> {
                     + " arguments, got " + args.size());
         }
         String token = ControlConnection.token(spec, secret, at);
-        try (ControlConnection c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
+        try (ControlClient c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
+            if (op.equals("status") && args.isEmpty()) {
+                printStatus(c.status());
+                return 0;
+            }
             c.send(new ControlRequest(ID, op, args));
             ControlReply reply = c.answer(ControlReply.class, r -> r.id() == ID);
             if (reply.ok()) {
@@ -71,7 +90,7 @@ final class ControlCommand implements Callable<Integer> {
             spec.commandLine().getErr().println("robosim control: no answer within " + timeoutSeconds + " s (--timeout);"
                     + " the Environment may still carry the request out");
             return 1;
-        } catch (ControlConnection.NoAnswerException e) {
+        } catch (ControlClient.NoAnswerException e) {
             spec.commandLine().getErr().println("robosim control: " + e.getMessage());
             return 1;
         } catch (IOException e) {

@@ -29,9 +29,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = KeepAlive.class, name = "keepAlive"),
         @JsonSubTypes.Type(value = ControlRequest.class, name = "controlRequest"),
         @JsonSubTypes.Type(value = ControlReply.class, name = "controlReply"),
+        @JsonSubTypes.Type(value = RunStatus.class, name = "runStatus"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
         CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello, KeepAlive,
-        ControlRequest, ControlReply {
+        ControlRequest, ControlReply, RunStatus {
 }

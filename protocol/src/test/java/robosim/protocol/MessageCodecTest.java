@@ -170,6 +170,26 @@ class MessageCodecTest {
         assertEquals(Messages.controlReply(), roundTrip(format, Messages.controlReply()));
     }
 
+    @ParameterizedTest
+    @EnumSource(Format.class)
+    void runStatusRoundTripsEveryRobotsRow(Format format) throws FrameException {
+        assertEquals(Messages.runStatus(), roundTrip(format, Messages.runStatus()));
+    }
+
+    @Test
+    void runStatusWithANegativeCountIsAnInvalidValue() {
+        byte[] payload = ("{\"type\":\"runStatus\",\"id\":1,\"world\":\"w\",\"step\":3,\"timeMs\":300,"
+                + "\"paused\":false,\"pace\":0,\"robots\":[{\"name\":\"r1\",\"type\":\"p3dx\","
+                + "\"drivenBy\":\"\",\"connected\":true,\"x\":0,\"y\":0,\"th\":0,\"vel\":0,\"rotVel\":0,"
+                + "\"stalled\":false,\"collisions\":-1,\"sent\":0,\"received\":0,\"lastStep\":0}]}")
+                .getBytes(StandardCharsets.UTF_8);
+
+        InvalidValueException e = assertThrows(InvalidValueException.class,
+                () -> new MessageCodec(Format.JSON).decode(payload));
+
+        assertTrue(e.getMessage().contains("robot r1's status holds a negative count: -1"), e.getMessage());
+    }
+
     @Test
     void controlRequestWithoutArgumentsOnTheWireHasNone() throws FrameException {
         MessageCodec json = new MessageCodec(Format.JSON);
@@ -271,6 +291,7 @@ class MessageCodecTest {
         "KeepAlive, keepAlive",
         "ControlRequest, controlRequest",
         "ControlReply, controlReply",
+        "RunStatus, runStatus",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
         Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))

@@ -148,9 +148,16 @@ final class Messages {
         return new ControlReply(7, false, "move: no robot named 'robot9' in world demo");
     }
 
+    static RunStatus runStatus() {
+        return new RunStatus(7, "demo", 42, 4200, false, 1, List.of(
+                new RunStatus.RobotStatus("robot1", "p3dx", "program at 127.0.0.1:40312", true, 1500, -250.5, 90,
+                        300, -15.5, false, 2, 5, 3, 42),
+                new RunStatus.RobotStatus("robot2", "p3at", "", false, 0, 0, 0, 0, 0, true, 0, 0, 0, 0)));
+    }
+
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
                 snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), controlHello(),
-                keepAlive(), controlRequest(), controlReply());
+                keepAlive(), controlRequest(), controlReply(), runStatus());
     }
 }

@@ -25,7 +25,7 @@ public final class RandomMessages {
 
     /** @return a message of a random type */
     public Message any() {
-        return switch (random.nextInt(14)) {
+        return switch (random.nextInt(15)) {
             case 0 -> new RobotHello(text(), text(), nullOr(this::parameters));
             case 1 -> new Welcome(text(), (int) anyLong(), nullOr(this::state));
             case 2 -> new TimeStep(anyLong(), anyLong(), nullOr(this::state));
@@ -41,8 +41,18 @@ public final class RandomMessages {
                     list(() -> new TimeSteps.ForRobot(text(), nullOr(this::state)), 4));
             case 12 -> new ControlRequest(anyLong(), text(), list(() -> text(40), ControlRequest.MAX_ARGS));
             case 13 -> new ControlReply(anyLong(), random.nextBoolean(), text());
+            case 14 -> runStatus();
             default -> new LinkRequests(anyLong(), list(() -> new LinkRequests.ForRobot(text(), commands()), 4));
         };
+    }
+
+    /** @return a run status of random robots, every value within its rule */
+    public RunStatus runStatus() {
+        return new RunStatus(anyLong(), text(), Math.abs(random.nextLong() / 2), random.nextInt(1 << 30),
+                random.nextBoolean(), random.nextBoolean() ? 0 : 1000 * random.nextDouble(),
+                list(() -> new RunStatus.RobotStatus(text(40), text(10), text(), random.nextBoolean(), finite(),
+                        finite(), finite(), finite(), finite(), random.nextBoolean(), random.nextInt(1000),
+                        random.nextInt(1 << 20), random.nextInt(1 << 20), random.nextInt(1 << 20)), 4));
     }
 
     /** @return a world of random obstacles, robots and heat sources */

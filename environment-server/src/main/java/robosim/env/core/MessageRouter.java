@@ -22,6 +22,8 @@ final class MessageRouter {
     private final Map<String, List<String>> pendingErrors = new HashMap<>();
     private final List<MessageDelivery> sent = new ArrayList<>();
     private final List<MessageDelivery> sentLastStep = new ArrayList<>();
+    /** Each robot's count of messages accepted from it and delivered to it, for control clients' status. */
+    private final Map<String, long[]> tallies = new HashMap<>();
 
     MessageRouter(List<String> robots, CommsSettings settings, long seed) {
         this.comms = new CommunicationsSystem(robots, settings, seed);
@@ -58,6 +60,10 @@ final class MessageRouter {
         errors.clear();
         errors.putAll(pendingErrors);
         pendingErrors.clear();
+        for (MessageDelivery m : sent) {
+            tallies.computeIfAbsent(m.from(), k -> new long[2])[0]++;
+        }
+        delivered.forEach((robot, list) -> tallies.computeIfAbsent(robot, k -> new long[2])[1] += list.size());
         sentLastStep.clear();
         sentLastStep.addAll(sent);
         sent.clear();
@@ -66,6 +72,11 @@ final class MessageRouter {
     /** @return the messages accepted in the last step, in the order they were sent */
     List<MessageDelivery> sentLastStep() {
         return List.copyOf(sentLastStep);
+    }
+
+    /** @return the robot's messages accepted and delivered since the run started, in that order */
+    long[] tally(String robot) {
+        return tallies.getOrDefault(robot, new long[2]).clone();
     }
 
     List<MessageDelivery> delivered(String robot) {

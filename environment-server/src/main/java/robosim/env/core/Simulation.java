@@ -419,6 +419,16 @@ public final class Simulation {
     }
 
     /**
+     * @param name a robot
+     * @return the messages it sent that the CommunicationsSystem accepted, and those delivered to it,
+     *         since the run started
+     */
+    public long[] messageCounts(String name) {
+        robot(name);
+        return messages.tally(name);
+    }
+
+    /**
      * Marks a robot's program as connected or not, for viewers.
      *
      * @param name      the robot

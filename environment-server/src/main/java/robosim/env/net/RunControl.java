@@ -52,6 +52,11 @@ final class RunControl {
 
     /** A control client sent a request: refused now if a value breaks a rule, else kept for the step boundary. */
     void received(Connection c, ControlRequest r) {
+        if (StatusReport.OP.equals(r.op())) {
+            // a status changes nothing, so it need not wait for a step boundary
+            c.send(StatusReport.answer(r, sim, rules, paused, pace));
+            return;
+        }
         ControlOp op;
         try {
             op = ControlOp.parse(r, sim);

@@ -47,6 +47,8 @@ final class SessionRules {
     private final RunControl control;
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
+    /** The last step each robot answered in time, for control clients' status. */
+    private final Map<String, Long> answered = new HashMap<>();
     private long openStep;
     private Map<String, List<Command>> commands;
 
@@ -84,6 +86,11 @@ final class SessionRules {
 
     Map<String, Connection> connectedRobots() {
         return robots;
+    }
+
+    /** @return the last step the robot answered in time, 0 if none */
+    long lastAnswered(String robot) {
+        return answered.getOrDefault(robot, 0L);
     }
 
     Set<String> waitingFor() {
@@ -272,6 +279,7 @@ final class SessionRules {
         }
         commands.put(name, sent);
         waiting.remove(name);
+        answered.put(name, step);
     }
 
     /**
