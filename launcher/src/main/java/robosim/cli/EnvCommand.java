@@ -16,6 +16,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.env.net.Departure;
+import robosim.env.net.Join;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
@@ -230,9 +231,14 @@ final class EnvCommand implements Callable<Integer> {
         if (report.find() != null) {
             out.printf(Locale.ROOT, "Gold found by %s at step %d%n", report.find().robot(), report.find().step());
         }
+        if (!report.joins().isEmpty()) {
+            out.printf(Locale.ROOT, "Robots joined during the run: %d, went: %d%n", report.joins().size(),
+                    report.departures().size());
+        }
         for (RobotSummary r : report.robots()) {
-            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%n",
-                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()));
+            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%s%n",
+                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()),
+                    howItJoined(report, r.name()));
         }
         out.flush();
     }
@@ -243,5 +249,11 @@ final class EnvCommand implements Callable<Integer> {
      */
     static String howItEnded(RunReport report, String robot) {
         return report.departure(robot).map(Departure::describe).orElse("ran to the end");
+    }
+
+    /** @return {@code ""} for a robot there from the start, else how it last joined, such as {@code " (rejoined at step 12)"} */
+    static String howItJoined(RunReport report, String robot) {
+        List<Join> joins = report.joinsOf(robot);
+        return joins.isEmpty() ? "" : " (" + joins.get(joins.size() - 1).describe() + ")";
     }
 }

@@ -419,6 +419,14 @@ public final class Simulation {
     }
 
     /**
+     * @param name a robot
+     * @return the parameters its body and sensors have now
+     */
+    public RobotParameters parameters(String name) {
+        return robot(name).params;
+    }
+
+    /**
      * Marks a robot's program as connected or not, for viewers.
      *
      * @param name      the robot

@@ -8,26 +8,19 @@ import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
-import robosim.env.core.Find;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
-import robosim.protocol.FrameWriter;
 import robosim.protocol.InvalidValueException;
-import robosim.protocol.KeepAlive;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.RobotState;
-import robosim.protocol.TimeStep;
-import robosim.protocol.TimeSteps;
 import robosim.protocol.Snapshot;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.SnapshotListeners;
@@ -47,11 +40,10 @@ import robosim.protocol.recording.SnapshotListeners;
  */
 public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
-    /** Robots whose states share one {@link TimeSteps} frame. */
-    static final int ROBOTS_PER_FRAME = 100;
-    /** How long robots may hear nothing from the Environment before it sends them a {@link KeepAlive}, ms. */
-    static final long KEEP_ALIVE_MS = 1_000;
-    /** How often a paused run looks up from waiting for requests, ms: well within {@link #KEEP_ALIVE_MS}. */
+    /**
+     * How often a paused run (or one with no robot) looks up from waiting, ms: well within
+     * {@link TimeStepSender#KEEP_ALIVE_MS}.
+     */
     static final long PAUSED_WAKE_MS = 250;
 
     private final Simulation sim;
@@ -62,8 +54,8 @@ public final class EnvironmentServer implements AutoCloseable {
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
     private final Doorway doorway;
     private final SnapshotListeners listeners = new SnapshotListeners();
+    private final TimeStepSender sender;
     private Selector selector;
-    private long sentToRobotsNanos = System.nanoTime();
     private final ProgressReports progress;
 
     /**
@@ -83,6 +75,7 @@ public final class EnvironmentServer implements AutoCloseable {
         this.doorway = new Doorway(options, codec, rules);
         this.progress = new ProgressReports(sim, rules, options);
         this.workers = new PooledParallel(options.threads());
+        this.sender = new TimeStepSender(codec, workers);
         sim.setParallel(workers);
     }
 
@@ -140,6 +133,7 @@ public final class EnvironmentServer implements AutoCloseable {
     public RunReport run() throws InterruptedException {
         awaitRobots();
         long connected = System.nanoTime();
+        rules.start();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
         listeners.world(sim.description());
         listeners.snapshot(sim.snapshot());
@@ -161,7 +155,7 @@ public final class EnvironmentServer implements AutoCloseable {
             summaries.add(sim.summary(name));
         }
         return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find(), connected,
-                departures);
+                departures, rules.joins());
     }
 
     /** @return a time as seconds when it is whole seconds (as {@code env --connect-timeout} gives it), else ms */
@@ -200,7 +194,7 @@ public final class EnvironmentServer implements AutoCloseable {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
                 progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
-            String end = endReason();
+            String end = RunEnd.reason(sim, rules, options.maxSteps());
             if (end == null) {
                 // control requests are carried out here, between steps, so the same requests at the same steps give the same run
                 end = control.atBoundary();
@@ -209,8 +203,9 @@ public final class EnvironmentServer implements AutoCloseable {
                 return end;
             }
             long current = sim.stepCount() + 1;
-            if (control.holding()) {
-                // paused: no step is open, so no deadline runs; the pump keeps the robots alive
+            if (control.holding() || rules.connectedRobots().isEmpty()) {
+                // paused, or no robot to run (a world that does not end when all have gone waits for
+                // one to join): no step is open, so no deadline runs; the pump keeps the robots alive
                 pump(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAUSED_WAKE_MS));
                 continue;
             }
@@ -233,25 +228,9 @@ public final class EnvironmentServer implements AutoCloseable {
         }
     }
 
-    /** @return why the run ends now of itself (no robots, the step limit, the gold found), or null */
-    private String endReason() {
-        if (rules.connectedRobots().isEmpty()) {
-            return "every robot has disconnected";
-        }
-        if (options.maxSteps() > 0 && sim.stepCount() >= options.maxSteps()) {
-            return "step limit " + options.maxSteps() + " reached";
-        }
-        // a find ends the run once the finder's news has had time to reach its team
-        Find find = sim.find();
-        if (find != null && sim.stepCount() >= find.step() + sim.commsSettings().latencySteps() + 1) {
-            return "gold found by " + find.robot() + " at step " + find.step();
-        }
-        return null;
-    }
-
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
         rules.openStep(current);
-        sendTimeSteps(current);
+        sender.send(sim, rules.connectedRobots(), current);
         long opened = System.nanoTime();
         long deadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
         progress.waitingSince(opened);
@@ -269,46 +248,6 @@ public final class EnvironmentServer implements AutoCloseable {
             pump(deadline);
         }
         return rules.closeStep();
-    }
-
-    /**
-     * Opens the step for every robot: a {@link TimeStep} to each robot on a connection of its own,
-     * {@link TimeSteps} to each shared link for its robots, {@value #ROBOTS_PER_FRAME} robots a
-     * frame (so that frames stay far under the size limit, are encoded side by side, and the link's
-     * first robots start while the rest are on their way). The states are read in the robots'
-     * order; the frames are encoded on the worker threads.
-     */
-    private void sendTimeSteps(long current) {
-        long timeMs = sim.timeMs();
-        List<Connection> to = new ArrayList<>();
-        List<Message> steps = new ArrayList<>();
-        Map<Connection, List<TimeSteps.ForRobot>> links = new LinkedHashMap<>();
-        for (Map.Entry<String, Connection> r : rules.connectedRobots().entrySet()) {
-            Connection c = r.getValue();
-            RobotState state = sim.state(r.getKey());
-            if (c.isLink()) {
-                links.computeIfAbsent(c, k -> new ArrayList<>()).add(new TimeSteps.ForRobot(r.getKey(), state));
-            } else {
-                to.add(c);
-                steps.add(new TimeStep(current, timeMs, state));
-            }
-        }
-        for (Map.Entry<Connection, List<TimeSteps.ForRobot>> link : links.entrySet()) {
-            List<TimeSteps.ForRobot> robots = link.getValue();
-            for (int from = 0; from < robots.size(); from += ROBOTS_PER_FRAME) {
-                to.add(link.getKey());
-                steps.add(new TimeSteps(current, timeMs, robots.subList(from,
-                        Math.min(robots.size(), from + ROBOTS_PER_FRAME))));
-            }
-        }
-        ByteBuffer[] frames = new ByteBuffer[steps.size()];
-        // a frame of a link's robots is worth a worker's wake-up on its own
-        workers.forEach(frames.length, links.isEmpty() ? PooledParallel.MIN_CHUNK : 1,
-                i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
-        for (int i = 0; i < frames.length; i++) {
-            to.get(i).sendFrame(frames[i]);
-        }
-        sentToRobotsNanos = System.nanoTime();
     }
 
     /** Serves every ready connection once, waiting until something is ready or the deadline. */
@@ -339,28 +278,7 @@ public final class EnvironmentServer implements AutoCloseable {
             }
         }
         doorway.served();
-        keepRobotsAlive();
-    }
-
-    /**
-     * Sends a {@link KeepAlive} to every robot connection and shared link that has said hello, once
-     * robots have been sent nothing for {@link #KEEP_ALIVE_MS}: before the first step while other
-     * robots are still connecting, while a slow robot holds a step up, and while the run is paused.
-     * A robot that hears nothing, neither a step nor a keep-alive, for its lost time declares the
-     * Environment lost.
-     */
-    private void keepRobotsAlive() {
-        long now = System.nanoTime();
-        if (now - sentToRobotsNanos < TimeUnit.MILLISECONDS.toNanos(KEEP_ALIVE_MS)) {
-            return;
-        }
-        sentToRobotsNanos = now;
-        ByteBuffer frame = FrameWriter.frame(codec, new KeepAlive(sim.stepCount()));
-        for (Connection c : doorway.connections()) {
-            if (c.kind == Connection.Kind.ROBOT && (c.isLink() || c.name() != null)) {
-                c.sendFrame(frame.duplicate());
-            }
-        }
+        sender.keepAlive(sim.stepCount(), doorway.connections());
     }
 
     private void serve(Connection c, SelectionKey key) {

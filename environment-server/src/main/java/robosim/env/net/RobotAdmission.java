@@ -6,7 +6,8 @@ import robosim.protocol.RobotHello;
 /**
  * Which robot hellos the Environment admits: the run's secret (a shared link presented it when it
  * opened), a name by the rule and of the world, the type the world declares, a name not yet taken,
- * a run not yet started, and parameters within the physical bounds. Part of {@link SessionRules}.
+ * and parameters within the physical bounds. A robot may join after the run started (see
+ * {@link RobotJoins}). Part of {@link SessionRules}.
  */
 final class RobotAdmission {
     private final Simulation sim;
@@ -21,10 +22,9 @@ final class RobotAdmission {
      * @param c       the connection the hello came on
      * @param hello   the hello
      * @param taken   whether a robot of that name is connected
-     * @param started whether the run has started
      * @return why the robot is refused, or null if it is admitted
      */
-    String refusal(Connection c, RobotHello hello, boolean taken, boolean started) {
+    String refusal(Connection c, RobotHello hello, boolean taken) {
         String secret = c.isLink() ? null : access.refusal("robot " + RobotHello.printable(hello.name()), hello.token());
         if (secret != null) {
             return secret;
@@ -43,9 +43,6 @@ final class RobotAdmission {
         }
         if (taken) {
             return "robot " + hello.name() + " is already connected";
-        }
-        if (started) {
-            return "the run has started";
         }
         if (hello.parameters() == null) {
             return "robot " + hello.name() + " sent no parameters";

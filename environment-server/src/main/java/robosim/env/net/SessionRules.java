@@ -20,12 +20,12 @@ import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.Snapshot;
-import robosim.protocol.Welcome;
 
 /**
  * The protocol's rules for each peer, applied by the step loop: who may say what and when. A robot
  * says hello once, with a name the world knows and no other program is using, before the first
- * step; then sends exactly one set of requests for each step the Environment opens. A shared link
+ * step or later ({@link RobotJoins}); then sends exactly one set of requests for each step the
+ * Environment opens after it was welcomed. A shared link
  * (a connection that said {@link LinkHello}) follows the same rules for each of its robots, and a
  * robot that breaks one is dropped alone while the link goes on. A viewer says hello and then only
  * listens; a control client says hello and may then change the run. When the run has a secret
@@ -41,7 +41,7 @@ final class SessionRules {
 
     private final Simulation sim;
     private final Access access;
-    private final RobotAdmission admission;
+    private final RobotJoins joins;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final ViewerPortRules viewerPort;
     private final RunControl control;
@@ -58,7 +58,7 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.sim = sim;
         this.access = access;
-        this.admission = new RobotAdmission(sim, access);
+        this.joins = new RobotJoins(sim, access, departures);
         this.control = new RunControl(sim, this);
         this.viewerPort = new ViewerPortRules(sim, access, limits, control);
     }
@@ -90,9 +90,19 @@ final class SessionRules {
         return waiting;
     }
 
+    /** The run starts: from now robots that join or go are recorded. */
+    void start() {
+        departures.start();
+    }
+
     /** @return the robots that left, were dropped or were lost since the run started, in that order */
     List<Departure> departures() {
         return departures.list();
+    }
+
+    /** @return the robots that joined after the run started, in that order */
+    List<Join> joins() {
+        return departures.joins();
     }
 
     /** Marks a robot gone at the step open (or the last step run). */
@@ -116,6 +126,7 @@ final class SessionRules {
 
     /** Opens a step: from now the connected robots' requests for it are collected. */
     void openStep(long step) {
+        departures.start();
         openStep = step;
         commands = new HashMap<>();
         waiting.clear();
@@ -210,18 +221,6 @@ final class SessionRules {
         }
     }
 
-    /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
-    private void overriding(RobotHello hello) {
-        sim.world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
-            String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
-            if (difference != null) {
-                String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();
-                LOG.info(() -> "robot " + hello.name() + ": its program's parameters differ from the world's file"
-                        + file + " (first: " + difference + "); the program's parameters win");
-            }
-        });
-    }
-
     /** Closes a shared link, dropping each of its robots with a log line that names it. */
     private void closeLink(Connection c, String reason) {
         for (String robot : c.robots()) {
@@ -231,34 +230,7 @@ final class SessionRules {
     }
 
     private void hello(Connection c, RobotHello hello) {
-        String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()),
-                sim.stepCount() > 0 || openStep > 0);
-        if (refusal == null) {
-            try {
-                overriding(hello);
-                sim.useParameters(hello.name(), hello.parameters());
-            } catch (IllegalArgumentException e) {
-                refusal = e.getMessage();
-            }
-        }
-        if (refusal != null) {
-            LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
-            if (c.isLink()) {
-                c.send(new Bye(Bye.REFUSED + refusal, hello.name()));
-            } else {
-                c.sendAndClose(new Bye(Bye.REFUSED + refusal));
-            }
-            return;
-        }
-        if (c.isLink()) {
-            c.addRobot(hello.name());
-        } else {
-            c.setName(hello.name());
-        }
-        robots.put(hello.name(), c);
-        sim.setConnected(hello.name(), true);
-        c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
-        LOG.info(() -> "robot " + hello.name() + " connected" + (c.isLink() ? " on a shared link (" + c.peer() + ")" : ""));
+        joins.hello(c, hello, robots, openStep);
     }
 
     private void requests(Connection c, String name, long step, List<Command> sent) {
