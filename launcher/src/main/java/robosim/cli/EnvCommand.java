@@ -84,6 +84,10 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     PioneerOptions pioneer;
 
+    @Option(names = "--open", description = "admit robots the world does not name, at its <spawn> poses, as the"
+            + " world's open=\"true\" does (docs/WORLD-FORMAT.md)")
+    boolean open;
+
     @Option(names = "--wait-viewers", defaultValue = "0", paramLabel = "N", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
@@ -118,6 +122,9 @@ final class EnvCommand implements Callable<Integer> {
         List<RobotRequest> requests = requests();
         try {
             w = WorldReader.read(world, requests);
+            if (open) {
+                w = w.withRules(w.rules().withOpen(true));
+            }
         } catch (WorldFileException e) {
             err.println("robosim env: " + e.getMessage());
             return 1;

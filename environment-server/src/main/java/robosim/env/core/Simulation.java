@@ -54,9 +54,11 @@ public final class Simulation {
     private final Placement placement;
     /** The robots in the world file's order, and where each name stands in it. */
     private final List<SimRobot> order = new ArrayList<>();
+    /** Each robot's start, in {@link #order}: the world's robots, then those spawned during the run. */
+    private final List<RobotSpec> starts = new ArrayList<>();
     private final Map<String, Integer> indexes = new HashMap<>();
     /** Before step 1: whose sensors are yet to be read (their noise streams untouched). */
-    private final boolean[] unread;
+    private boolean[] unread;
     private Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
     private final List<Snapshot.Said> said = new ArrayList<>();
@@ -106,6 +108,7 @@ public final class Simulation {
             }
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
             order.add(newRobot(spec, spec.parameters(), body, id, streams.split()));
+            starts.add(spec);
         }
         unread = new boolean[order.size()];
         Arrays.fill(unread, true);
@@ -146,11 +149,57 @@ public final class Simulation {
      */
     private void renew(int i, RobotParameters p, BodyShape body) {
         SimRobot prev = order.get(i);
-        RobotSpec spec = world.robots().get(i);
+        RobotSpec spec = starts.get(i);
         SimRobot r = newRobot(spec, p, body, prev.bodyId, unread[i] ? prev.random : stream(i));
         r.connected = prev.connected;
         order.set(i, r);
         unread[i] = true;
+    }
+
+    /**
+     * Adds a robot the world does not name (an open world's newcomer) at the first of the poses
+     * where its body lies inside the world and touches nothing. It draws its noise from the stream
+     * split from the seed for its place in the order, so the same joins give the same run.
+     *
+     * @param name   its name, not yet in the world
+     * @param type   the robot API its program is written against
+     * @param params its parameters, which give its body
+     * @param poses  where it may be placed, in order; headings in radians
+     * @return the pose it was placed at
+     * @throws IllegalArgumentException if the name is taken or no pose is free, saying so
+     */
+    public Pose2D spawn(String name, String type, RobotParameters params, List<Pose2D> poses) {
+        if (indexes.containsKey(name)) {
+            throw new IllegalArgumentException("world " + world.name() + " already has a robot named '" + name + "'");
+        }
+        if (poses.isEmpty()) {
+            throw new IllegalArgumentException("world " + world.name() + " has no <spawn> pose for robot " + name);
+        }
+        BodyShape body = RobotSpec.bodyOf(params);
+        for (Pose2D pose : poses) {
+            if (placement.inside(body, pose, world.bounds()) && !geometry.overlaps(body, pose, -1)) {
+                int i = order.size();
+                RobotSpec spec = new RobotSpec(name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), null, params, 0);
+                order.add(newRobot(spec, params, body, geometry.addBody(body, pose), stream(i)));
+                starts.add(spec);
+                indexes.put(name, i);
+                unread = Arrays.copyOf(unread, order.size());
+                unread[i] = true;
+                messages.addRobot(name);
+                return pose;
+            }
+        }
+        throw new IllegalArgumentException("every <spawn> pose of world " + world.name() + " (" + poses.size()
+                + ") is taken or too tight for robot " + name + "'s body of " + params.robotLength() + " x "
+                + params.robotWidth() + " mm");
+    }
+
+    /**
+     * @param name a robot
+     * @return the robot API its program is written against, as the world or its hello named it
+     */
+    public String type(String name) {
+        return robot(name).type;
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import robosim.protocol.Snapshot;
 
 /**
  * The robots that went, and came, during the run, as the session rules see them. Only the first
@@ -14,6 +15,8 @@ final class Departures {
     private final List<Departure> gone = new ArrayList<>();
     private final List<Join> joins = new ArrayList<>();
     private final Set<String> away = new HashSet<>();
+    /** The joins and departures not yet in a snapshot. */
+    private final List<Snapshot.Event> events = new ArrayList<>();
     private boolean started;
 
     /** The run has started: from now every departure and join is recorded. */
@@ -37,6 +40,7 @@ final class Departures {
     void mark(String robot, Departure.Kind kind, long step, String reason) {
         if (started && away.add(robot)) {
             gone.add(new Departure(robot, kind, step, reason));
+            events.add(new Snapshot.Event(robot, kind.word(), step, reason));
         }
     }
 
@@ -55,7 +59,15 @@ final class Departures {
         Join.Kind kind = spawned ? Join.Kind.SPAWNED : away.remove(robot) ? Join.Kind.REJOINED : Join.Kind.LATE;
         Join j = new Join(robot, kind, step);
         joins.add(j);
+        events.add(new Snapshot.Event(robot, kind.word(), step, ""));
         return j;
+    }
+
+    /** @return the joins and departures since the last call, for the next snapshot, in the order they came */
+    List<Snapshot.Event> takeEvents() {
+        List<Snapshot.Event> taken = List.copyOf(events);
+        events.clear();
+        return taken;
     }
 
     /** @return the robots gone, in the order they went; a robot that came back may be in it more than once */

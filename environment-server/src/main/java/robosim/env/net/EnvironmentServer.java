@@ -22,6 +22,7 @@ import robosim.protocol.InvalidValueException;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
+import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.SnapshotListeners;
 
@@ -135,6 +136,10 @@ public final class EnvironmentServer implements AutoCloseable {
         long connected = System.nanoTime();
         rules.start();
         LOG.info(() -> "all robots connected; running world " + sim.world().name());
+        if (rules.takeWorldChanged()) {
+            // robots spawned before the start: the viewers attached before them learn of them now
+            rules.broadcastSnapshot(sim.description(), codec);
+        }
         listeners.world(sim.description());
         listeners.snapshot(sim.snapshot());
         long started = System.nanoTime();
@@ -171,7 +176,9 @@ public final class EnvironmentServer implements AutoCloseable {
             long now = System.nanoTime();
             progress.reportIfDue(RunProgress.Phase.CONNECTING, now);
             if (now >= deadline) {
-                String why = "robots " + rules.missing() + " and " + Math.max(0,
+                String who = rules.missing().isEmpty() ? "no robot (open world " + sim.world().name() + ")"
+                        : "robots " + rules.missing();
+                String why = who + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
                         + inUnitGiven(options.connectTimeoutMs());
                 // the robots that came are told why the run they waited for will not start
@@ -219,13 +226,29 @@ public final class EnvironmentServer implements AutoCloseable {
             Map<String, List<Command>> commands = collect(current);
             sim.step(commands);
             control.stepped();
-            // the snapshot is built only when someone watches: benchmarks and headless runs skip it
-            if (rules.viewerCount() > 0 || listeners.size() > 0) {
-                Snapshot snapshot = sim.snapshot();
-                rules.broadcastSnapshot(snapshot, codec);
-                listeners.snapshot(snapshot);
-            }
+            publish();
         }
+    }
+
+    /**
+     * Sends the viewers and listeners the snapshot after a step, with the robots that joined or went
+     * since the one before, and before it the world again when a robot was added to it. The snapshot
+     * is built only when someone watches: benchmarks and headless runs skip it.
+     */
+    private void publish() {
+        boolean worldChanged = rules.takeWorldChanged();
+        List<Snapshot.Event> events = rules.takeEvents();
+        if (rules.viewerCount() == 0 && listeners.size() == 0) {
+            return;
+        }
+        if (worldChanged) {
+            WorldDescription world = sim.description();
+            rules.broadcastSnapshot(world, codec);
+            listeners.world(world);
+        }
+        Snapshot snapshot = sim.snapshot().withEvents(events);
+        rules.broadcastSnapshot(snapshot, codec);
+        listeners.snapshot(snapshot);
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {

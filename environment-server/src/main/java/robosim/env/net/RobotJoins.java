@@ -1,8 +1,10 @@
 package robosim.env.net;
 
+import java.util.Locale;
 import java.util.Map;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
+import robosim.geometry.Pose2D;
 import robosim.protocol.Bye;
 import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
@@ -21,11 +23,19 @@ final class RobotJoins {
     private final Simulation sim;
     private final RobotAdmission admission;
     private final Departures departures;
+    private boolean worldChanged;
 
-    RobotJoins(Simulation sim, Access access, Departures departures) {
+    RobotJoins(Simulation sim, Access access, Limits limits, Departures departures) {
         this.sim = sim;
-        this.admission = new RobotAdmission(sim, access);
+        this.admission = new RobotAdmission(sim, access, limits.maxRobots());
         this.departures = departures;
+    }
+
+    /** @return whether a robot was added to the world since the last call */
+    boolean takeWorldChanged() {
+        boolean changed = worldChanged;
+        worldChanged = false;
+        return changed;
     }
 
     /**
@@ -39,7 +49,10 @@ final class RobotJoins {
     void hello(Connection c, RobotHello hello, Map<String, Connection> robots, long openStep) {
         boolean started = departures.started() || openStep > 0;
         String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()));
-        if (refusal == null) {
+        boolean spawned = refusal == null && !sim.robotNames().contains(hello.name());
+        if (spawned) {
+            refusal = spawn(hello);
+        } else if (refusal == null) {
             refusal = started ? sameBody(hello) : useParameters(hello);
         }
         if (refusal != null) {
@@ -60,12 +73,26 @@ final class RobotJoins {
         sim.setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
         String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";
-        Join join = departures.joined(hello.name(), false, openStep > 0 ? openStep + 1 : sim.stepCount() + 1);
+        Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim.stepCount() + 1);
         if (join == null) {
             LOG.info(() -> "robot " + hello.name() + " connected" + on);
         } else {
             LOG.info(() -> "robot " + hello.name() + " " + join.describe() + on + " (after step " + sim.stepCount()
                     + ")");
+        }
+    }
+
+    /** An open world's newcomer: placed at the first free spawn pose. @return why not, or null */
+    private String spawn(RobotHello hello) {
+        try {
+            String type = hello.robotType().toLowerCase(Locale.ROOT);
+            Pose2D at = sim.spawn(hello.name(), type, hello.parameters(), sim.world().rules().spawns());
+            worldChanged = true;
+            LOG.info(() -> String.format(Locale.ROOT, "robot %s (a %s the world does not name) placed at spawn pose"
+                    + " (%.0f, %.0f, %.0f)", hello.name(), type, at.x(), at.y(), Math.toDegrees(at.th())));
+            return null;
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
         }
     }
 

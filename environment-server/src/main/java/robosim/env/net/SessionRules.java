@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
+import robosim.env.world.RobotSpec;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameException;
@@ -58,7 +59,7 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.sim = sim;
         this.access = access;
-        this.joins = new RobotJoins(sim, access, departures);
+        this.joins = new RobotJoins(sim, access, limits, departures);
         this.control = new RunControl(sim, this);
         this.viewerPort = new ViewerPortRules(sim, access, limits, control);
     }
@@ -68,13 +69,19 @@ final class SessionRules {
         return control;
     }
 
+    /** @return whether the run may start: every robot the world names is connected, and in an open world at least one robot */
     boolean allConnected() {
-        return robots.size() == sim.robotNames().size();
+        return missing().isEmpty() && !(sim.world().rules().open() && robots.isEmpty());
     }
 
+    /** @return the robots the world names that are not connected, in the world's order */
     List<String> missing() {
-        List<String> m = new ArrayList<>(sim.robotNames());
-        m.removeAll(robots.keySet());
+        List<String> m = new ArrayList<>();
+        for (RobotSpec r : sim.world().robots()) {
+            if (!robots.containsKey(r.name())) {
+                m.add(r.name());
+            }
+        }
         return m;
     }
 
@@ -98,6 +105,16 @@ final class SessionRules {
     /** @return the robots that left, were dropped or were lost since the run started, in that order */
     List<Departure> departures() {
         return departures.list();
+    }
+
+    /** @return whether a robot was added to the world since the last call (viewers must be sent the world again) */
+    boolean takeWorldChanged() {
+        return joins.takeWorldChanged();
+    }
+
+    /** @return the joins and departures since the last call, for the next snapshot */
+    List<Snapshot.Event> takeEvents() {
+        return departures.takeEvents();
     }
 
     /** @return the robots that joined after the run started, in that order */
@@ -146,8 +163,8 @@ final class SessionRules {
         return collected;
     }
 
-    /** Sends a snapshot to every viewer, encoded once. */
-    void broadcastSnapshot(Snapshot snapshot, MessageCodec codec) {
+    /** Sends a snapshot (or a world that changed) to every viewer, encoded once. */
+    void broadcastSnapshot(Message snapshot, MessageCodec codec) {
         viewerPort.broadcast(snapshot, codec);
     }
 

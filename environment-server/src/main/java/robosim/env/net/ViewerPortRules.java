@@ -44,8 +44,8 @@ final class ViewerPortRules {
         return viewers.size();
     }
 
-    /** Sends a snapshot to every viewer, encoded once. */
-    void broadcast(Snapshot snapshot, MessageCodec codec) {
+    /** Sends a snapshot (or a world that changed) to every viewer, encoded once. */
+    void broadcast(Message snapshot, MessageCodec codec) {
         viewers.removeIf(Connection::isClosed);
         if (viewers.isEmpty()) {
             return;
