@@ -69,9 +69,12 @@ final class SessionRules {
         return control;
     }
 
-    /** @return whether the run may start: every robot the world names is connected, and in an open world at least one robot */
+    /**
+     * @return whether the run may start: every robot the world names is connected; in an open world,
+     *         any one robot (the others may join later)
+     */
     boolean allConnected() {
-        return missing().isEmpty() && !(sim.world().rules().open() && robots.isEmpty());
+        return sim.world().rules().open() ? !robots.isEmpty() : missing().isEmpty();
     }
 
     /** @return the robots the world names that are not connected, in the world's order */
