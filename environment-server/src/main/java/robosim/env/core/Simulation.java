@@ -422,6 +422,11 @@ public final class Simulation {
         robot(name).drive(new Command.Stop());
     }
 
+    /** @return the seed of the run's noise */
+    public long seed() {
+        return seed;
+    }
+
     /** @return the number of steps taken */
     public long stepCount() {
         return step;

@@ -19,6 +19,15 @@ final class Departures {
     private final List<Snapshot.Event> events = new ArrayList<>();
     private boolean started;
 
+    /** A new run replaces the one recorded: everything is forgotten, and the new run has not started. */
+    void reset() {
+        gone.clear();
+        joins.clear();
+        away.clear();
+        events.clear();
+        started = false;
+    }
+
     /** The run has started: from now every departure and join is recorded. */
     void start() {
         started = true;

@@ -16,14 +16,18 @@ final class RobotAdmission {
     /** The types a robot the world does not name may be: those a world file may name. */
     static final List<String> SPAWN_TYPES = List.of("pioneer", "scout");
 
-    private final Simulation sim;
+    private final CurrentRun run;
     private final Access access;
     private final int maxRobots;
 
-    RobotAdmission(Simulation sim, Access access, int maxRobots) {
-        this.sim = sim;
+    RobotAdmission(CurrentRun run, Access access, int maxRobots) {
+        this.run = run;
         this.access = access;
         this.maxRobots = maxRobots;
+    }
+
+    private Simulation sim() {
+        return run.sim();
     }
 
     /**
@@ -40,13 +44,13 @@ final class RobotAdmission {
         if (!RobotHello.validName(hello.name())) {
             return RobotHello.NAME_RULE + "; " + RobotHello.quoted(hello.name()) + " is not";
         }
-        if (!sim.robotNames().contains(hello.name())) {
+        if (!sim().robotNames().contains(hello.name())) {
             String newcomer = newcomer(hello);
             if (newcomer != null) {
                 return newcomer;
             }
-        } else if (!sim.type(hello.name()).equalsIgnoreCase(hello.robotType())) {
-            String declared = sim.type(hello.name());
+        } else if (!sim().type(hello.name()).equalsIgnoreCase(hello.robotType())) {
+            String declared = sim().type(hello.name());
             return "robot " + hello.name() + " is a " + declared + " in the world, not a "
                     + SessionRules.printable(hello.robotType());
         }
@@ -62,16 +66,16 @@ final class RobotAdmission {
 
     /** @return why a robot the world does not name is refused, or null if an open world may take it */
     private String newcomer(RobotHello hello) {
-        if (!sim.world().rules().open()) {
-            return "world " + sim.world().name() + " has no robot named '" + hello.name() + "'";
+        if (!sim().world().rules().open()) {
+            return "world " + sim().world().name() + " has no robot named '" + hello.name() + "'";
         }
         String type = hello.robotType() == null ? "" : hello.robotType().toLowerCase(Locale.ROOT);
         if (!SPAWN_TYPES.contains(type)) {
             return "robot " + hello.name() + " is a " + SessionRules.printable(hello.robotType())
                     + "; an open world admits " + String.join(" and ", SPAWN_TYPES) + " robots";
         }
-        if (sim.robotNames().size() >= maxRobots) {
-            return "world " + sim.world().name() + " has " + sim.robotNames().size()
+        if (sim().robotNames().size() >= maxRobots) {
+            return "world " + sim().world().name() + " has " + sim().robotNames().size()
                     + " robots, the most this Environment admits (--max-robots)";
         }
         return null;

@@ -20,15 +20,19 @@ import robosim.protocol.Welcome;
 final class RobotJoins {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
 
-    private final Simulation sim;
+    private final CurrentRun run;
     private final RobotAdmission admission;
     private final Departures departures;
     private boolean worldChanged;
 
-    RobotJoins(Simulation sim, Access access, Limits limits, Departures departures) {
-        this.sim = sim;
-        this.admission = new RobotAdmission(sim, access, limits.maxRobots());
+    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures) {
+        this.run = run;
+        this.admission = new RobotAdmission(run, access, limits.maxRobots());
         this.departures = departures;
+    }
+
+    private Simulation sim() {
+        return run.sim();
     }
 
     /** @return whether a robot was added to the world since the last call */
@@ -49,7 +53,7 @@ final class RobotJoins {
     void hello(Connection c, RobotHello hello, Map<String, Connection> robots, long openStep) {
         boolean started = departures.started() || openStep > 0;
         String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()));
-        boolean spawned = refusal == null && !sim.robotNames().contains(hello.name());
+        boolean spawned = refusal == null && !sim().robotNames().contains(hello.name());
         if (spawned) {
             refusal = spawn(hello);
         } else if (refusal == null) {
@@ -70,14 +74,14 @@ final class RobotJoins {
             c.setName(hello.name());
         }
         robots.put(hello.name(), c);
-        sim.setConnected(hello.name(), true);
-        c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
+        sim().setConnected(hello.name(), true);
+        c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name())));
         String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";
-        Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim.stepCount() + 1);
+        Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim().stepCount() + 1);
         if (join == null) {
             LOG.info(() -> "robot " + hello.name() + " connected" + on);
         } else {
-            LOG.info(() -> "robot " + hello.name() + " " + join.describe() + on + " (after step " + sim.stepCount()
+            LOG.info(() -> "robot " + hello.name() + " " + join.describe() + on + " (after step " + sim().stepCount()
                     + ")");
         }
     }
@@ -86,7 +90,7 @@ final class RobotJoins {
     private String spawn(RobotHello hello) {
         try {
             String type = hello.robotType().toLowerCase(Locale.ROOT);
-            Pose2D at = sim.spawn(hello.name(), type, hello.parameters(), sim.world().rules().spawns());
+            Pose2D at = sim().spawn(hello.name(), type, hello.parameters(), sim().world().rules().spawns());
             worldChanged = true;
             LOG.info(() -> String.format(Locale.ROOT, "robot %s (a %s the world does not name) placed at spawn pose"
                     + " (%.0f, %.0f, %.0f)", hello.name(), type, at.x(), at.y(), Math.toDegrees(at.th())));
@@ -100,7 +104,7 @@ final class RobotJoins {
     private String useParameters(RobotHello hello) {
         try {
             overriding(hello);
-            sim.useParameters(hello.name(), hello.parameters());
+            sim().useParameters(hello.name(), hello.parameters());
             return null;
         } catch (IllegalArgumentException e) {
             return e.getMessage();
@@ -109,18 +113,18 @@ final class RobotJoins {
 
     /** During the run: the program must bring its body's parameters. @return why not, or null */
     private String sameBody(RobotHello hello) {
-        String difference = ParameterDifference.first(sim.parameters(hello.name()), hello.parameters(), "its body");
+        String difference = ParameterDifference.first(sim().parameters(hello.name()), hello.parameters(), "its body");
         if (difference == null) {
             return null;
         }
-        return "robot " + hello.name() + " joins the run under way (after step " + sim.stepCount()
+        return "robot " + hello.name() + " joins the run under way (after step " + sim().stepCount()
                 + ") with parameters that differ from its body's (first: " + difference
                 + "); a body keeps its parameters during a run";
     }
 
     /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
     private void overriding(RobotHello hello) {
-        sim.world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
+        sim().world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
             String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
             if (difference != null) {
                 String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();

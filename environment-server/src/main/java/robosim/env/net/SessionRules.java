@@ -40,7 +40,7 @@ final class SessionRules {
     /** Why a robot whose connection ended cleanly but without a bye is lost. */
     static final String NO_BYE = "the connection closed without a bye";
 
-    private final Simulation sim;
+    private final CurrentRun run;
     private final Access access;
     private final RobotJoins joins;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
@@ -57,11 +57,37 @@ final class SessionRules {
     }
 
     SessionRules(Simulation sim, Access access, Limits limits) {
-        this.sim = sim;
+        this.run = new CurrentRun(sim);
         this.access = access;
-        this.joins = new RobotJoins(sim, access, limits, departures);
-        this.control = new RunControl(sim, this);
-        this.viewerPort = new ViewerPortRules(sim, access, limits, control);
+        this.joins = new RobotJoins(run, access, limits, departures);
+        this.control = new RunControl(run, this, limits.maxRobots());
+        this.viewerPort = new ViewerPortRules(run, access, limits, control);
+    }
+
+    /** @return the simulation run now (a restart or load replaces it) */
+    Simulation sim() {
+        return run.sim();
+    }
+
+    /**
+     * Puts a new simulation in place of the one run now, between two steps: every robot of the run
+     * is told why in a bye and taken out (a shared link stays open for its robots to say hello
+     * again), and the new run waits for its robots as a run does at its start. Viewers and control
+     * clients stay.
+     *
+     * @param next the new simulation
+     * @param why  what the robots are told
+     */
+    void replace(Simulation next, String why) {
+        for (String robot : List.copyOf(robots.keySet())) {
+            drop(robot, why);
+        }
+        run.replace(next);
+        departures.reset();
+        openStep = 0;
+        commands = null;
+        waiting.clear();
+        joins.takeWorldChanged();
     }
 
     /** @return the control clients' requests, for the step loop to carry out between steps */
@@ -74,13 +100,13 @@ final class SessionRules {
      *         any one robot (the others may join later)
      */
     boolean allConnected() {
-        return sim.world().rules().open() ? !robots.isEmpty() : missing().isEmpty();
+        return sim().world().rules().open() ? !robots.isEmpty() : missing().isEmpty();
     }
 
     /** @return the robots the world names that are not connected, in the world's order */
     List<String> missing() {
         List<String> m = new ArrayList<>();
-        for (RobotSpec r : sim.world().robots()) {
+        for (RobotSpec r : sim().world().robots()) {
             if (!robots.containsKey(r.name())) {
                 m.add(r.name());
             }
@@ -127,7 +153,7 @@ final class SessionRules {
 
     /** Marks a robot gone at the step open (or the last step run). */
     private void departed(String robot, Departure.Kind kind, String reason) {
-        departures.mark(robot, kind, openStep > 0 ? openStep : sim.stepCount(), reason);
+        departures.mark(robot, kind, openStep > 0 ? openStep : sim().stepCount(), reason);
     }
 
     /** Marks the robots of a robot connection lost. */
@@ -203,7 +229,7 @@ final class SessionRules {
         } else if (m instanceof RobotRequests req) {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+            LOG.info(() -> "robot " + c.name() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
             departed(c.name(), Departure.Kind.LEFT, printable(bye.reason()));
             c.shut();
             drop(c.name(), null);
@@ -224,12 +250,12 @@ final class SessionRules {
             hello(c, hello);
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
-                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
                 departed(bye.robot(), Departure.Kind.LEFT, printable(bye.reason()));
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+            LOG.info(() -> c.peer() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
             for (String robot : c.robots()) {
                 departed(robot, Departure.Kind.LEFT, printable(bye.reason()));
                 drop(robot, null);
@@ -255,7 +281,7 @@ final class SessionRules {
 
     private void requests(Connection c, String name, long step, List<Command> sent) {
         if (step != openStep || !waiting.contains(name)) {
-            String open = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+            String open = openStep == 0 ? "before step " + (sim().stepCount() + 1) + " was opened"
                     : waiting.contains(name) ? "while step " + openStep + " is open"
                     : "after it had already sent its requests for step " + openStep;
             String rule = "robot " + name + " sent requests for step " + step + " " + open;
@@ -279,7 +305,7 @@ final class SessionRules {
             // the frame could not be read, so whose request it was is unknown: the link goes
             closeLink(c, "sent an invalid message: " + rule);
         } else if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
-            String when = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+            String when = openStep == 0 ? "before step " + (sim().stepCount() + 1) + " was opened"
                     : "for step " + openStep;
             drop(name, "robot " + name + " sent an invalid request " + when + ": " + rule);
         } else {
@@ -320,7 +346,7 @@ final class SessionRules {
             for (String robot : c.robots()) {
                 drop(robot, DISCONNECTED.equals(reason) ? null : "its link: " + reason);
                 if (DISCONNECTED.equals(reason)) {
-                    LOG.info(() -> "robot " + robot + " disconnected at step " + sim.stepCount() + " with its link");
+                    LOG.info(() -> "robot " + robot + " disconnected at step " + sim().stepCount() + " with its link");
                 }
             }
             if (!DISCONNECTED.equals(reason)) {
@@ -329,7 +355,7 @@ final class SessionRules {
         } else if (name != null && robots.get(name) == c) {
             drop(name, DISCONNECTED.equals(reason) ? null : reason);
             if (DISCONNECTED.equals(reason)) {
-                LOG.info(() -> "robot " + name + " disconnected at step " + sim.stepCount());
+                LOG.info(() -> "robot " + name + " disconnected at step " + sim().stepCount());
             }
         } else if (!DISCONNECTED.equals(reason)) {
             c.close(reason);
@@ -349,8 +375,8 @@ final class SessionRules {
         }
         Connection c = robots.remove(name);
         waiting.remove(name);
-        sim.halt(name);
-        sim.setConnected(name, false);
+        sim().halt(name);
+        sim().setConnected(name, false);
         if (c == null) {
             return;
         }
