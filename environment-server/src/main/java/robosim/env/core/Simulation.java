@@ -14,7 +14,6 @@ import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
 import robosim.comms.Positions;
-import robosim.env.world.ForbiddenZone;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
@@ -493,36 +492,12 @@ public final class Simulation {
     /** @return the moving parts of the world now, for viewers */
     public Snapshot snapshot() {
         readUnread();
-        List<Snapshot.RobotView> views = new ArrayList<>();
-        for (SimRobot r : order) {
-            Odometry o = r.odometry();
-            views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
-                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
-                    r.vel(), r.rotVel()));
-        }
-        return new Snapshot(step, timeMs(), views, messages.sentLastStep(), said);
+        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), said);
     }
 
-    /** @return the static world, for viewers */
+    /** @return the static world, with every robot in it now, for viewers */
     public WorldDescription description() {
-        List<WorldDescription.Obstacle> obs = new ArrayList<>();
-        for (Obstacle o : world.obstacles()) {
-            obs.add(new WorldDescription.Obstacle(o.xy(), o.height()));
-        }
-        List<WorldDescription.RobotInfo> infos = new ArrayList<>();
-        for (SimRobot r : order) {
-            infos.add(new WorldDescription.RobotInfo(r.name, r.type, r.params));
-        }
-        List<WorldDescription.HeatSource> heat = new ArrayList<>();
-        for (HeatSource h : world.heat()) {
-            heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity()));
-        }
-        List<WorldDescription.Zone> zones = new ArrayList<>();
-        for (ForbiddenZone z : world.zones()) {
-            zones.add(new WorldDescription.Zone(z.area(), z.xy(), z.label()));
-        }
-        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat,
-                world.minX(), world.minY(), zones);
+        return Views.description(world, order);
     }
 
     /**
