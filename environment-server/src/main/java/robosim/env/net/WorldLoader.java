@@ -36,19 +36,23 @@ final class WorldLoader {
                     + " no directory to load worlds from");
         }
         Path file;
-        Path real;
         try {
             file = dir.resolve(text).normalize();
-            real = file.toRealPath();
         } catch (InvalidPathException e) {
             throw new IllegalArgumentException("load: '" + RobotHello.printable(text, 200) + "' is not a path");
+        }
+        // checked before the file is looked at, so that no client learns what exists outside
+        if (!file.startsWith(dir)) {
+            throw outside(text, dir);
+        }
+        Path real;
+        try {
+            real = file.toRealPath();
         } catch (IOException e) {
             throw new IllegalArgumentException("load: no world file " + RobotHello.printable(text, 200) + " in " + dir);
         }
         if (!real.startsWith(realDirectory(dir))) {
-            throw new IllegalArgumentException("load: " + RobotHello.printable(text, 200) + " is outside " + dir
-                    + ", the directory of the world this Environment was started with; load reads world files there"
-                    + " only");
+            throw outside(text, dir);
         }
         World w;
         try {
@@ -61,6 +65,11 @@ final class WorldLoader {
                     + " robots, more than this Environment admits (" + maxRobots + ", --max-robots)");
         }
         return w;
+    }
+
+    private static IllegalArgumentException outside(String text, Path dir) {
+        return new IllegalArgumentException("load: " + RobotHello.printable(text, 200) + " is outside " + dir
+                + ", the directory of the world this Environment was started with; load reads world files there only");
     }
 
     private static Path realDirectory(Path dir) {

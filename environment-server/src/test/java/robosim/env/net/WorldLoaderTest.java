@@ -65,6 +65,12 @@ class WorldLoaderTest {
     }
 
     @Test
+    void aPathOutsideIsRefusedAsOutsideWhetherOrNotAFileIsThere() {
+        assertTrue(refusal("../no-such-file.xml").startsWith("load: ../no-such-file.xml is outside "),
+                refusal("../no-such-file.xml"));
+    }
+
+    @Test
     void aMissingFileIsRefusedNamingIt() {
         assertEquals("load: no world file nothing.xml in " + worlds, refusal("nothing.xml"));
     }
