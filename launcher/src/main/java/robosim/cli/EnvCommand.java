@@ -193,7 +193,14 @@ final class EnvCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "Seed: %d%n", seed);
             out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,
                     server.robotPort(), bind, server.viewerPort());
-            out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
+            if (w.rules().open()) {
+                // an open world starts at its first robot, named or not
+                out.printf(Locale.ROOT, "Open world: robots it does not name join at its %d spawn pose(s); the run starts"
+                        + " at the first robot%s%n", w.rules().spawns().size(), sim.robotNames().isEmpty() ? ""
+                        : " (it names " + String.join(", ", sim.robotNames()) + ")");
+            } else {
+                out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
+            }
             out.flush();
             RunReport report;
             // the progress line is closed (a terminal's line cleared) before the error or the report
