@@ -311,7 +311,8 @@ public final class Simulation {
         if (c instanceof Command.SetTruePose p) {
             to = new Pose2D(p.x(), p.y(), Math.toRadians(p.th()));
         } else if (c instanceof Command.ResetToStart) {
-            RobotSpec spec = world.robots().get(indexes.get(r.name));
+            // a robot spawned in an open world starts where it was placed
+            RobotSpec spec = starts.get(indexes.get(r.name));
             to = new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th()));
         } else {
             throw new IllegalStateException("no handler for the simulator command " + c);
