@@ -5,16 +5,12 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
-import java.util.HashSet;
 import java.util.Map;
-import java.util.Set;
 import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
-import robosim.comms.Positions;
-import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
@@ -60,8 +56,7 @@ public final class Simulation {
     private boolean[] unread;
     private Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
-    private final List<Snapshot.Said> said = new ArrayList<>();
-    private Find find;
+    private final RunEvents events;
     private long step;
 
     /**
@@ -113,6 +108,7 @@ public final class Simulation {
         Arrays.fill(unread, true);
         // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
         messages = new MessageRouter(robotNames(), world.comms(), new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
+        events = new RunEvents(world, messages);
     }
 
     private SimRobot newRobot(RobotSpec spec, RobotParameters p, BodyShape body, int bodyId, RandomGenerator random) {
@@ -261,7 +257,7 @@ public final class Simulation {
     public void step(Map<String, List<Command>> commands) {
         readUnread();
         long current = step + 1;
-        said.clear();
+        events.newStep();
         for (SimRobot r : order) {
             List<Command> cs = commands.get(r.name);
             if (cs != null) {
@@ -276,7 +272,7 @@ public final class Simulation {
         }
         step = current;
         readSensors();
-        messages.deliver(step, positions(), connectedRobots());
+        messages.deliver(step, new RobotPositions(this::robot, geometry), RobotPositions.connected(order));
     }
 
     /** Hands a command to what carries out its group, in the order the robot sent it. */
@@ -288,21 +284,11 @@ public final class Simulation {
         } else if (c instanceof Command.Messaging m) {
             messages.take(current, r.name, m);
         } else if (c instanceof Command.RunEvent e) {
-            runEvent(r, e, current);
+            events.take(r, e, current);
         } else if (c instanceof Command.Simulator s) {
             simulator(r, s, current);
         } else {
             throw new IllegalStateException("no handler for the command group of " + c);
-        }
-    }
-
-    private void runEvent(SimRobot r, Command.RunEvent e, long current) {
-        if (e instanceof Command.Say say) {
-            said.add(new Snapshot.Said(r.name, say.text()));
-        } else if (e instanceof Command.ReportFound found) {
-            reportFound(r, found.object(), current);
-        } else {
-            throw new IllegalStateException("no handler for the run event " + e);
         }
     }
 
@@ -347,52 +333,9 @@ public final class Simulation {
     /** A robot's report of a find counts when its centre is this near the gold, mm. */
     public static final double GOLD_FOUND_DISTANCE = 1000;
 
-    private void reportFound(SimRobot r, String object, long current) {
-        HeatSource gold = world.gold();
-        if (!"gold".equals(object) || gold == null) {
-            messages.error(r.name, "robot " + r.name + " reported finding '" + object + "', but world "
-                    + world.name() + " has no " + object);
-            return;
-        }
-        double d = Math.hypot(r.x() - gold.x(), r.y() - gold.y());
-        if (d > GOLD_FOUND_DISTANCE) {
-            messages.error(r.name, "robot " + r.name + " reported the gold at step " + current + " but is "
-                    + Math.round(d) + " mm from it; a find counts within " + Math.round(GOLD_FOUND_DISTANCE) + " mm");
-        } else if (find == null) {
-            find = new Find(r.name, current, d);
-        }
-    }
-
     /** @return the first confirmed find of the gold, or null */
     public Find find() {
-        return find;
-    }
-
-    private Positions positions() {
-        return new Positions() {
-            @Override
-            public double[] of(String robot) {
-                SimRobot r = robot(robot);
-                return new double[] {r.x(), r.y()};
-            }
-
-            @Override
-            public boolean clear(String from, String to) {
-                SimRobot a = robot(from);
-                SimRobot b = robot(to);
-                return geometry.lineOfSight(a.x(), a.y(), b.x(), b.y());
-            }
-        };
-    }
-
-    private Set<String> connectedRobots() {
-        Set<String> c = new HashSet<>();
-        for (SimRobot r : order) {
-            if (r.connected) {
-                c.add(r.name);
-            }
-        }
-        return c;
+        return events.find();
     }
 
     /** @return how messages travel now */
@@ -493,7 +436,7 @@ public final class Simulation {
     /** @return the moving parts of the world now, for viewers */
     public Snapshot snapshot() {
         readUnread();
-        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), said);
+        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said());
     }
 
     /** @return the static world, with every robot in it now, for viewers */
