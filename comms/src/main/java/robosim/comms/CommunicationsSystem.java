@@ -34,9 +34,22 @@ public final class CommunicationsSystem {
      * @param seed     the seed of the losses
      */
     public CommunicationsSystem(List<String> robots, CommsSettings settings, long seed) {
-        this.robots = List.copyOf(robots);
+        this.robots = new ArrayList<>(robots);
         this.settings = settings;
         this.random = new SplittableRandom(seed);
+    }
+
+    /**
+     * Adds a robot that joined the world during the run (an open world's newcomer), after the others.
+     *
+     * @param robot its name, not yet in the world
+     * @throws IllegalArgumentException if a robot of that name is already in the world
+     */
+    public void addRobot(String robot) {
+        if (robots.contains(robot)) {
+            throw new IllegalArgumentException("robot '" + robot + "' is already in the world: each name is its own");
+        }
+        robots.add(robot);
     }
 
     /** @return how messages travel now */

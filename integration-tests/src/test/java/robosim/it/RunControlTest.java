@@ -111,8 +111,7 @@ class RunControlTest {
             refused("no robot named 'r9'", control.ask("remove", "r9"));
             refused("within 100000000 of the origin", control.ask("move", "r1", "2e8", "0", "0"));
             refused("its body would overlap something there", control.ask("move", "r1", "4500", "4500", "0"));
-            refused("restart is not yet supported", control.ask("restart"));
-            refused("load is not yet supported", control.ask("load", "maze-small.xml"));
+            refused("load: ../robots/p3dx.p is outside", control.ask("load", "../robots/p3dx.p"));
             refused("unknown operation 'jump'", control.ask("jump"));
             confirmed("ran 2 steps; paused after step " + (k + 2), control.ask("step", "2"));
 
@@ -244,9 +243,9 @@ class RunControlTest {
             assertTrue(err.toString().contains("its body would overlap something there"), err.toString());
 
             err = new StringWriter();
-            assertEquals(1, control(out, err, "control", "--viewer-port", port, "restart"));
-            assertEquals("robosim control: refused: restart is not yet supported by this Environment",
-                    err.toString().strip());
+            assertEquals(1, control(out, err, "control", "--viewer-port", port, "load", "../robots/p3dx.p"));
+            assertTrue(err.toString().strip().startsWith("robosim control: refused: load: ../robots/p3dx.p is outside "),
+                    err.toString());
 
             out = new StringWriter();
             assertEquals(0, control(out, new StringWriter(), "control", "--viewer-port", port, "step", "2"));

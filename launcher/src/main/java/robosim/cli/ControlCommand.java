@@ -19,15 +19,19 @@ import robosim.protocol.ControlRequest;
 import robosim.protocol.RunStatus;
 
 /**
- * {@code robosim control}: pauses, resumes, steps, paces or stops a running Environment, or moves or
- * removes one of its robots, for scripts: the Environment's answer is printed, and a refusal exits 1.
+ * {@code robosim control}: pauses, resumes, steps, paces or stops a running Environment, moves or
+ * removes one of its robots, or restarts its run or loads another world, for scripts: the
+ * Environment's answer is printed, and a refusal exits 1.
  */
 @Command(name = "control", mixinStandardHelpOptions = true,
         description = {"Control a running Environment and print its answer; exit 1 when it refuses.",
             "Operations: pause | resume | step N (while paused: run N steps, then pause) | stop (end the run"
                     + " cleanly) | pace max|realtime|K (K times real time) | move NAME X Y TH (mm, mm, degrees;"
-                    + " odometry unchanged) | remove NAME | status (the run and a tab-separated table of its robots).",
-            "The Environment carries each out between two steps. restart and load are not yet supported."})
+                    + " odometry unchanged) | remove NAME | restart (the same world and seed from step 0) | load WORLD"
+                    + " (another world file, read by the Environment, under the directory of the world it was"
+                    + " started with) | status (the run and a tab-separated table of its robots).",
+            "The Environment carries each out between two steps. On restart and load the run's robots are"
+                    + " disconnected and the new run starts when its robots connect."})
 final class ControlCommand implements Callable<Integer> {
     /** The id of the one request the command sends. */
     private static final long ID = 1;
@@ -46,7 +50,7 @@ final class ControlCommand implements Callable<Integer> {
                     + " ${DEFAULT-VALUE}")
     int timeoutSeconds;
 
-    @Parameters(index = "0", paramLabel = "OPERATION", description = "pause, resume, step, stop, pace, move, remove or status")
+    @Parameters(index = "0", paramLabel = "OPERATION", description = "pause, resume, step, stop, pace, move, remove, restart, load or status")
     String op;
 
     @Parameters(index = "1..*", paramLabel = "ARG", description = "the operation's arguments")

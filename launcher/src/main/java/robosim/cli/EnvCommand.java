@@ -16,6 +16,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.env.net.Departure;
+import robosim.env.net.Join;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
@@ -83,6 +84,10 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     PioneerOptions pioneer;
 
+    @Option(names = "--open", description = "admit robots the world does not name, at its <spawn> poses, as the"
+            + " world's open=\"true\" does (docs/WORLD-FORMAT.md)")
+    boolean open;
+
     @Option(names = "--wait-viewers", defaultValue = "0", paramLabel = "N", description = "viewers to wait for before the first step; default ${DEFAULT-VALUE}")
     int waitViewers;
 
@@ -117,6 +122,9 @@ final class EnvCommand implements Callable<Integer> {
         List<RobotRequest> requests = requests();
         try {
             w = WorldReader.read(world, requests);
+            if (open) {
+                w = w.withRules(w.rules().withOpen(true));
+            }
         } catch (WorldFileException e) {
             err.println("robosim env: " + e.getMessage());
             return 1;
@@ -185,7 +193,14 @@ final class EnvCommand implements Callable<Integer> {
             out.printf(Locale.ROOT, "Seed: %d%n", seed);
             out.printf(Locale.ROOT, "Environment: world %s, robots on %s:%d, viewers on %s:%d%n", w.name(), bind,
                     server.robotPort(), bind, server.viewerPort());
-            out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
+            if (w.rules().open()) {
+                // an open world starts at its first robot, named or not
+                out.printf(Locale.ROOT, "Open world: robots it does not name join at its %d spawn pose(s); the run starts"
+                        + " at the first robot%s%n", w.rules().spawns().size(), sim.robotNames().isEmpty() ? ""
+                        : " (it names " + String.join(", ", sim.robotNames()) + ")");
+            } else {
+                out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
+            }
             out.flush();
             RunReport report;
             // the progress line is closed (a terminal's line cleared) before the error or the report
@@ -230,9 +245,14 @@ final class EnvCommand implements Callable<Integer> {
         if (report.find() != null) {
             out.printf(Locale.ROOT, "Gold found by %s at step %d%n", report.find().robot(), report.find().step());
         }
+        if (!report.joins().isEmpty()) {
+            out.printf(Locale.ROOT, "Robots joined during the run: %d, went: %d%n", report.joins().size(),
+                    report.departures().size());
+        }
         for (RobotSummary r : report.robots()) {
-            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%n",
-                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()));
+            out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%s%n",
+                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()),
+                    howItJoined(report, r.name()));
         }
         out.flush();
     }
@@ -243,5 +263,11 @@ final class EnvCommand implements Callable<Integer> {
      */
     static String howItEnded(RunReport report, String robot) {
         return report.departure(robot).map(Departure::describe).orElse("ran to the end");
+    }
+
+    /** @return {@code ""} for a robot there from the start, else how it last joined, such as {@code " (rejoined at step 12)"} */
+    static String howItJoined(RunReport report, String robot) {
+        List<Join> joins = report.joinsOf(robot);
+        return joins.isEmpty() ? "" : " (" + joins.get(joins.size() - 1).describe() + ")";
     }
 }

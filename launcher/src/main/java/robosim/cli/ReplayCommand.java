@@ -15,6 +15,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import robosim.protocol.recording.Recording;
 import robosim.protocol.recording.RecordingException;
+import robosim.protocol.Snapshot;
 import robosim.protocol.recording.RecordingReader;
 import robosim.viewer.draw.ImageSink;
 import robosim.viewer.draw.PngImageWriter;
@@ -135,6 +136,10 @@ final class ReplayCommand implements Callable<Integer> {
         for (RecordingSummary.RobotTotals r : s.robots()) {
             out.printf(Locale.ROOT, "robot %s (%s): travelled %.0f mm, collisions %d, last pose (%.0f, %.0f, %.1f)%n",
                     r.name(), r.type(), r.distance(), r.collisions(), r.x(), r.y(), r.th());
+        }
+        for (Snapshot.Event e : s.events()) {
+            out.printf(Locale.ROOT, "robot %s %s at step %d%s%n", e.robot(), e.what(), e.step(),
+                    e.reason().isEmpty() ? "" : ": " + e.reason());
         }
         out.flush();
         return problem(err, s.problem());

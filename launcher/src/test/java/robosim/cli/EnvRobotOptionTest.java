@@ -77,4 +77,23 @@ class EnvRobotOptionTest {
         assertTrue(r.out().contains("Waiting for robots: p3dx_1\n") || r.out().contains("Waiting for robots: p3dx_1\r"),
                 r.out());
     }
+
+    @Test
+    void openAdmitsRobotsTheWorldDoesNotNameAndWaitsForTheFirst() throws IOException {
+        Path world = dir.resolve("arena.xml");
+        Files.writeString(world, """
+                <world name="arena" width="6000" height="6000">
+                  <spawn x="1500" y="1500"/>
+                  <spawn x="4500" y="1500"/>
+                </world>
+                """);
+
+        Run r = execute("env", "--robot-port", "0", "--viewer-port", "0", "--no-token", "--connect-timeout", "1",
+                "--open", world.toString());
+
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.out().contains("Open world: robots it does not name join at its 2 spawn pose(s); the run starts at"
+                + " the first robot"), r.out());
+        assertTrue(r.err().contains("no robot (open world arena) and 0 viewer(s) did not connect within 1 s"), r.err());
+    }
 }

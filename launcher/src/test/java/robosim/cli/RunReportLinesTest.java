@@ -8,6 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.Departure;
+import robosim.env.net.Join;
 import robosim.env.net.RunReport;
 
 /** The Environment's end summary: a line per robot, which says how each robot's part ended. */
@@ -37,6 +38,30 @@ class RunReportLinesTest {
                         + " without a bye",
                 "robot r4: pose (4000, 1000, 90.0) travelled 1234 mm, collisions 1, dropped at step 2: it did not send its"
                         + " requests for step 2 within 500 ms"),
+                out.toString().lines().toList());
+    }
+
+    @Test
+    void robotsThatJoinedDuringTheRunAreCountedAndEachSaysHowItLastJoined() {
+        RunReport report = new RunReport(40, 4000, "every robot has disconnected",
+                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000)), 0, null, 0,
+                List.of(new Departure("r2", Departure.Kind.LOST, 5, "the connection closed without a bye"),
+                        new Departure("r1", Departure.Kind.LEFT, 40, "done"),
+                        new Departure("r2", Departure.Kind.LEFT, 40, "done"),
+                        new Departure("r3", Departure.Kind.LEFT, 40, "done")),
+                List.of(new Join("r3", Join.Kind.LATE, 3), new Join("r2", Join.Kind.REJOINED, 9)));
+        StringWriter out = new StringWriter();
+
+        EnvCommand.printReport(new PrintWriter(out), report);
+
+        assertEquals(List.of(
+                "Run ended after 40 steps (4.0 s simulated): every robot has disconnected",
+                "Robots joined during the run: 2, went: 4",
+                "robot r1: pose (1000, 1000, 90.0) travelled 1234 mm, collisions 1, left at step 40: done",
+                "robot r2: pose (2000, 1000, 90.0) travelled 1234 mm, collisions 1, left at step 40: done (rejoined at"
+                        + " step 9)",
+                "robot r3: pose (3000, 1000, 90.0) travelled 1234 mm, collisions 1, left at step 40: done (joined late at"
+                        + " step 3)"),
                 out.toString().lines().toList());
     }
 }

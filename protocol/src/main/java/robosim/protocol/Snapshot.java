@@ -10,15 +10,51 @@ import java.util.List;
  * @param robots   every robot of the world, in the world file's order
  * @param messages the messages robots sent in this step (accepted by the CommunicationsSystem)
  * @param said     what robots said in this step
+ * @param events   the robots that joined or went since the snapshot before, in the order they did;
+ *                 absent (read as none) in recordings made before robots could join a run under way
  */
 public record Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
-                          List<Said> said) implements Message {
+                          List<Said> said, List<Event> events) implements Message {
     /** Copies the lists so the record stays immutable. */
     public Snapshot {
         robots = List.copyOf(robots);
         messages = messages == null ? List.of() : List.copyOf(messages);
         said = said == null ? List.of() : List.copyOf(said);
+        events = events == null ? List.of() : List.copyOf(events);
     }
+
+    /**
+     * A snapshot in which no robot joined or went.
+     *
+     * @param step     the step just completed
+     * @param timeMs   simulated time after it
+     * @param robots   every robot
+     * @param messages the messages robots sent in this step
+     * @param said     what robots said in this step
+     */
+    public Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages, List<Said> said) {
+        this(step, timeMs, robots, messages, said, List.of());
+    }
+
+    /**
+     * @param happened the robots that joined or went since the snapshot before
+     * @return this snapshot with those events
+     */
+    public Snapshot withEvents(List<Event> happened) {
+        return new Snapshot(step, timeMs, robots, messages, said, happened);
+    }
+
+    /**
+     * A robot that joined the run under way or went from it, for viewers and recordings.
+     *
+     * @param robot  the robot
+     * @param what   {@code joined late}, {@code rejoined}, {@code spawned}, {@code left},
+     *               {@code dropped} or {@code lost}
+     * @param step   for a join the first step it takes part in; for a departure the step open when
+     *               it went (or the last step run)
+     * @param reason why it went (its bye's reason, the rule it broke); empty for a join
+     */
+    public record Event(String robot, String what, long step, String reason) { }
 
     /**
      * A snapshot without messages or speech.

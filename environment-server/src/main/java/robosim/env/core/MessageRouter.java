@@ -29,6 +29,11 @@ final class MessageRouter {
         this.comms = new CommunicationsSystem(robots, settings, seed);
     }
 
+    /** Adds a robot that joined the world during the run. */
+    void addRobot(String robot) {
+        comms.addRobot(robot);
+    }
+
     /** Submits a message, or changes the robot's groups, as the command says. */
     void take(long step, String robot, Command.Messaging c) {
         if (c instanceof Command.SendMessage m) {

@@ -1,6 +1,9 @@
 package robosim.env.core;
 
 import java.util.Locale;
+import org.locationtech.jts.geom.Coordinate;
+import robosim.env.world.Bounds;
+import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 
@@ -45,6 +48,16 @@ final class Placement {
             return "its body would overlap something there";
         }
         return null;
+    }
+
+    /** @return whether a body at a pose lies inside the world, its edge included */
+    boolean inside(BodyShape body, Pose2D pose, Bounds bounds) {
+        for (Coordinate c : body.ringAt(pose)) {
+            if (!bounds.contains(c.x, c.y)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static String where(Pose2D to) {

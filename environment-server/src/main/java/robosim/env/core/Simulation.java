@@ -5,17 +5,12 @@ import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
 import java.util.List;
-import java.util.HashSet;
 import java.util.Map;
-import java.util.Set;
 import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
-import robosim.comms.Positions;
-import robosim.env.world.ForbiddenZone;
-import robosim.env.world.HeatSource;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
@@ -54,13 +49,14 @@ public final class Simulation {
     private final Placement placement;
     /** The robots in the world file's order, and where each name stands in it. */
     private final List<SimRobot> order = new ArrayList<>();
+    /** Each robot's start, in {@link #order}: the world's robots, then those spawned during the run. */
+    private final List<RobotSpec> starts = new ArrayList<>();
     private final Map<String, Integer> indexes = new HashMap<>();
     /** Before step 1: whose sensors are yet to be read (their noise streams untouched). */
-    private final boolean[] unread;
+    private boolean[] unread;
     private Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
-    private final List<Snapshot.Said> said = new ArrayList<>();
-    private Find find;
+    private final RunEvents events;
     private long step;
 
     /**
@@ -106,11 +102,13 @@ public final class Simulation {
             }
             int id = geometry.addBody(body, new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th())));
             order.add(newRobot(spec, spec.parameters(), body, id, streams.split()));
+            starts.add(spec);
         }
         unread = new boolean[order.size()];
         Arrays.fill(unread, true);
         // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
         messages = new MessageRouter(robotNames(), world.comms(), new SplittableRandom(seed).nextLong() ^ 0x636f6d6d73L);
+        events = new RunEvents(world, messages);
     }
 
     private SimRobot newRobot(RobotSpec spec, RobotParameters p, BodyShape body, int bodyId, RandomGenerator random) {
@@ -146,11 +144,57 @@ public final class Simulation {
      */
     private void renew(int i, RobotParameters p, BodyShape body) {
         SimRobot prev = order.get(i);
-        RobotSpec spec = world.robots().get(i);
+        RobotSpec spec = starts.get(i);
         SimRobot r = newRobot(spec, p, body, prev.bodyId, unread[i] ? prev.random : stream(i));
         r.connected = prev.connected;
         order.set(i, r);
         unread[i] = true;
+    }
+
+    /**
+     * Adds a robot the world does not name (an open world's newcomer) at the first of the poses
+     * where its body lies inside the world and touches nothing. It draws its noise from the stream
+     * split from the seed for its place in the order, so the same joins give the same run.
+     *
+     * @param name   its name, not yet in the world
+     * @param type   the robot API its program is written against
+     * @param params its parameters, which give its body
+     * @param poses  where it may be placed, in order; headings in radians
+     * @return the pose it was placed at
+     * @throws IllegalArgumentException if the name is taken or no pose is free, saying so
+     */
+    public Pose2D spawn(String name, String type, RobotParameters params, List<Pose2D> poses) {
+        if (indexes.containsKey(name)) {
+            throw new IllegalArgumentException("world " + world.name() + " already has a robot named '" + name + "'");
+        }
+        if (poses.isEmpty()) {
+            throw new IllegalArgumentException("world " + world.name() + " has no <spawn> pose for robot " + name);
+        }
+        BodyShape body = RobotSpec.bodyOf(params);
+        for (Pose2D pose : poses) {
+            if (placement.inside(body, pose, world.bounds()) && !geometry.overlaps(body, pose, -1)) {
+                int i = order.size();
+                RobotSpec spec = new RobotSpec(name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), null, params, 0);
+                order.add(newRobot(spec, params, body, geometry.addBody(body, pose), stream(i)));
+                starts.add(spec);
+                indexes.put(name, i);
+                unread = Arrays.copyOf(unread, order.size());
+                unread[i] = true;
+                messages.addRobot(name);
+                return pose;
+            }
+        }
+        throw new IllegalArgumentException("every <spawn> pose of world " + world.name() + " (" + poses.size()
+                + ") is taken or too tight for robot " + name + "'s body of " + params.robotLength() + " x "
+                + params.robotWidth() + " mm");
+    }
+
+    /**
+     * @param name a robot
+     * @return the robot API its program is written against, as the world or its hello named it
+     */
+    public String type(String name) {
+        return robot(name).type;
     }
 
     /**
@@ -213,7 +257,7 @@ public final class Simulation {
     public void step(Map<String, List<Command>> commands) {
         readUnread();
         long current = step + 1;
-        said.clear();
+        events.newStep();
         for (SimRobot r : order) {
             List<Command> cs = commands.get(r.name);
             if (cs != null) {
@@ -228,7 +272,7 @@ public final class Simulation {
         }
         step = current;
         readSensors();
-        messages.deliver(step, positions(), connectedRobots());
+        messages.deliver(step, new RobotPositions(this::robot, geometry), RobotPositions.connected(order));
     }
 
     /** Hands a command to what carries out its group, in the order the robot sent it. */
@@ -240,21 +284,11 @@ public final class Simulation {
         } else if (c instanceof Command.Messaging m) {
             messages.take(current, r.name, m);
         } else if (c instanceof Command.RunEvent e) {
-            runEvent(r, e, current);
+            events.take(r, e, current);
         } else if (c instanceof Command.Simulator s) {
             simulator(r, s, current);
         } else {
             throw new IllegalStateException("no handler for the command group of " + c);
-        }
-    }
-
-    private void runEvent(SimRobot r, Command.RunEvent e, long current) {
-        if (e instanceof Command.Say say) {
-            said.add(new Snapshot.Said(r.name, say.text()));
-        } else if (e instanceof Command.ReportFound found) {
-            reportFound(r, found.object(), current);
-        } else {
-            throw new IllegalStateException("no handler for the run event " + e);
         }
     }
 
@@ -263,7 +297,8 @@ public final class Simulation {
         if (c instanceof Command.SetTruePose p) {
             to = new Pose2D(p.x(), p.y(), Math.toRadians(p.th()));
         } else if (c instanceof Command.ResetToStart) {
-            RobotSpec spec = world.robots().get(indexes.get(r.name));
+            // a robot spawned in an open world starts where it was placed
+            RobotSpec spec = starts.get(indexes.get(r.name));
             to = new Pose2D(spec.x(), spec.y(), Math.toRadians(spec.th()));
         } else {
             throw new IllegalStateException("no handler for the simulator command " + c);
@@ -298,52 +333,9 @@ public final class Simulation {
     /** A robot's report of a find counts when its centre is this near the gold, mm. */
     public static final double GOLD_FOUND_DISTANCE = 1000;
 
-    private void reportFound(SimRobot r, String object, long current) {
-        HeatSource gold = world.gold();
-        if (!"gold".equals(object) || gold == null) {
-            messages.error(r.name, "robot " + r.name + " reported finding '" + object + "', but world "
-                    + world.name() + " has no " + object);
-            return;
-        }
-        double d = Math.hypot(r.x() - gold.x(), r.y() - gold.y());
-        if (d > GOLD_FOUND_DISTANCE) {
-            messages.error(r.name, "robot " + r.name + " reported the gold at step " + current + " but is "
-                    + Math.round(d) + " mm from it; a find counts within " + Math.round(GOLD_FOUND_DISTANCE) + " mm");
-        } else if (find == null) {
-            find = new Find(r.name, current, d);
-        }
-    }
-
     /** @return the first confirmed find of the gold, or null */
     public Find find() {
-        return find;
-    }
-
-    private Positions positions() {
-        return new Positions() {
-            @Override
-            public double[] of(String robot) {
-                SimRobot r = robot(robot);
-                return new double[] {r.x(), r.y()};
-            }
-
-            @Override
-            public boolean clear(String from, String to) {
-                SimRobot a = robot(from);
-                SimRobot b = robot(to);
-                return geometry.lineOfSight(a.x(), a.y(), b.x(), b.y());
-            }
-        };
-    }
-
-    private Set<String> connectedRobots() {
-        Set<String> c = new HashSet<>();
-        for (SimRobot r : order) {
-            if (r.connected) {
-                c.add(r.name);
-            }
-        }
-        return c;
+        return events.find();
     }
 
     /** @return how messages travel now */
@@ -371,6 +363,11 @@ public final class Simulation {
      */
     public void halt(String name) {
         robot(name).drive(new Command.Stop());
+    }
+
+    /** @return the seed of the run's noise */
+    public long seed() {
+        return seed;
     }
 
     /** @return the number of steps taken */
@@ -429,6 +426,14 @@ public final class Simulation {
     }
 
     /**
+     * @param name a robot
+     * @return the parameters its body and sensors have now
+     */
+    public RobotParameters parameters(String name) {
+        return robot(name).params;
+    }
+
+    /**
      * Marks a robot's program as connected or not, for viewers.
      *
      * @param name      the robot
@@ -441,36 +446,12 @@ public final class Simulation {
     /** @return the moving parts of the world now, for viewers */
     public Snapshot snapshot() {
         readUnread();
-        List<Snapshot.RobotView> views = new ArrayList<>();
-        for (SimRobot r : order) {
-            Odometry o = r.odometry();
-            views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
-                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
-                    r.vel(), r.rotVel()));
-        }
-        return new Snapshot(step, timeMs(), views, messages.sentLastStep(), said);
+        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said());
     }
 
-    /** @return the static world, for viewers */
+    /** @return the static world, with every robot in it now, for viewers */
     public WorldDescription description() {
-        List<WorldDescription.Obstacle> obs = new ArrayList<>();
-        for (Obstacle o : world.obstacles()) {
-            obs.add(new WorldDescription.Obstacle(o.xy(), o.height()));
-        }
-        List<WorldDescription.RobotInfo> infos = new ArrayList<>();
-        for (SimRobot r : order) {
-            infos.add(new WorldDescription.RobotInfo(r.name, r.type, r.params));
-        }
-        List<WorldDescription.HeatSource> heat = new ArrayList<>();
-        for (HeatSource h : world.heat()) {
-            heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity()));
-        }
-        List<WorldDescription.Zone> zones = new ArrayList<>();
-        for (ForbiddenZone z : world.zones()) {
-            zones.add(new WorldDescription.Zone(z.area(), z.xy(), z.label()));
-        }
-        return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat,
-                world.minX(), world.minY(), zones);
+        return Views.description(world, order);
     }
 
     /**

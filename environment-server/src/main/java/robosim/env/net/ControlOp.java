@@ -3,6 +3,7 @@ package robosim.env.net;
 import java.util.List;
 import java.util.Locale;
 import robosim.env.core.Simulation;
+import robosim.env.world.World;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.RobotHello;
 
@@ -21,8 +22,6 @@ sealed interface ControlOp {
     double MAX_COORDINATE = 1e8;
     /** The largest heading a move accepts, degrees (any angle is folded into -180..180). */
     double MAX_HEADING = 1e6;
-    /** The operations that come later: refused with a reason of their own. */
-    List<String> LATER = List.of("restart", "load");
 
     /** Stop running steps after the one under way. */
     record Pause() implements ControlOp { }
@@ -45,6 +44,17 @@ sealed interface ControlOp {
     /** Take a robot out of the run. */
     record Remove(String robot) implements ControlOp { }
 
+    /** Run the same world again from step 0, with the same seed. */
+    record Restart() implements ControlOp { }
+
+    /**
+     * Run another world from step 0, with the same seed.
+     *
+     * @param path  the world file as the client named it
+     * @param world the world read and checked, or null until {@link WorldLoader} has read it
+     */
+    record Load(String path, World world) implements ControlOp { }
+
     /**
      * @param r   the request
      * @param sim the run's simulation, for the robots' names
@@ -59,24 +69,24 @@ sealed interface ControlOp {
             case "pause" -> new Pause();
             case "resume" -> new Resume();
             case "stop" -> new Stop();
+            case "restart" -> new Restart();
+            case "load" -> new Load(a.get(0), null);
             case "step" -> new Step(steps(a.get(0)));
             case "pace" -> new Pace(pace(a.get(0)));
             case "remove" -> new Remove(robot(op, a.get(0), sim));
             case "move" -> new Move(robot(op, a.get(0), sim), coordinate("X", a.get(1)),
                     coordinate("Y", a.get(2)), heading(a.get(3)));
-            default -> throw new IllegalArgumentException(LATER.contains(op)
-                    ? op + " is not yet supported by this Environment"
-                    : "unknown operation '" + RobotHello.printable(op, 40)
+            default -> throw new IllegalArgumentException("unknown operation '" + RobotHello.printable(op, 40)
                     + "'; the operations are pause, resume, step N, stop, pace max|realtime|K, move NAME X Y TH,"
-                    + " remove NAME");
+                    + " remove NAME, restart, load WORLD");
         };
     }
 
     /** Checks the count of arguments before any is read, so a short request names the rule, not an index. */
     private static void checkCount(ControlRequest r) {
         int n = switch (r.op() == null ? "" : r.op()) {
-            case "pause", "resume", "stop" -> 0;
-            case "step", "pace", "remove" -> 1;
+            case "pause", "resume", "stop", "restart" -> 0;
+            case "step", "pace", "remove", "load" -> 1;
             case "move" -> 4;
             default -> -1;
         };
@@ -91,6 +101,7 @@ sealed interface ControlOp {
             case "step" -> "step N";
             case "pace" -> "pace max|realtime|K";
             case "remove" -> "remove NAME";
+            case "load" -> "load WORLD";
             case "move" -> "move NAME X Y TH";
             default -> op;
         };

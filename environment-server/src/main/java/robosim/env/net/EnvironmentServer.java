@@ -1,34 +1,20 @@
 package robosim.env.net;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.SelectionKey;
-import java.nio.channels.Selector;
-import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
-import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
-import robosim.env.core.Find;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
-import robosim.protocol.FrameWriter;
-import robosim.protocol.InvalidValueException;
-import robosim.protocol.KeepAlive;
-import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.RobotState;
-import robosim.protocol.TimeStep;
-import robosim.protocol.TimeSteps;
 import robosim.protocol.Snapshot;
+import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.SnapshotListeners;
 
@@ -47,23 +33,20 @@ import robosim.protocol.recording.SnapshotListeners;
  */
 public final class EnvironmentServer implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
-    /** Robots whose states share one {@link TimeSteps} frame. */
-    static final int ROBOTS_PER_FRAME = 100;
-    /** How long robots may hear nothing from the Environment before it sends them a {@link KeepAlive}, ms. */
-    static final long KEEP_ALIVE_MS = 1_000;
-    /** How often a paused run looks up from waiting for requests, ms: well within {@link #KEEP_ALIVE_MS}. */
+    /**
+     * How often a paused run (or one with no robot) looks up from waiting, ms: well within
+     * {@link TimeStepSender#KEEP_ALIVE_MS}.
+     */
     static final long PAUSED_WAKE_MS = 250;
 
-    private final Simulation sim;
     private final ServerOptions options;
     private final MessageCodec codec = new MessageCodec();
     private final SessionRules rules;
     private final PooledParallel workers;
-    private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(1 << 16);
     private final Doorway doorway;
     private final SnapshotListeners listeners = new SnapshotListeners();
-    private Selector selector;
-    private long sentToRobotsNanos = System.nanoTime();
+    private final TimeStepSender sender;
+    private final ConnectionPump pump;
     private final ProgressReports progress;
 
     /**
@@ -77,13 +60,19 @@ public final class EnvironmentServer implements AutoCloseable {
             throw new IllegalArgumentException("world " + sim.world().name() + " names " + sim.robotNames().size()
                     + " robots, more than this Environment admits (" + options.limits().maxRobots() + ", --max-robots)");
         }
-        this.sim = sim;
         this.options = options;
         this.rules = new SessionRules(sim, options.access(), options.limits());
         this.doorway = new Doorway(options, codec, rules);
-        this.progress = new ProgressReports(sim, rules, options);
+        this.progress = new ProgressReports(rules, options);
         this.workers = new PooledParallel(options.threads());
+        this.sender = new TimeStepSender(codec, workers);
+        this.pump = new ConnectionPump(doorway, rules, progress, sender);
         sim.setParallel(workers);
+    }
+
+    /** @return the simulation run now: a control client's restart or load replaces it */
+    private Simulation sim() {
+        return rules.sim();
     }
 
     /**
@@ -94,8 +83,7 @@ public final class EnvironmentServer implements AutoCloseable {
      *                               secret: anyone who could reach the ports could join, watch and change the run
      */
     public void bind() throws IOException {
-        selector = Selector.open();
-        doorway.bind(selector);
+        pump.bind();
     }
 
     /**
@@ -140,9 +128,7 @@ public final class EnvironmentServer implements AutoCloseable {
     public RunReport run() throws InterruptedException {
         awaitRobots();
         long connected = System.nanoTime();
-        LOG.info(() -> "all robots connected; running world " + sim.world().name());
-        listeners.world(sim.description());
-        listeners.snapshot(sim.snapshot());
+        startRun();
         long started = System.nanoTime();
         String reason = loop();
         List<Departure> departures = rules.departures();
@@ -157,11 +143,61 @@ public final class EnvironmentServer implements AutoCloseable {
             pump(deadline);
         }
         List<RobotSummary> summaries = new ArrayList<>();
-        for (String name : sim.robotNames()) {
-            summaries.add(sim.summary(name));
+        for (String name : sim().robotNames()) {
+            summaries.add(sim().summary(name));
         }
-        return new RunReport(sim.stepCount(), sim.timeMs(), reason, summaries, wall, sim.find(), connected,
-                departures);
+        return new RunReport(sim().stepCount(), sim().timeMs(), reason, summaries, wall, sim().find(), connected,
+                departures, rules.joins());
+    }
+
+    /** The robots are there: the run starts, and its world and step 0 go to the listeners. */
+    private void startRun() {
+        rules.start();
+        LOG.info(() -> "all robots connected; running world " + sim().world().name() + " (seed " + sim().seed() + ")");
+        if (rules.takeWorldChanged()) {
+            // robots spawned before the start: the viewers attached before them learn of them now
+            rules.broadcastSnapshot(sim().description(), codec);
+        }
+        listeners.world(sim().description());
+        listeners.snapshot(sim().snapshot());
+    }
+
+    /**
+     * Carries out a {@code restart} or {@code load} at a step boundary: the run's robots are told why
+     * and disconnected, a new simulation of the world with the same seed takes its place, the viewers
+     * are sent its world and step 0, and the new run starts when its robots have connected. There is
+     * no connect timeout now: the user drives, and may stop, restart or load again meanwhile.
+     *
+     * @return why the Environment ends while waiting (a stop), or null once the new run has started
+     */
+    private String switchRun(RunControl.Switch first) throws InterruptedException {
+        RunControl control = rules.control();
+        RunControl.Switch s = first;
+        while (s != null) {
+            Simulation next = new Simulation(s.world(), sim().seed(), workers);
+            String why = s.why();
+            LOG.info(() -> why + ": world " + next.world().name() + " runs from step 0 once its robots connect");
+            rules.replace(next, "the run ended for a " + why + "; connect again to join the new run");
+            rules.broadcastSnapshot(next.description(), codec);
+            rules.broadcastSnapshot(next.snapshot(), codec);
+            s.answer(why + ": world " + next.world().name() + " (seed " + next.seed() + ") waits for its robots");
+            s = null;
+            progress.waitingSince(System.nanoTime());
+            while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
+                String end = control.atBoundary();
+                if (end != null) {
+                    return end;
+                }
+                s = control.takeSwitch();
+                if (s != null) {
+                    break;
+                }
+                progress.reportIfDue(RunProgress.Phase.CONNECTING, System.nanoTime());
+                pump(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAUSED_WAKE_MS));
+            }
+        }
+        startRun();
+        return null;
     }
 
     /** @return a time as seconds when it is whole seconds (as {@code env --connect-timeout} gives it), else ms */
@@ -177,7 +213,9 @@ public final class EnvironmentServer implements AutoCloseable {
             long now = System.nanoTime();
             progress.reportIfDue(RunProgress.Phase.CONNECTING, now);
             if (now >= deadline) {
-                String why = "robots " + rules.missing() + " and " + Math.max(0,
+                String who = rules.missing().isEmpty() ? "no robot (open world " + sim().world().name() + ")"
+                        : "robots " + rules.missing();
+                String why = who + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
                         + inUnitGiven(options.connectTimeoutMs());
                 // the robots that came are told why the run they waited for will not start
@@ -192,7 +230,6 @@ public final class EnvironmentServer implements AutoCloseable {
 
     private String loop() throws InterruptedException {
         progress.runningSince(System.nanoTime());
-        int stepMs = sim.world().stepMs();
         RunControl control = rules.control();
         control.startPace(options.realtime() ? 1 : 0);
         while (true) {
@@ -200,58 +237,66 @@ public final class EnvironmentServer implements AutoCloseable {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
                 progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
-            String end = endReason();
+            String end = RunEnd.reason(sim(), rules, options.maxSteps());
             if (end == null) {
                 // control requests are carried out here, between steps, so the same requests at the same steps give the same run
                 end = control.atBoundary();
             }
+            RunControl.Switch next = end == null ? control.takeSwitch() : null;
+            if (next != null) {
+                end = switchRun(next);
+            }
             if (end != null) {
                 return end;
             }
-            long current = sim.stepCount() + 1;
-            if (control.holding()) {
-                // paused: no step is open, so no deadline runs; the pump keeps the robots alive
+            if (next != null) {
+                continue;
+            }
+            long current = sim().stepCount() + 1;
+            if (control.holding() || rules.connectedRobots().isEmpty()) {
+                // paused, or no robot to run (a world that does not end when all have gone waits for
+                // one to join): no step is open, so no deadline runs; the pump keeps the robots alive
                 pump(System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PAUSED_WAKE_MS));
                 continue;
             }
             long now = System.nanoTime();
-            long due = control.due(current, stepMs, now);
+            long due = control.due(current, sim().world().stepMs(), now);
             if (now < due) {
                 // waking for a request too, so a pause or a new pace need not wait out a slow pace
                 pump(due);
                 continue;
             }
             Map<String, List<Command>> commands = collect(current);
-            sim.step(commands);
+            sim().step(commands);
             control.stepped();
-            // the snapshot is built only when someone watches: benchmarks and headless runs skip it
-            if (rules.viewerCount() > 0 || listeners.size() > 0) {
-                Snapshot snapshot = sim.snapshot();
-                rules.broadcastSnapshot(snapshot, codec);
-                listeners.snapshot(snapshot);
-            }
+            publish();
         }
     }
 
-    /** @return why the run ends now of itself (no robots, the step limit, the gold found), or null */
-    private String endReason() {
-        if (rules.connectedRobots().isEmpty()) {
-            return "every robot has disconnected";
+    /**
+     * Sends the viewers and listeners the snapshot after a step, with the robots that joined or went
+     * since the one before, and before it the world again when a robot was added to it. The snapshot
+     * is built only when someone watches: benchmarks and headless runs skip it.
+     */
+    private void publish() {
+        boolean worldChanged = rules.takeWorldChanged();
+        List<Snapshot.Event> events = rules.takeEvents();
+        if (rules.viewerCount() == 0 && listeners.size() == 0) {
+            return;
         }
-        if (options.maxSteps() > 0 && sim.stepCount() >= options.maxSteps()) {
-            return "step limit " + options.maxSteps() + " reached";
+        if (worldChanged) {
+            WorldDescription world = sim().description();
+            rules.broadcastSnapshot(world, codec);
+            listeners.world(world);
         }
-        // a find ends the run once the finder's news has had time to reach its team
-        Find find = sim.find();
-        if (find != null && sim.stepCount() >= find.step() + sim.commsSettings().latencySteps() + 1) {
-            return "gold found by " + find.robot() + " at step " + find.step();
-        }
-        return null;
+        Snapshot snapshot = sim().snapshot().withEvents(events);
+        rules.broadcastSnapshot(snapshot, codec);
+        listeners.snapshot(snapshot);
     }
 
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
         rules.openStep(current);
-        sendTimeSteps(current);
+        sender.send(sim(), rules.connectedRobots(), current);
         long opened = System.nanoTime();
         long deadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
         progress.waitingSince(opened);
@@ -271,119 +316,8 @@ public final class EnvironmentServer implements AutoCloseable {
         return rules.closeStep();
     }
 
-    /**
-     * Opens the step for every robot: a {@link TimeStep} to each robot on a connection of its own,
-     * {@link TimeSteps} to each shared link for its robots, {@value #ROBOTS_PER_FRAME} robots a
-     * frame (so that frames stay far under the size limit, are encoded side by side, and the link's
-     * first robots start while the rest are on their way). The states are read in the robots'
-     * order; the frames are encoded on the worker threads.
-     */
-    private void sendTimeSteps(long current) {
-        long timeMs = sim.timeMs();
-        List<Connection> to = new ArrayList<>();
-        List<Message> steps = new ArrayList<>();
-        Map<Connection, List<TimeSteps.ForRobot>> links = new LinkedHashMap<>();
-        for (Map.Entry<String, Connection> r : rules.connectedRobots().entrySet()) {
-            Connection c = r.getValue();
-            RobotState state = sim.state(r.getKey());
-            if (c.isLink()) {
-                links.computeIfAbsent(c, k -> new ArrayList<>()).add(new TimeSteps.ForRobot(r.getKey(), state));
-            } else {
-                to.add(c);
-                steps.add(new TimeStep(current, timeMs, state));
-            }
-        }
-        for (Map.Entry<Connection, List<TimeSteps.ForRobot>> link : links.entrySet()) {
-            List<TimeSteps.ForRobot> robots = link.getValue();
-            for (int from = 0; from < robots.size(); from += ROBOTS_PER_FRAME) {
-                to.add(link.getKey());
-                steps.add(new TimeSteps(current, timeMs, robots.subList(from,
-                        Math.min(robots.size(), from + ROBOTS_PER_FRAME))));
-            }
-        }
-        ByteBuffer[] frames = new ByteBuffer[steps.size()];
-        // a frame of a link's robots is worth a worker's wake-up on its own
-        workers.forEach(frames.length, links.isEmpty() ? PooledParallel.MIN_CHUNK : 1,
-                i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
-        for (int i = 0; i < frames.length; i++) {
-            to.get(i).sendFrame(frames[i]);
-        }
-        sentToRobotsNanos = System.nanoTime();
-    }
-
-    /** Serves every ready connection once, waiting until something is ready or the deadline. */
     private void pump(long deadlineNanos) throws InterruptedException {
-        long now = System.nanoTime();
-        // wake for the progress when it is due, while waiting for robots or a held step
-        long nextCheck = progress.wakeBy(now, doorway.check(now));
-        long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(Math.min(deadlineNanos, nextCheck) - now));
-        try {
-            selector.select(waitMs);
-        } catch (IOException e) {
-            throw new UncheckedIOException("the selector failed", e);
-        }
-        if (Thread.interrupted()) {
-            throw new InterruptedException();
-        }
-        Iterator<SelectionKey> it = selector.selectedKeys().iterator();
-        while (it.hasNext()) {
-            SelectionKey key = it.next();
-            it.remove();
-            if (!key.isValid()) {
-                continue;
-            }
-            if (key.isAcceptable()) {
-                doorway.accept((ServerSocketChannel) key.channel(), (Connection.Kind) key.attachment());
-            } else {
-                serve((Connection) key.attachment(), key);
-            }
-        }
-        doorway.served();
-        keepRobotsAlive();
-    }
-
-    /**
-     * Sends a {@link KeepAlive} to every robot connection and shared link that has said hello, once
-     * robots have been sent nothing for {@link #KEEP_ALIVE_MS}: before the first step while other
-     * robots are still connecting, while a slow robot holds a step up, and while the run is paused.
-     * A robot that hears nothing, neither a step nor a keep-alive, for its lost time declares the
-     * Environment lost.
-     */
-    private void keepRobotsAlive() {
-        long now = System.nanoTime();
-        if (now - sentToRobotsNanos < TimeUnit.MILLISECONDS.toNanos(KEEP_ALIVE_MS)) {
-            return;
-        }
-        sentToRobotsNanos = now;
-        ByteBuffer frame = FrameWriter.frame(codec, new KeepAlive(sim.stepCount()));
-        for (Connection c : doorway.connections()) {
-            if (c.kind == Connection.Kind.ROBOT && (c.isLink() || c.name() != null)) {
-                c.sendFrame(frame.duplicate());
-            }
-        }
-    }
-
-    private void serve(Connection c, SelectionKey key) {
-        try {
-            if (key.isWritable()) {
-                c.writable();
-            }
-            if (key.isValid() && key.isReadable()) {
-                List<Message> messages = c.read(readBuffer);
-                if (messages == null) {
-                    rules.closed(c, SessionRules.DISCONNECTED);
-                    return;
-                }
-                for (Message m : messages) {
-                    rules.received(c, m);
-                }
-            }
-        } catch (InvalidValueException e) {
-            rules.invalid(c, e.getMessage());
-        } catch (IOException e) {
-            rules.failed(c, e);
-            c.close(e.getMessage());
-        }
+        pump.pump(deadlineNanos);
     }
 
     /** Stops listening and closes every connection. */
@@ -392,13 +326,6 @@ public final class EnvironmentServer implements AutoCloseable {
         // a simulation used after this reads on its caller's thread: a closed pool runs its loops there
         workers.close();
         listeners.close();
-        doorway.close();
-        if (selector != null) {
-            try {
-                selector.close();
-            } catch (IOException e) {
-                LOG.fine("closing: " + e.getMessage());
-            }
-        }
+        pump.close();
     }
 }

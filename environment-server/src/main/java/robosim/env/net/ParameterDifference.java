@@ -20,6 +20,18 @@ final class ParameterDifference {
      *         in the program's"}, or null if the two are equal
      */
     static String first(RobotParameters world, RobotParameters program) {
+        return first(world, program, "the world's file");
+    }
+
+    /**
+     * @param held    the parameters held now
+     * @param program what the robot program sent in its hello
+     * @param whose   whose the held parameters are, for the text, such as {@code "its body"}
+     * @return the first field that differs, as {@code "maxVelocity 2200.0 in its body, 1500.0 in the
+     *         program's"}, or null if the two are equal
+     */
+    static String first(RobotParameters held, RobotParameters program, String whose) {
+        RobotParameters world = held;
         if (world.equals(program)) {
             return null;
         }
@@ -27,7 +39,7 @@ final class ParameterDifference {
             Object w = value(c, world);
             Object p = value(c, program);
             if (!Objects.equals(w, p)) {
-                return c.getName() + " " + shown(w) + " in the world's file, " + shown(p) + " in the program's";
+                return c.getName() + " " + shown(w) + " in " + whose + ", " + shown(p) + " in the program's";
             }
         }
         return null;

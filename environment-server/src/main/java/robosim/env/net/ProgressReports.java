@@ -13,7 +13,6 @@ import robosim.env.core.Simulation;
 final class ProgressReports {
     private static final Logger LOG = Logger.getLogger(EnvironmentServer.class.getName());
 
-    private final Simulation sim;
     private final SessionRules rules;
     private final ServerOptions options;
     private RunProgress listener;
@@ -23,10 +22,13 @@ final class ProgressReports {
     private long waitStartedNanos;
     private long runStartedNanos;
 
-    ProgressReports(Simulation sim, SessionRules rules, ServerOptions options) {
-        this.sim = sim;
+    ProgressReports(SessionRules rules, ServerOptions options) {
         this.rules = rules;
         this.options = options;
+    }
+
+    private Simulation sim() {
+        return rules.sim();
     }
 
     /** @see EnvironmentServer#setProgress */
@@ -82,8 +84,8 @@ final class ProgressReports {
         long runNanos = phase == RunProgress.Phase.CONNECTING ? 0 : now - runStartedNanos;
         long waitedNanos = phase == RunProgress.Phase.RUNNING ? 0 : now - waitStartedNanos;
         try {
-            listener.progress(new RunProgress.Status(phase, sim.stepCount(), sim.timeMs(), sim.world().stepMs(),
-                    options.maxSteps(), sim.robotNames().size(), rules.connectedRobots().size(), waitingFor,
+            listener.progress(new RunProgress.Status(phase, sim().stepCount(), sim().timeMs(), sim().world().stepMs(),
+                    options.maxSteps(), sim().robotNames().size(), rules.connectedRobots().size(), waitingFor,
                     rules.viewerCount(), options.waitViewers(), runNanos, waitedNanos,
                     TimeUnit.MILLISECONDS.toNanos(limitMs)));
         } catch (RuntimeException e) {

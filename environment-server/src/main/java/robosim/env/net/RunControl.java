@@ -5,13 +5,14 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
+import robosim.env.world.World;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.RobotHello;
 
 /**
  * Run control, part of {@link SessionRules}: the control clients' pause, resume, step N, stop, pace,
- * move and remove. A request whose values break a rule is refused at once and changes nothing; the
+ * move, remove, restart and load (the step loop starts the new run, see {@link #takeSwitch()}). A request whose values break a rule is refused at once and changes nothing; the
  * others wait for the next step boundary (after the step under way, before the next is opened) and
  * are carried out there in the order they came, so that the same requests at the same steps give the
  * same run. Each is answered with a {@link ControlReply}; a client that has gone meanwhile is not
@@ -28,9 +29,26 @@ final class RunControl {
     /** A request checked and waiting for the step boundary. */
     private record Pending(Connection from, long id, ControlOp op) { }
 
-    private final Simulation sim;
+    /**
+     * A new run asked for by {@code restart} or {@code load}, for the step loop to start.
+     *
+     * @param world the world to run
+     * @param why   what the robots of the run ending are told, and the log says
+     * @param from  the client that asked, answered once the new run is in place
+     * @param id    its request's id
+     */
+    record Switch(World world, String why, Connection from, long id) {
+        /** Tells the client that asked what became of it. */
+        void answer(String text) {
+            from.send(new ControlReply(id, true, text));
+        }
+    }
+
+    private final CurrentRun run;
     private final SessionRules rules;
+    private final WorldLoader loader;
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
+    private Switch switchTo;
     private boolean paused;
     private long stepsLeft;
     private Pending stepping;
@@ -40,9 +58,14 @@ final class RunControl {
     private long baseNanos;
     private long baseStep;
 
-    RunControl(Simulation sim, SessionRules rules) {
-        this.sim = sim;
+    RunControl(CurrentRun run, SessionRules rules, int maxRobots) {
+        this.run = run;
         this.rules = rules;
+        this.loader = new WorldLoader(run, maxRobots);
+    }
+
+    private Simulation sim() {
+        return run.sim();
     }
 
     /** @param factor the pace the run starts with: 0 for as fast as possible, 1 for real time */
@@ -54,12 +77,16 @@ final class RunControl {
     void received(Connection c, ControlRequest r) {
         if (StatusReport.OP.equals(r.op())) {
             // a status changes nothing, so it need not wait for a step boundary
-            c.send(StatusReport.answer(r, sim, rules, paused, pace));
+            c.send(StatusReport.answer(r, sim(), rules, paused, pace));
             return;
         }
         ControlOp op;
         try {
-            op = ControlOp.parse(r, sim);
+            op = ControlOp.parse(r, sim());
+            if (op instanceof ControlOp.Load l) {
+                // read now, so that a broken world is refused at once and the run goes on unharmed
+                op = new ControlOp.Load(l.path(), loader.read(l.path()));
+            }
         } catch (IllegalArgumentException e) {
             refuse(c, r.id(), e.getMessage());
             return;
@@ -77,13 +104,35 @@ final class RunControl {
      * @return why the run ends, if a client stopped it; else null
      */
     String atBoundary() {
-        while (!pending.isEmpty()) {
+        while (!pending.isEmpty() && switchTo == null) {
             String end = apply(pending.poll());
             if (end != null) {
                 return end;
             }
         }
         return null;
+    }
+
+    /**
+     * @return the new run a {@code restart} or {@code load} asked for at this boundary, or null; the
+     *         requests that came after it are refused, as they were meant for the run that ends
+     */
+    Switch takeSwitch() {
+        Switch s = switchTo;
+        switchTo = null;
+        if (s != null) {
+            while (!pending.isEmpty()) {
+                Pending p = pending.poll();
+                reply(p, false, "not carried out: a restart or load before it ended the run it was meant for");
+            }
+            if (stepping != null) {
+                reply(stepping, true, "ended by the " + s.why() + " with " + stepsLeft + " of the steps still to run");
+                stepping = null;
+                stepsLeft = 0;
+            }
+            rebase = true;
+        }
+        return s;
     }
 
     /** @return whether the loop must not open a step now: paused, and no {@code step N} under way */
@@ -115,13 +164,13 @@ final class RunControl {
         if (stepsLeft > 0 && --stepsLeft == 0) {
             ControlOp.Step s = (ControlOp.Step) stepping.op();
             reply(stepping, true, "ran " + s.steps() + " step" + (s.steps() == 1 ? "" : "s") + "; paused after step "
-                    + sim.stepCount());
+                    + sim().stepCount());
             stepping = null;
         }
     }
 
     private String apply(Pending p) {
-        long k = sim.stepCount();
+        long k = sim().stepCount();
         String who = "control client " + RobotHello.printable(p.from().name());
         ControlOp op = p.op();
         if (op instanceof ControlOp.Pause) {
@@ -159,12 +208,17 @@ final class RunControl {
             move(p, m, k);
         } else if (op instanceof ControlOp.Remove r) {
             remove(p, r, who, k);
+        } else if (op instanceof ControlOp.Restart) {
+            switchTo = new Switch(sim().world(), "restart by " + who + " after step " + k, p.from(), p.id());
+        } else if (op instanceof ControlOp.Load l) {
+            switchTo = new Switch(l.world(), "load of world " + l.world().name() + " by " + who + " after step " + k,
+                    p.from(), p.id());
         }
         return null;
     }
 
     private void move(Pending p, ControlOp.Move m, long k) {
-        String refusal = sim.place(m.robot(), m.x(), m.y(), m.th());
+        String refusal = sim().place(m.robot(), m.x(), m.y(), m.th());
         if (refusal != null) {
             reply(p, false, refusal + " (after step " + k + ")");
             return;

@@ -19,14 +19,34 @@ import robosim.env.core.RobotSummary;
  *                  {@code System.nanoTime()} readings of the Environment's JVM (for benchmarks that
  *                  time loading and connecting); 0 if unknown
  * @param departures the robots that left, were dropped or were lost before the end, in the order they
- *                  went, each with the step and the reason; the others ran to the end
+ *                  went, each with the step and the reason; a robot that came back may be in it again
+ * @param joins     the robots that joined after the run started (late, back, or spawned in an open
+ *                  world), in the order they came
  */
 public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos,
-                        Find find, long connectedNanoTime, List<Departure> departures) {
+                        Find find, long connectedNanoTime, List<Departure> departures, List<Join> joins) {
     /** Copies the lists so the record stays immutable. */
     public RunReport {
         robots = List.copyOf(robots);
         departures = List.copyOf(departures);
+        joins = List.copyOf(joins);
+    }
+
+    /**
+     * A report in which no robot joined after the start.
+     *
+     * @param steps     steps simulated
+     * @param timeMs    simulated time, ms
+     * @param endReason why it ended
+     * @param robots    every robot at the end, in the world file's order
+     * @param wallNanos wall-clock time the steps took
+     * @param find      the confirmed find of the world's gold, or null
+     * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected, or 0
+     * @param departures the robots that went before the end, in the order they went
+     */
+    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
+                     long connectedNanoTime, List<Departure> departures) {
+        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, departures, List.of());
     }
 
     /**
@@ -42,15 +62,34 @@ public record RunReport(long steps, long timeMs, String endReason, List<RobotSum
      */
     public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
                      long connectedNanoTime) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, List.of());
+        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, List.of(), List.of());
     }
 
     /**
      * @param robot a robot's name
-     * @return how it went before the end of the run, or empty if it ran to the end
+     * @return how it last went before the end of the run, or empty if it ran to the end (or came back
+     *         after it went: a join takes part from a later step than the one its robot went at)
      */
     public Optional<Departure> departure(String robot) {
-        return departures.stream().filter(d -> d.robot().equals(robot)).findFirst();
+        Departure last = null;
+        for (Departure d : departures) {
+            if (d.robot().equals(robot)) {
+                last = d;
+            }
+        }
+        Departure went = last;
+        if (went == null || joins.stream().anyMatch(j -> j.robot().equals(robot) && j.step() > went.step())) {
+            return Optional.empty();
+        }
+        return Optional.of(went);
+    }
+
+    /**
+     * @param robot a robot's name
+     * @return how it joined after the run started, in order; empty if it was there from the start
+     */
+    public List<Join> joinsOf(String robot) {
+        return joins.stream().filter(j -> j.robot().equals(robot)).toList();
     }
 
     /**
@@ -64,6 +103,6 @@ public record RunReport(long steps, long timeMs, String endReason, List<RobotSum
      * @param find      the confirmed find of the world's gold, or null
      */
     public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, 0, List.of());
+        this(steps, timeMs, endReason, robots, wallNanos, find, 0, List.of(), List.of());
     }
 }

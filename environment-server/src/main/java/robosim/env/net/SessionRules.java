@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
+import robosim.env.world.RobotSpec;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameException;
@@ -20,12 +21,12 @@ import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.Snapshot;
-import robosim.protocol.Welcome;
 
 /**
  * The protocol's rules for each peer, applied by the step loop: who may say what and when. A robot
  * says hello once, with a name the world knows and no other program is using, before the first
- * step; then sends exactly one set of requests for each step the Environment opens. A shared link
+ * step or later ({@link RobotJoins}); then sends exactly one set of requests for each step the
+ * Environment opens after it was welcomed. A shared link
  * (a connection that said {@link LinkHello}) follows the same rules for each of its robots, and a
  * robot that breaks one is dropped alone while the link goes on. A viewer says hello and then only
  * listens; a control client says hello and may then change the run. When the run has a secret
@@ -39,9 +40,9 @@ final class SessionRules {
     /** Why a robot whose connection ended cleanly but without a bye is lost. */
     static final String NO_BYE = "the connection closed without a bye";
 
-    private final Simulation sim;
+    private final CurrentRun run;
     private final Access access;
-    private final RobotAdmission admission;
+    private final RobotJoins joins;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final ViewerPortRules viewerPort;
     private final RunControl control;
@@ -58,11 +59,38 @@ final class SessionRules {
     }
 
     SessionRules(Simulation sim, Access access, Limits limits) {
-        this.sim = sim;
+        this.run = new CurrentRun(sim);
         this.access = access;
-        this.admission = new RobotAdmission(sim, access);
-        this.control = new RunControl(sim, this);
-        this.viewerPort = new ViewerPortRules(sim, access, limits, control);
+        this.joins = new RobotJoins(run, access, limits, departures);
+        this.control = new RunControl(run, this, limits.maxRobots());
+        this.viewerPort = new ViewerPortRules(run, access, limits, control);
+    }
+
+    /** @return the simulation run now (a restart or load replaces it) */
+    Simulation sim() {
+        return run.sim();
+    }
+
+    /**
+     * Puts a new simulation in place of the one run now, between two steps: every robot of the run
+     * is told why in a bye and taken out (a shared link stays open for its robots to say hello
+     * again), and the new run waits for its robots as a run does at its start. Viewers and control
+     * clients stay.
+     *
+     * @param next the new simulation
+     * @param why  what the robots are told
+     */
+    void replace(Simulation next, String why) {
+        for (String robot : List.copyOf(robots.keySet())) {
+            drop(robot, why);
+        }
+        run.replace(next);
+        departures.reset();
+        answered.clear();
+        openStep = 0;
+        commands = null;
+        waiting.clear();
+        joins.takeWorldChanged();
     }
 
     /** @return the control clients' requests, for the step loop to carry out between steps */
@@ -70,13 +98,22 @@ final class SessionRules {
         return control;
     }
 
+    /**
+     * @return whether the run may start: every robot the world names is connected; in an open world,
+     *         any one robot (the others may join later)
+     */
     boolean allConnected() {
-        return robots.size() == sim.robotNames().size();
+        return sim().world().rules().open() ? !robots.isEmpty() : missing().isEmpty();
     }
 
+    /** @return the robots the world names that are not connected, in the world's order */
     List<String> missing() {
-        List<String> m = new ArrayList<>(sim.robotNames());
-        m.removeAll(robots.keySet());
+        List<String> m = new ArrayList<>();
+        for (RobotSpec r : sim().world().robots()) {
+            if (!robots.containsKey(r.name())) {
+                m.add(r.name());
+            }
+        }
         return m;
     }
 
@@ -97,14 +134,34 @@ final class SessionRules {
         return waiting;
     }
 
+    /** The run starts: from now robots that join or go are recorded. */
+    void start() {
+        departures.start();
+    }
+
     /** @return the robots that left, were dropped or were lost since the run started, in that order */
     List<Departure> departures() {
         return departures.list();
     }
 
+    /** @return whether a robot was added to the world since the last call (viewers must be sent the world again) */
+    boolean takeWorldChanged() {
+        return joins.takeWorldChanged();
+    }
+
+    /** @return the joins and departures since the last call, for the next snapshot */
+    List<Snapshot.Event> takeEvents() {
+        return departures.takeEvents();
+    }
+
+    /** @return the robots that joined after the run started, in that order */
+    List<Join> joins() {
+        return departures.joins();
+    }
+
     /** Marks a robot gone at the step open (or the last step run). */
     private void departed(String robot, Departure.Kind kind, String reason) {
-        departures.mark(robot, kind, openStep > 0 ? openStep : sim.stepCount(), reason);
+        departures.mark(robot, kind, openStep > 0 ? openStep : sim().stepCount(), reason);
     }
 
     /** Marks the robots of a robot connection lost. */
@@ -123,6 +180,7 @@ final class SessionRules {
 
     /** Opens a step: from now the connected robots' requests for it are collected. */
     void openStep(long step) {
+        departures.start();
         openStep = step;
         commands = new HashMap<>();
         waiting.clear();
@@ -142,8 +200,8 @@ final class SessionRules {
         return collected;
     }
 
-    /** Sends a snapshot to every viewer, encoded once. */
-    void broadcastSnapshot(Snapshot snapshot, MessageCodec codec) {
+    /** Sends a snapshot (or a world that changed) to every viewer, encoded once. */
+    void broadcastSnapshot(Message snapshot, MessageCodec codec) {
         viewerPort.broadcast(snapshot, codec);
     }
 
@@ -179,7 +237,7 @@ final class SessionRules {
         } else if (m instanceof RobotRequests req) {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> "robot " + c.name() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+            LOG.info(() -> "robot " + c.name() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
             departed(c.name(), Departure.Kind.LEFT, printable(bye.reason()));
             c.shut();
             drop(c.name(), null);
@@ -200,12 +258,12 @@ final class SessionRules {
             hello(c, hello);
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
-                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+                LOG.info(() -> "robot " + bye.robot() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
                 departed(bye.robot(), Departure.Kind.LEFT, printable(bye.reason()));
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
-            LOG.info(() -> c.peer() + " left at step " + sim.stepCount() + ": " + printable(bye.reason()));
+            LOG.info(() -> c.peer() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
             for (String robot : c.robots()) {
                 departed(robot, Departure.Kind.LEFT, printable(bye.reason()));
                 drop(robot, null);
@@ -217,18 +275,6 @@ final class SessionRules {
         }
     }
 
-    /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
-    private void overriding(RobotHello hello) {
-        sim.world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
-            String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
-            if (difference != null) {
-                String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();
-                LOG.info(() -> "robot " + hello.name() + ": its program's parameters differ from the world's file"
-                        + file + " (first: " + difference + "); the program's parameters win");
-            }
-        });
-    }
-
     /** Closes a shared link, dropping each of its robots with a log line that names it. */
     private void closeLink(Connection c, String reason) {
         for (String robot : c.robots()) {
@@ -238,39 +284,12 @@ final class SessionRules {
     }
 
     private void hello(Connection c, RobotHello hello) {
-        String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()),
-                sim.stepCount() > 0 || openStep > 0);
-        if (refusal == null) {
-            try {
-                overriding(hello);
-                sim.useParameters(hello.name(), hello.parameters());
-            } catch (IllegalArgumentException e) {
-                refusal = e.getMessage();
-            }
-        }
-        if (refusal != null) {
-            LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
-            if (c.isLink()) {
-                c.send(new Bye(Bye.REFUSED + refusal, hello.name()));
-            } else {
-                c.sendAndClose(new Bye(Bye.REFUSED + refusal));
-            }
-            return;
-        }
-        if (c.isLink()) {
-            c.addRobot(hello.name());
-        } else {
-            c.setName(hello.name());
-        }
-        robots.put(hello.name(), c);
-        sim.setConnected(hello.name(), true);
-        c.send(new Welcome(hello.name(), sim.world().stepMs(), sim.state(hello.name())));
-        LOG.info(() -> "robot " + hello.name() + " connected" + (c.isLink() ? " on a shared link (" + c.peer() + ")" : ""));
+        joins.hello(c, hello, robots, openStep);
     }
 
     private void requests(Connection c, String name, long step, List<Command> sent) {
         if (step != openStep || !waiting.contains(name)) {
-            String open = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+            String open = openStep == 0 ? "before step " + (sim().stepCount() + 1) + " was opened"
                     : waiting.contains(name) ? "while step " + openStep + " is open"
                     : "after it had already sent its requests for step " + openStep;
             String rule = "robot " + name + " sent requests for step " + step + " " + open;
@@ -295,7 +314,7 @@ final class SessionRules {
             // the frame could not be read, so whose request it was is unknown: the link goes
             closeLink(c, "sent an invalid message: " + rule);
         } else if (c.kind == Connection.Kind.ROBOT && name != null && robots.get(name) == c) {
-            String when = openStep == 0 ? "before step " + (sim.stepCount() + 1) + " was opened"
+            String when = openStep == 0 ? "before step " + (sim().stepCount() + 1) + " was opened"
                     : "for step " + openStep;
             drop(name, "robot " + name + " sent an invalid request " + when + ": " + rule);
         } else {
@@ -336,7 +355,7 @@ final class SessionRules {
             for (String robot : c.robots()) {
                 drop(robot, DISCONNECTED.equals(reason) ? null : "its link: " + reason);
                 if (DISCONNECTED.equals(reason)) {
-                    LOG.info(() -> "robot " + robot + " disconnected at step " + sim.stepCount() + " with its link");
+                    LOG.info(() -> "robot " + robot + " disconnected at step " + sim().stepCount() + " with its link");
                 }
             }
             if (!DISCONNECTED.equals(reason)) {
@@ -345,7 +364,7 @@ final class SessionRules {
         } else if (name != null && robots.get(name) == c) {
             drop(name, DISCONNECTED.equals(reason) ? null : reason);
             if (DISCONNECTED.equals(reason)) {
-                LOG.info(() -> "robot " + name + " disconnected at step " + sim.stepCount());
+                LOG.info(() -> "robot " + name + " disconnected at step " + sim().stepCount());
             }
         } else if (!DISCONNECTED.equals(reason)) {
             c.close(reason);
@@ -365,8 +384,8 @@ final class SessionRules {
         }
         Connection c = robots.remove(name);
         waiting.remove(name);
-        sim.halt(name);
-        sim.setConnected(name, false);
+        sim().halt(name);
+        sim().setConnected(name, false);
         if (c == null) {
             return;
         }

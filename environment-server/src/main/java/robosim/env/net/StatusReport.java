@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Map;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
-import robosim.env.world.RobotSpec;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.Message;
@@ -37,13 +36,12 @@ final class StatusReport {
         }
         Map<String, Connection> connected = rules.connectedRobots();
         List<RunStatus.RobotStatus> rows = new ArrayList<>();
-        List<RobotSpec> specs = sim.world().robots();
         for (Snapshot.RobotView v : sim.snapshot().robots()) {
             RobotSummary s = sim.summary(v.name());
             long[] counts = sim.messageCounts(v.name());
             Connection c = connected.get(v.name());
-            String type = specs.stream().filter(spec -> spec.name().equals(v.name())).map(RobotSpec::type)
-                    .findFirst().orElse("");
+            // the body's type: a world's robot's as declared, a newcomer's in an open world as it said
+            String type = sim.type(v.name());
             rows.add(new RunStatus.RobotStatus(v.name(), type, c == null ? "" : drivenBy(c), c != null, v.x(), v.y(),
                     v.th(), v.vel(), v.rotVel(), v.stalled(), s.collisions(), counts[0], counts[1],
                     rules.lastAnswered(v.name())));

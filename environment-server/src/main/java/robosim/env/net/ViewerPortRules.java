@@ -14,7 +14,6 @@ import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
-import robosim.protocol.Snapshot;
 import robosim.protocol.ViewerHello;
 
 /**
@@ -26,26 +25,30 @@ import robosim.protocol.ViewerHello;
 final class ViewerPortRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
 
-    private final Simulation sim;
+    private final CurrentRun run;
     private final Access access;
     private final Limits limits;
     private final List<Connection> viewers = new ArrayList<>();
     private final List<Connection> controls = new ArrayList<>();
     private final RunControl control;
 
-    ViewerPortRules(Simulation sim, Access access, Limits limits, RunControl control) {
-        this.sim = sim;
+    ViewerPortRules(CurrentRun run, Access access, Limits limits, RunControl control) {
+        this.run = run;
         this.control = control;
         this.access = access;
         this.limits = limits;
+    }
+
+    private Simulation sim() {
+        return run.sim();
     }
 
     int viewerCount() {
         return viewers.size();
     }
 
-    /** Sends a snapshot to every viewer, encoded once. */
-    void broadcast(Snapshot snapshot, MessageCodec codec) {
+    /** Sends a snapshot (or a world that changed) to every viewer, encoded once. */
+    void broadcast(Message snapshot, MessageCodec codec) {
         viewers.removeIf(Connection::isClosed);
         if (viewers.isEmpty()) {
             return;
@@ -126,9 +129,9 @@ final class ViewerPortRules {
         // a hello without a name still counts: the next one is a second hello
         c.setName(name);
         viewers.add(c);
-        c.send(sim.description());
-        c.send(sim.snapshot());
-        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
+        c.send(sim().description());
+        c.send(sim().snapshot());
+        LOG.info(() -> c.peer() + " attached at step " + sim().stepCount());
     }
 
     private void controlHello(Connection c, ControlHello hello) {
@@ -148,11 +151,11 @@ final class ViewerPortRules {
         c.setName(name);
         c.becomeControl();
         controls.add(c);
-        LOG.info(() -> c.peer() + " attached at step " + sim.stepCount());
+        LOG.info(() -> c.peer() + " attached at step " + sim().stepCount());
     }
 
     private void commsUpdate(Connection c, CommsUpdate u) {
-        CommsSettings now = sim.commsSettings();
+        CommsSettings now = sim().commsSettings();
         try {
             CommsSettings next = new CommsSettings(
                     u.maxRange() != null ? u.maxRange() : now.maxRange(),
@@ -160,8 +163,8 @@ final class ViewerPortRules {
                     u.latencySteps() != null ? u.latencySteps() : now.latencySteps(),
                     u.lossProbability() != null ? u.lossProbability() : now.lossProbability(),
                     u.maxMessageBytes() != null ? u.maxMessageBytes() : now.maxMessageBytes());
-            sim.setCommsSettings(next);
-            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim.stepCount() + " to " + next);
+            sim().setCommsSettings(next);
+            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim().stepCount() + " to " + next);
             c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
                     next.maxMessageBytes()));
         } catch (IllegalArgumentException e) {

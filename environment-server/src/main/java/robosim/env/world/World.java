@@ -28,10 +28,12 @@ import robosim.comms.CommsSettings;
  * @param minY      the world's bottom edge, mm
  * @param zones     the forbidden lines and areas of a map: kept for robot programs and viewers,
  *                  not solid
+ * @param rules     who may join the run and when it ends ({@link RunRules#DEFAULT} by default)
  */
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
-                    CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones) {
+                    CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones,
+                    RunRules rules) {
     /** The widest and highest world a world file may describe, mm (100 km). */
     public static final double MAX_SIZE = 100_000_000;
 
@@ -48,7 +50,7 @@ public record World(String name, Path source, double width, double height, int s
                     + " has places for 1 to " + robots.size());
         }
         return new World(name, source, width, height, stepMs, obstacles, robots.subList(0, count), heat, noise,
-                comms, gold, minX, minY, zones);
+                comms, gold, minX, minY, zones, rules);
     }
 
     /**
@@ -59,7 +61,18 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withRobots(List<RobotSpec> others) {
         return new World(name, source, width, height, stepMs, obstacles, others, heat, noise, comms, gold, minX, minY,
-                zones);
+                zones, rules);
+    }
+
+    /**
+     * The same world with other rules for joining and ending.
+     *
+     * @param other the rules
+     * @return the world
+     */
+    public World withRules(RunRules other) {
+        return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
+                zones, other);
     }
 
     /** @return the world's extent */
@@ -74,6 +87,32 @@ public record World(String name, Path source, double width, double height, int s
         heat = List.copyOf(heat);
         zones = List.copyOf(zones);
         Objects.requireNonNull(comms, "comms");
+        Objects.requireNonNull(rules, "rules");
+    }
+
+    /**
+     * A world that ends as it always did and admits only the robots it names.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the sensor and odometry noise
+     * @param comms     how messages travel between robots
+     * @param gold      the gold, or null
+     * @param minX      the world's left edge, mm
+     * @param minY      the world's bottom edge, mm
+     * @param zones     the forbidden lines and areas of a map
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
+                 CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY, zones,
+                RunRules.DEFAULT);
     }
 
     /**
@@ -94,7 +133,8 @@ public record World(String name, Path source, double width, double height, int s
     public World(String name, Path source, double width, double height, int stepMs,
                  List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
                  CommsSettings comms, HeatSource gold) {
-        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, 0, 0, List.of());
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, 0, 0, List.of(),
+                RunRules.DEFAULT);
     }
 
     /**

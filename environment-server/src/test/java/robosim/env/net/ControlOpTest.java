@@ -83,10 +83,14 @@ class ControlOpTest {
     }
 
     @Test
-    void restartAndLoadAreRefusedAsNotYetSupportedAndAnUnknownOperationNamesTheKnownOnes() {
-        assertEquals("restart is not yet supported by this Environment", refusal("restart"));
-        assertEquals("load is not yet supported by this Environment", refusal("load", "maze-small.xml"));
+    void anUnknownOperationNamesTheKnownOnes() {
         assertEquals("unknown operation 'jump'; the operations are pause, resume, step N, stop,"
-                + " pace max|realtime|K, move NAME X Y TH, remove NAME", refusal("jump"));
+                + " pace max|realtime|K, move NAME X Y TH, remove NAME, restart, load WORLD", refusal("jump"));
+    }
+
+    @Test
+    void restartTakesNoArgumentAndLoadOne() {
+        assertEquals("restart takes 0 arguments (restart), got 1", refusal("restart", "now"));
+        assertEquals("load takes 1 argument (load WORLD), got 0", refusal("load"));
     }
 }

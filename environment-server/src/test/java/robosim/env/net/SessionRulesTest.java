@@ -219,15 +219,15 @@ class SessionRulesTest {
     }
 
     @Test
-    void aHelloAfterTheRunStartedIsRefused() throws IOException {
+    void aHelloOfAnUnknownNameAfterTheRunStartedIsStillRefused() throws IOException {
         robot("r1");
         rules.openStep(1);
         Peer late = loopback.connect(Connection.Kind.ROBOT);
 
-        late.send(hello("r2", "pioneer"));
+        late.send(hello("r9", "pioneer"));
         deliver(late);
 
-        assertRefused(late, "the run has started");
+        assertRefused(late, "world empty-room has no robot named 'r9'");
     }
 
     @Test

@@ -156,6 +156,7 @@ public final class RecordingWriter implements SnapshotListener {
             robots.add(new RobotView(r.name(), r.x(), r.y(), r.th(), r.stalled(), r.connected(), NONE,
                     r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel()));
         }
-        return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said());
+        return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said(),
+                snapshot.events());
     }
 }

@@ -32,14 +32,16 @@ import robosim.protocol.recording.RecordingReader;
  * @param sensors   whether the recording keeps sonar and laser readings
  * @param endReason why the run ended, or {@code null} if the recording has no end record
  * @param problem   the damage that stopped the reading, or {@code null}
+ * @param events    the robots that joined the run under way or went from it, in order
  */
 public record RecordingSummary(String world, double width, double height, int stepMs, int obstacles, long snapshots,
                                long firstStep, long lastStep, long timeMs, long messages, long said,
                                List<RobotTotals> robots, boolean sensors, String endReason,
-                               RecordingException problem) {
-    /** Copies the list so the record stays immutable. */
+                               RecordingException problem, List<Snapshot.Event> events) {
+    /** Copies the lists so the record stays immutable. */
     public RecordingSummary {
         robots = List.copyOf(robots);
+        events = List.copyOf(events);
     }
 
     /**
@@ -58,7 +60,7 @@ public record RecordingSummary(String world, double width, double height, int st
 
     /** A robot's running totals. */
     private static final class Tally {
-        final String type;
+        String type;
         RobotView last;
         double distance;
         long collisions;
@@ -86,9 +88,14 @@ public record RecordingSummary(String world, double width, double height, int st
         long messages = 0;
         long said = 0;
         RecordingException problem = null;
+        List<Snapshot.Event> events = new ArrayList<>();
         try {
             Snapshot f;
             while ((f = reader.next()) != null) {
+                // a robot that joined an open world is in the world sent again before its first snapshot
+                reader.world().robots().forEach(r -> tallies.computeIfAbsent(r.name(), n -> new Tally("?")).type =
+                        r.robotType());
+                events.addAll(f.events());
                 snapshots++;
                 first = first < 0 ? f.step() : first;
                 last = f.step();
@@ -108,7 +115,7 @@ public record RecordingSummary(String world, double width, double height, int st
                 t.last == null ? Double.NaN : t.last.th())));
         return new RecordingSummary(world.name(), world.width(), world.height(), world.stepMs(),
                 world.obstacles().size(), snapshots, first, last, time, messages, said, robots, reader.sensors(),
-                reader.endReason(), problem);
+                reader.endReason(), problem, events);
     }
 
     private static void add(Tally t, RobotView r) {

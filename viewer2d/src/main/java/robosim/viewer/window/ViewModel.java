@@ -105,7 +105,7 @@ public final class ViewModel {
         changed();
     }
 
-    /** Keeps the snapshot's messages and speech, each as one line naming the step and who. */
+    /** Keeps the snapshot's messages, speech, joins and departures, each as one line naming the step and who. */
     private void keepMessages(Snapshot f) {
         for (MessageDelivery m : f.messages()) {
             keep(String.format(Locale.ROOT, "step %d: %s to %s: %s %s", f.step(), m.from(),
@@ -113,6 +113,11 @@ public final class ViewModel {
         }
         for (Snapshot.Said said : f.said()) {
             keep(String.format(Locale.ROOT, "step %d: %s said \"%s\"", f.step(), said.robot(), said.text()));
+        }
+        // joins and departures read as the run report says them, so a window shows who came and went
+        for (Snapshot.Event e : f.events()) {
+            keep(String.format(Locale.ROOT, "step %d: robot %s %s%s", e.step(), e.robot(), e.what(),
+                    e.reason().isEmpty() ? "" : ": " + e.reason()));
         }
     }
 

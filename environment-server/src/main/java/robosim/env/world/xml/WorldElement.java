@@ -21,6 +21,8 @@ final class WorldElement extends Element {
     String stepMs;
     @JacksonXmlProperty(isAttribute = true)
     String boundary;
+    @JacksonXmlProperty(isAttribute = true)
+    String open;
 
     /** The child elements in file order. */
     final List<Element> children = new ArrayList<>();
@@ -63,6 +65,16 @@ final class WorldElement extends Element {
     @JsonSetter("comms")
     void addComms(CommsElement comms) {
         children.add(comms);
+    }
+
+    @JsonSetter("end")
+    void addEnd(EndElement end) {
+        children.add(end);
+    }
+
+    @JsonSetter("spawn")
+    void addSpawn(SpawnElement spawn) {
+        children.add(spawn);
     }
 
     @Override

@@ -140,7 +140,7 @@ public final class WorldReader {
                 : List.of(new Pose2D(bounds.minX() + width / 2, bounds.minY() + height / 2, 0));
         robots.addAll(MapWorlds.place(placer, requests, homes));
         return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, bounds.minX(),
-                bounds.minY(), map == null ? List.of() : map.zones());
+                bounds.minY(), map == null ? List.of() : map.zones(), RunRulesReader.read(attributes, root, bounds, gold));
     }
 
     /** @return the world's {@code <map>}, or null; a world has at most one */

@@ -1,0 +1,136 @@
+package robosim.env.net;
+
+import java.util.Locale;
+import java.util.Map;
+import java.util.logging.Logger;
+import robosim.env.core.Simulation;
+import robosim.geometry.Pose2D;
+import robosim.protocol.Bye;
+import robosim.protocol.RobotHello;
+import robosim.protocol.Welcome;
+
+/**
+ * A robot's hello, part of {@link SessionRules}: admitted or refused ({@link RobotAdmission}), and
+ * once admitted given its body's parameters and welcomed with its state. Before the run starts a
+ * robot's program brings its own parameters; after, a robot joins its body as it is (where it stood
+ * still since it went, with its odometry), so its program must bring the parameters that body has:
+ * a body does not change shape or limits during a run. A robot admitted while a step is open takes
+ * part from the next step opened.
+ */
+final class RobotJoins {
+    private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
+
+    private final CurrentRun run;
+    private final RobotAdmission admission;
+    private final Departures departures;
+    private boolean worldChanged;
+
+    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures) {
+        this.run = run;
+        this.admission = new RobotAdmission(run, access, limits.maxRobots());
+        this.departures = departures;
+    }
+
+    private Simulation sim() {
+        return run.sim();
+    }
+
+    /** @return whether a robot was added to the world since the last call */
+    boolean takeWorldChanged() {
+        boolean changed = worldChanged;
+        worldChanged = false;
+        return changed;
+    }
+
+    /**
+     * Admits or refuses a robot's hello.
+     *
+     * @param c        the connection it came on
+     * @param hello    the hello
+     * @param robots   the robots connected, by name, to which an admitted robot is added
+     * @param openStep the step open, or 0 between steps
+     */
+    void hello(Connection c, RobotHello hello, Map<String, Connection> robots, long openStep) {
+        boolean started = departures.started() || openStep > 0;
+        String refusal = admission.refusal(c, hello, robots.containsKey(hello.name()));
+        boolean spawned = refusal == null && !sim().robotNames().contains(hello.name());
+        if (spawned) {
+            refusal = spawn(hello);
+        } else if (refusal == null) {
+            refusal = started ? sameBody(hello) : useParameters(hello);
+        }
+        if (refusal != null) {
+            LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
+            if (c.isLink()) {
+                c.send(new Bye(Bye.REFUSED + refusal, hello.name()));
+            } else {
+                c.sendAndClose(new Bye(Bye.REFUSED + refusal));
+            }
+            return;
+        }
+        if (c.isLink()) {
+            c.addRobot(hello.name());
+        } else {
+            c.setName(hello.name());
+        }
+        robots.put(hello.name(), c);
+        sim().setConnected(hello.name(), true);
+        c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name())));
+        String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";
+        Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim().stepCount() + 1);
+        if (join == null) {
+            LOG.info(() -> "robot " + hello.name() + " connected" + on);
+        } else {
+            LOG.info(() -> "robot " + hello.name() + " " + join.describe() + on + " (after step " + sim().stepCount()
+                    + ")");
+        }
+    }
+
+    /** An open world's newcomer: placed at the first free spawn pose. @return why not, or null */
+    private String spawn(RobotHello hello) {
+        try {
+            String type = hello.robotType().toLowerCase(Locale.ROOT);
+            Pose2D at = sim().spawn(hello.name(), type, hello.parameters(), sim().world().rules().spawns());
+            worldChanged = true;
+            LOG.info(() -> String.format(Locale.ROOT, "robot %s (a %s the world does not name) placed at spawn pose"
+                    + " (%.0f, %.0f, %.0f)", hello.name(), type, at.x(), at.y(), Math.toDegrees(at.th())));
+            return null;
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
+        }
+    }
+
+    /** Before the run: the program's parameters become the body's. @return why not, or null */
+    private String useParameters(RobotHello hello) {
+        try {
+            overriding(hello);
+            sim().useParameters(hello.name(), hello.parameters());
+            return null;
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
+        }
+    }
+
+    /** During the run: the program must bring its body's parameters. @return why not, or null */
+    private String sameBody(RobotHello hello) {
+        String difference = ParameterDifference.first(sim().parameters(hello.name()), hello.parameters(), "its body");
+        if (difference == null) {
+            return null;
+        }
+        return "robot " + hello.name() + " joins the run under way (after step " + sim().stepCount()
+                + ") with parameters that differ from its body's (first: " + difference
+                + "); a body keeps its parameters during a run";
+    }
+
+    /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
+    private void overriding(RobotHello hello) {
+        sim().world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
+            String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
+            if (difference != null) {
+                String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();
+                LOG.info(() -> "robot " + hello.name() + ": its program's parameters differ from the world's file"
+                        + file + " (first: " + difference + "); the program's parameters win");
+            }
+        });
+    }
+}
