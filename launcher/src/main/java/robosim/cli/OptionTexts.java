@@ -18,6 +18,8 @@ final class OptionTexts {
     static final String CELL_SIZE = "the maze's cell size in mm";
     static final String THREADS = "threads that read the robots' sensors each step";
     static final String TOKEN = "the run secret";
+    /** --secret-file's meaning, before the semicolon; the commands that take it add their default after it. */
+    static final String SECRET_FILE = "read the run secret from FILE (as env --token-file wrote it)";
     static final String WINDOW = "show it in a window";
     static final String PNG_DIR = "write frame-NNNNNN.png files to DIR";
     /** The hidden old names' descriptions: never shown, kept for scripts written before. */

@@ -53,8 +53,8 @@ final class PanelCommand implements Callable<Integer> {
             + " ${DEFAULT-VALUE}")
     int robotPort;
 
-    @Option(names = "--secret-file", paramLabel = "FILE", description = "with --attach: the file holding the run"
-            + " secret; default: as every client finds it ($" + RunSecret.ENV + ", $" + RunSecret.FILE_ENV
+    @Option(names = "--secret-file", paramLabel = "FILE", description = OptionTexts.SECRET_FILE
+            + "; with --attach; default: as every client finds it ($" + RunSecret.ENV + ", $" + RunSecret.FILE_ENV
             + ", ~/.robosim/tokens/PORT)")
     Path secretFile;
 

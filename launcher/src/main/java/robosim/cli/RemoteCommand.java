@@ -80,7 +80,8 @@ final class RemoteCommand implements Callable<Integer> {
     boolean noView;
 
     @Option(names = "--secret-file", paramLabel = "FILE",
-            description = "read the run secret from FILE (the one env wrote with --token-file)")
+            description = OptionTexts.SECRET_FILE + "; default: as every robot finds it (--token,"
+                    + " $ROBOSIM_TOKEN, $ROBOSIM_TOKEN_FILE, ~/.robosim/tokens/PORT)")
     Path secretFile;
 
     @Mixin
