@@ -30,9 +30,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = ControlRequest.class, name = "controlRequest"),
         @JsonSubTypes.Type(value = ControlReply.class, name = "controlReply"),
         @JsonSubTypes.Type(value = RunStatus.class, name = "runStatus"),
+        @JsonSubTypes.Type(value = LogLine.class, name = "logLine"),
 })
 public sealed interface Message
         permits RobotHello, Welcome, TimeStep, RobotRequests, ViewerHello, WorldDescription, Snapshot, Bye,
         CommsUpdate, LinkHello, TimeSteps, LinkRequests, ControlHello, KeepAlive,
-        ControlRequest, ControlReply, RunStatus {
+        ControlRequest, ControlReply, RunStatus, LogLine {
 }

@@ -292,6 +292,7 @@ class MessageCodecTest {
         "ControlRequest, controlRequest",
         "ControlReply, controlReply",
         "RunStatus, runStatus",
+        "LogLine, logLine",
     })
     void eachMessageTypeKeepsItsWireName(String simpleName, String wireName) {
         Message message = Messages.all().stream().filter(m -> m.getClass().getSimpleName().equals(simpleName))

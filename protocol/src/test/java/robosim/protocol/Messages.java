@@ -148,6 +148,10 @@ final class Messages {
         return new ControlReply(7, false, "move: no robot named 'robot9' in world demo");
     }
 
+    static LogLine logLine() {
+        return new LogLine(42, "INFO", "robot r2 rejoined at step 43 (after step 42)");
+    }
+
     static RunStatus runStatus() {
         return new RunStatus(7, "demo", 42, 4200, false, 1, List.of(
                 new RunStatus.RobotStatus("robot1", "p3dx", "program at 127.0.0.1:40312", true, 1500, -250.5, 90,
@@ -158,6 +162,6 @@ final class Messages {
     static List<Message> all() {
         return List.of(robotHello(), welcome(), timeStep(), robotRequests(), viewerHello(), worldDescription(),
                 snapshot(), bye(), commsUpdate(), linkHello(), timeSteps(), linkRequests(), controlHello(),
-                keepAlive(), controlRequest(), controlReply(), runStatus());
+                keepAlive(), controlRequest(), controlReply(), runStatus(), logLine());
     }
 }

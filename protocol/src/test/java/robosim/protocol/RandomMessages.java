@@ -25,7 +25,7 @@ public final class RandomMessages {
 
     /** @return a message of a random type */
     public Message any() {
-        return switch (random.nextInt(15)) {
+        return switch (random.nextInt(16)) {
             case 0 -> new RobotHello(text(), text(), nullOr(this::parameters));
             case 1 -> new Welcome(text(), (int) anyLong(), nullOr(this::state));
             case 2 -> new TimeStep(anyLong(), anyLong(), nullOr(this::state));
@@ -42,6 +42,8 @@ public final class RandomMessages {
             case 12 -> new ControlRequest(anyLong(), text(), list(() -> text(40), ControlRequest.MAX_ARGS));
             case 13 -> new ControlReply(anyLong(), random.nextBoolean(), text());
             case 14 -> runStatus();
+            case 15 -> new LogLine(Math.abs(random.nextLong() / 2), new String[] {"SEVERE", "WARNING", "INFO"}[random.nextInt(3)],
+                    text());
             default -> new LinkRequests(anyLong(), list(() -> new LinkRequests.ForRobot(text(), commands()), 4));
         };
     }

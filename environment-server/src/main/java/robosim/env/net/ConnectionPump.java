@@ -69,6 +69,7 @@ final class ConnectionPump implements AutoCloseable {
             }
         }
         doorway.served();
+        rules.log().forward(rules.sim().stepCount());
         sender.keepAlive(rules.sim().stepCount(), doorway.connections());
     }
 

@@ -78,7 +78,7 @@ sealed interface ControlOp {
                     coordinate("Y", a.get(2)), heading(a.get(3)));
             default -> throw new IllegalArgumentException("unknown operation '" + RobotHello.printable(op, 40)
                     + "'; the operations are pause, resume, step N, stop, pace max|realtime|K, move NAME X Y TH,"
-                    + " remove NAME, restart, load WORLD");
+                    + " remove NAME, restart, load WORLD, status, log");
         };
     }
 

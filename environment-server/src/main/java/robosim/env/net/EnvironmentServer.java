@@ -84,6 +84,8 @@ public final class EnvironmentServer implements AutoCloseable {
      */
     public void bind() throws IOException {
         pump.bind();
+        // from now the log's lines can be sent to the control clients that follow them
+        rules.log().install();
     }
 
     /**
@@ -326,6 +328,7 @@ public final class EnvironmentServer implements AutoCloseable {
         // a simulation used after this reads on its caller's thread: a closed pool runs its loops there
         workers.close();
         listeners.close();
+        rules.log().close();
         pump.close();
     }
 }

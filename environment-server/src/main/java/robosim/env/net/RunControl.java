@@ -25,6 +25,8 @@ final class RunControl {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
     /** The most requests waiting for a step boundary, all clients together. */
     static final int MAX_PENDING = 64;
+    /** The request that has the Environment's log lines sent to the client ({@link LogForwarding}). */
+    static final String LOG_OP = "log";
 
     /** A request checked and waiting for the step boundary. */
     private record Pending(Connection from, long id, ControlOp op) { }
@@ -78,6 +80,16 @@ final class RunControl {
         if (StatusReport.OP.equals(r.op())) {
             // a status changes nothing, so it need not wait for a step boundary
             c.send(StatusReport.answer(r, sim(), rules, paused, pace));
+            return;
+        }
+        if (LOG_OP.equals(r.op())) {
+            // following the log changes nothing in the run either
+            if (!r.args().isEmpty()) {
+                refuse(c, r.id(), "log takes 0 arguments (log), got " + r.args().size());
+                return;
+            }
+            rules.log().follow(c);
+            c.send(new ControlReply(r.id(), true, "following the Environment's log from step " + sim().stepCount()));
             return;
         }
         ControlOp op;

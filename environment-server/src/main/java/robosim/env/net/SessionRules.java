@@ -48,6 +48,7 @@ final class SessionRules {
     private final RunControl control;
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
+    private final LogForwarding log = new LogForwarding();
     /** The last step each robot answered in time, for control clients' status. */
     private final Map<String, Long> answered = new HashMap<>();
     private long openStep;
@@ -91,6 +92,11 @@ final class SessionRules {
         commands = null;
         waiting.clear();
         joins.takeWorldChanged();
+    }
+
+    /** @return the Environment's log lines for the control clients that follow them */
+    LogForwarding log() {
+        return log;
     }
 
     /** @return the control clients' requests, for the step loop to carry out between steps */

@@ -85,7 +85,7 @@ class ControlOpTest {
     @Test
     void anUnknownOperationNamesTheKnownOnes() {
         assertEquals("unknown operation 'jump'; the operations are pause, resume, step N, stop,"
-                + " pace max|realtime|K, move NAME X Y TH, remove NAME, restart, load WORLD", refusal("jump"));
+                + " pace max|realtime|K, move NAME X Y TH, remove NAME, restart, load WORLD, status, log", refusal("jump"));
     }
 
     @Test
