@@ -199,7 +199,9 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
 
     /** @return what a waiting Environment waits for, how long it has waited, and how long it will */
     static String describeWait(Status s) {
-        String of = " - " + WaitSchedule.seconds(s.waitedNanos()) + " s of " + limit(s.waitLimitNanos());
+        // a wait with no limit (robots after a restart or load) says so rather than "of 0"
+        String of = " - " + WaitSchedule.seconds(s.waitedNanos()) + " s"
+                + (s.waitLimitNanos() > 0 ? " of " + limit(s.waitLimitNanos()) : ", no time limit");
         if (s.phase() == Phase.STEP_HELD) {
             List<String> late = s.waitingFor();
             String whose = late.size() == 1 ? "robot " + late.get(0) + "'s requests"

@@ -157,6 +157,13 @@ class RunProgressLineTest {
     }
 
     @Test
+    void aWaitWithNoTimeLimitSaysSoInsteadOfALimitOfNought() {
+        assertEquals("waiting for robot r2 (1 of 2 connected) - 4 s, no time limit",
+                RunProgressLine.describeWait(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 1, List.of("r2"), 0, 0, 0,
+                        4 * S, 0)));
+    }
+
+    @Test
     void durationsAreMinutesAndSecondsOrHours() {
         assertEquals("0:07", RunProgressLine.duration(7 * S));
         assertEquals("12:05", RunProgressLine.duration(725 * S));

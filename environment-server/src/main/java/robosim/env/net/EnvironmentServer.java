@@ -184,7 +184,7 @@ public final class EnvironmentServer implements AutoCloseable {
             rules.broadcastSnapshot(next.snapshot(), codec);
             s.answer(why + ": world " + next.world().name() + " (seed " + next.seed() + ") waits for its robots");
             s = null;
-            progress.waitingSince(System.nanoTime());
+            progress.waitingUntimedSince(System.nanoTime());
             while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
                 String end = control.atBoundary();
                 if (end != null) {

@@ -20,6 +20,8 @@ final class ProgressReports {
     /** When the listener is next due, {@link System#nanoTime()}; far away when no one follows. */
     private long nextNanos = Long.MAX_VALUE;
     private long waitStartedNanos;
+    /** Whether a wait for robots counts against the connect timeout. */
+    private boolean connectTimed = true;
     private long runStartedNanos;
 
     ProgressReports(SessionRules rules, ServerOptions options) {
@@ -49,6 +51,16 @@ final class ProgressReports {
     /** @param now when the wait that a report of {@code CONNECTING} or {@code STEP_HELD} counts began */
     void waitingSince(long now) {
         waitStartedNanos = now;
+        connectTimed = true;
+    }
+
+    /**
+     * @param now when a wait for robots began that has no time limit (after a restart or load: the
+     *            user drives the Environment then)
+     */
+    void waitingUntimedSince(long now) {
+        waitStartedNanos = now;
+        connectTimed = false;
     }
 
     /** @param now when the first step began */
@@ -77,7 +89,7 @@ final class ProgressReports {
             case RUNNING -> List.of();
         };
         long limitMs = switch (phase) {
-            case CONNECTING -> options.connectTimeoutMs();
+            case CONNECTING -> connectTimed ? options.connectTimeoutMs() : 0;
             case STEP_HELD -> options.stepTimeoutMs();
             case RUNNING -> 0;
         };

@@ -45,7 +45,8 @@ public interface RunProgress {
      * @param runNanos        wall time since the first step opened (0 while connecting), ns
      * @param waitedNanos     while connecting: since the server began to wait for robots; while a step
      *                        is held: since the step opened; else 0; ns
-     * @param waitLimitNanos  how long that wait may last (the connect or the step timeout); 0 while running
+     * @param waitLimitNanos  how long that wait may last (the connect or the step timeout); 0 while running,
+     *                        and while connecting after a restart or load, which has no time limit
      */
     record Status(Phase phase, long step, long timeMs, int stepMs, long maxSteps, int robots, int connected,
                   List<String> waitingFor, int viewers, int viewersAwaited, long runNanos, long waitedNanos,
