@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.function.Predicate;
 import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
@@ -11,6 +12,7 @@ import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.LogLine;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RunStatus;
@@ -22,6 +24,7 @@ import robosim.protocol.RunStatus;
  * thread asks at a time.
  */
 public final class ControlClient implements AutoCloseable {
+    private volatile Consumer<LogLine> logLines;
     private final Socket socket;
     private final FrameWriter writer;
     private final FrameReader reader;
@@ -96,11 +99,25 @@ public final class ControlClient implements AutoCloseable {
             if (type.isInstance(m) && wanted.test(type.cast(m))) {
                 return type.cast(m);
             }
+            if (m instanceof LogLine line && logLines != null) {
+                logLines.accept(line);
+                continue;
+            }
             if (m instanceof Bye bye) {
                 throw new NoAnswerException("the Environment " + bye.reason());
             }
         }
         throw new NoAnswerException("the Environment closed the connection without an answer (its log says why)");
+    }
+
+    /**
+     * Has the Environment's log lines, once asked for with a {@code log} request, handed over while
+     * this client reads its answers.
+     *
+     * @param lines gets each line, on the reading thread; null for none
+     */
+    public void onLogLine(Consumer<LogLine> lines) {
+        this.logLines = lines;
     }
 
     /**

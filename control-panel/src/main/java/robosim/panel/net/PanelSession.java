@@ -13,6 +13,7 @@ import java.util.logging.Logger;
 import robosim.panel.model.Request;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlReply;
+import robosim.protocol.LogLine;
 import robosim.protocol.RunStatus;
 
 /**
@@ -44,6 +45,7 @@ public final class PanelSession implements AutoCloseable {
     private long requestUsedNanos;
     private volatile ControlClient statusClient;
     private volatile boolean closed;
+    private volatile Consumer<String> logLines;
 
     /**
      * @param host  the Environment's host
@@ -124,6 +126,7 @@ public final class PanelSession implements AutoCloseable {
             try {
                 if (statusClient == null) {
                     statusClient = ControlClient.open(host, port, "control-panel-status", token, STATUS_TIMEOUT_MS);
+                    follow(statusClient, failure);
                 }
                 status.accept(statusClient.status());
             } catch (IOException | RuntimeException e) {
@@ -134,6 +137,34 @@ public final class PanelSession implements AutoCloseable {
                 }
             }
         }, 0, periodMs, TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Has the Environment's log lines (INFO and above) come to {@code lines}, formatted as
+     * {@code [step 12] WARNING: text}, read along with the statuses; call it before {@link #poll}.
+     * The status connection asks for them again whenever it is opened anew.
+     *
+     * @param lines gets each line, on the status thread
+     */
+    public void followLog(Consumer<String> lines) {
+        this.logLines = lines;
+    }
+
+    private void follow(ControlClient c, Consumer<String> failure) throws IOException {
+        Consumer<String> to = logLines;
+        if (to == null) {
+            return;
+        }
+        c.onLogLine(l -> to.accept(format(l)));
+        ControlReply r = c.ask("log");
+        if (!r.ok()) {
+            failure.accept("the Environment does not send its log: " + r.text());
+        }
+    }
+
+    /** @return a log line as the panel's log pane shows it */
+    static String format(LogLine l) {
+        return "[step " + l.step() + "] " + (l.level().equals("INFO") ? "" : l.level() + ": ") + l.text();
     }
 
     /** Stops both threads and closes both connections; a request under way ends with an error. */

@@ -108,6 +108,10 @@ final class PanelController implements AutoCloseable {
             PanelSession s = new PanelSession(host, viewerPort, t);
             session = s;
             log.accept("panel: attached to the Environment at " + s.peer());
+            if (!processes.environmentRuns()) {
+                // an Environment this panel started writes its log to the pane already, through its output
+                s.followLog(line -> log.accept("env: " + line));
+            }
             s.poll(STATUS_PERIOD_MS, st -> {
                 last = st;
                 SwingUtilities.invokeLater(() -> statuses.accept(st));

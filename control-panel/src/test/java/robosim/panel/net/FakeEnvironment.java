@@ -12,13 +12,15 @@ import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.LogLine;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RunStatus;
 
 /**
  * A viewer port on loopback that answers control clients as an Environment does: a status with
- * the step it has counted, every other request confirmed; a {@code step} is held until
+ * the step it has counted, every other request confirmed (a {@code log} followed by two log
+ * lines); a {@code step} is held until
  * {@link #release} is counted down. Records the hellos' names and the requests.
  */
 final class FakeEnvironment implements AutoCloseable {
@@ -70,6 +72,11 @@ final class FakeEnvironment implements AutoCloseable {
                         release.await();
                     }
                     out.write(new ControlReply(r.id(), true, "did " + r.op()));
+                    if (r.op().equals("log")) {
+                        // as the Environment: the lines logged since come after the answer, between statuses
+                        out.write(new LogLine(1, "INFO", "robot r1 connected"));
+                        out.write(new LogLine(1, "WARNING", "closing robot r2: it disconnected"));
+                    }
                 }
             }
         } catch (IOException | InterruptedException e) {

@@ -53,6 +53,22 @@ class PanelSessionTest {
     }
 
     @Test
+    void theEnvironmentsLogLinesComeWithTheStatusesOnceFollowed() throws Exception {
+        BlockingQueue<String> lines = new LinkedBlockingQueue<>();
+        BlockingQueue<RunStatus> statuses = new LinkedBlockingQueue<>();
+        try (FakeEnvironment env = new FakeEnvironment();
+             PanelSession s = new PanelSession("127.0.0.1", env.port(), null)) {
+            s.followLog(lines::add);
+            s.poll(50, statuses::add, why -> { });
+
+            assertEquals("[step 1] robot r1 connected", lines.poll(10, TimeUnit.SECONDS));
+            assertEquals("[step 1] WARNING: closing robot r2: it disconnected", lines.poll(10, TimeUnit.SECONDS));
+            assertEquals("fake", statuses.poll(10, TimeUnit.SECONDS).world());
+            assertEquals(List.of("log"), env.requests);
+        }
+    }
+
+    @Test
     void anEnvironmentThatIsGoneFailsTheRequestSayingWhich() throws Exception {
         int port;
         try (FakeEnvironment env = new FakeEnvironment()) {
