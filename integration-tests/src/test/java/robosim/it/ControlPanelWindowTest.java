@@ -191,6 +191,49 @@ class ControlPanelWindowTest {
         }
     }
 
+    @Test
+    void attachedItShowsTheEnvironmentsLogLoadsAnotherWorldAndRestartsIt() throws Exception {
+        String why = Displays.unavailable();
+        if (why != null) {
+            System.err.println("ControlPanelWindowTest skipped: " + why);
+        }
+        assumeTrue(why == null, why);
+        Path worlds = LocalEnvironment.root().resolve("testLoadFiles/environment");
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback())) {
+            SwingUtilities.invokeAndWait(() -> {
+                window = new ControlPanelWindow(RunForm.worldsIn(worlds), null);
+                window.setVisible(true);
+                window.attach("127.0.0.1", h.viewerPort(), h.robotPort(), null);
+            });
+            await("attached", () -> uncheck(() -> log().contains("attached to the Environment")));
+            click("pause");
+            addWanderer("r1");
+            addWanderer("r2");
+            await("both robots connected", () -> connected(h, "r1") && connected(h, "r2"));
+            // the Environment's own lines, forwarded to a panel that did not start it
+            await("the Environment's log in the pane", () -> uncheck(() -> log().contains("] SessionRules: robot r1 connected")
+                    || log().contains("] RobotJoins: robot r1 connected")));
+
+            javax.swing.JComboBox<?> world = (javax.swing.JComboBox<?>) named("world");
+            SwingUtilities.invokeAndWait(() -> world.setSelectedItem(worlds.resolve("small-maze.xml").toString()));
+            mouseClick("load");
+            await("the new world waits for its robots", () -> uncheck(() -> log().contains(
+                    "load of world small-maze by control client control-panel after step 0: world small-maze (seed 1)"
+                            + " waits for its robots")));
+            await("the table shows the new world", () -> uncheck(() -> onEdt(() -> window.controls().line())
+                    .startsWith("world small-maze - step 0")));
+            assertTrue(log().contains("the robots started for the old world were disconnected"), log());
+
+            click("restart");
+            await("the Environment restarted its run", () -> uncheck(() -> log().contains(
+                    "restart: restart by control client control-panel after step 0: world small-maze")));
+
+            click("stop");
+            RunReport report = h.await(60);
+            assertEquals("stopped by control client control-panel", report.endReason());
+        }
+    }
+
     /** @return the pids the log gives for what it says was started ("started an Environment", "started robot r1") */
     private List<Long> pids(String started) throws Exception {
         List<Long> pids = new ArrayList<>();

@@ -1,5 +1,8 @@
 package robosim.panel.model;
 
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 
@@ -82,6 +85,32 @@ public record Request(String op, List<String> args) {
      */
     public static Request remove(String robot) {
         return new Request("remove", List.of(robot));
+    }
+
+    /** @return the request that runs the world again from step 0 with the same seed */
+    public static Request restart() {
+        return new Request("restart", List.of());
+    }
+
+    /**
+     * @param world the world file chosen: a file that exists here is sent as its absolute path (the
+     *              Environment takes a relative path from its own world's directory, not from the
+     *              panel's), any other as typed, for the Environment to find beside its world
+     * @return the request that runs that world in place of the run's
+     * @throws IllegalArgumentException if no world is chosen
+     */
+    public static Request load(String world) {
+        String w = world == null ? "" : world.strip();
+        if (w.isEmpty()) {
+            throw new IllegalArgumentException("Load: choose or type a world file first");
+        }
+        Path p;
+        try {
+            p = Path.of(w);
+        } catch (InvalidPathException e) {
+            throw new IllegalArgumentException("Load: '" + w + "' is not a file name: " + e.getReason());
+        }
+        return new Request("load", List.of(Files.isRegularFile(p) ? p.toAbsolutePath().normalize().toString() : w));
     }
 
     /** @return the request as {@code robosim control} takes it, for the log */

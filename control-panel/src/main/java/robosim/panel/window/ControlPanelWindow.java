@@ -50,6 +50,13 @@ public final class ControlPanelWindow extends JFrame {
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
         robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected, this::error);
+        form.load.addActionListener(e -> {
+            try {
+                controller.send(Request.load(String.valueOf(form.world.getSelectedItem())));
+            } catch (IllegalArgumentException x) {
+                error(x.getMessage());
+            }
+        });
         robots.remove.addActionListener(e -> {
             String r = robots.selected();
             if (r == null) {

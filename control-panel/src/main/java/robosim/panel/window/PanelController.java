@@ -55,7 +55,7 @@ final class PanelController implements AutoCloseable {
     private volatile String robotHost;
     private volatile int robotPort;
     private volatile int viewerPort;
-    private RunSettings lastRun;
+    private volatile RunSettings lastRun;
     private final List<RobotLaunch> launched = new CopyOnWriteArrayList<>();
 
     /**
@@ -152,9 +152,24 @@ final class PanelController implements AutoCloseable {
                 log.accept("panel: " + (failure.getCause() != null ? failure.getCause() : failure).getMessage());
             } else {
                 log.accept("panel: " + r + ": " + (reply.ok() ? "" : "refused: ") + reply.text());
+                if (reply.ok() && r.op().equals("load")) {
+                    loaded();
+                }
             }
             return null;
         });
+    }
+
+    /**
+     * Another world runs now: the robots this panel started belonged to the old one and have been
+     * disconnected, and Restart from now on restarts the loaded world in the Environment.
+     */
+    private void loaded() {
+        if (!launched.isEmpty()) {
+            log.accept("panel: the robots started for the old world were disconnected; add the new world's robots");
+        }
+        launched.clear();
+        lastRun = null;
     }
 
     /** Changes the comms settings; the settings now in force go to the log. */
@@ -233,11 +248,13 @@ final class PanelController implements AutoCloseable {
 
     /**
      * Restarts a run this panel started: stops its Environment and robots, starts them again with
-     * the same settings and programs (an attached Environment is not the panel's to restart).
+     * the same settings and programs. An Environment the panel attached to, or one that has loaded
+     * another world, is asked to {@code restart} (its robots are disconnected and must connect again).
      */
     void restart() {
         if (lastRun == null) {
-            log.accept("panel: restart: only a run this panel started can be restarted (Start one)");
+            // an Environment the panel attached to (or one that loaded another world) restarts itself
+            send(Request.restart());
             return;
         }
         List<RobotLaunch> robots = List.copyOf(launched);

@@ -29,6 +29,8 @@ public final class RunForm extends JPanel {
     final JTextField viewerPort = field("viewerPort", "0", 5);
     final JTextField bind = field("bind", "127.0.0.1", 9);
     final JButton start = new JButton("Start");
+    /** Loads the world chosen into the Environment attached to, in place of its run. */
+    final JButton load = new JButton("Load into run");
     final JTextField host = field("host", "127.0.0.1", 9);
     final JTextField attachPort = field("attachPort", "", 5);
     final JTextField attachRobotPort = field("attachRobotPort", "", 5);
@@ -54,6 +56,8 @@ public final class RunForm extends JPanel {
             world.setSelectedItem(selected.toString());
         }
         start.setName("start");
+        load.setName("load");
+        load.setToolTipText("run the world chosen in the Environment attached to, in place of its run");
         attach.setName("attach");
         JButton browse = new JButton("Browse...");
         browse.addActionListener(e -> {
@@ -91,6 +95,7 @@ public final class RunForm extends JPanel {
         run.add(new JLabel("bind"));
         run.add(bind);
         run.add(start);
+        run.add(load);
         JPanel running = new JPanel(new FlowLayout(FlowLayout.LEFT));
         running.add(new JLabel("Or attach to a running Environment: host"));
         running.add(host);

@@ -3,8 +3,11 @@ package robosim.panel.model;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -14,6 +17,31 @@ class RequestTest {
         assertEquals(List.of("pause", "resume", "stop"),
                 List.of(Request.pause().op(), Request.resume().op(), Request.stop().op()));
         assertEquals(List.of(), Request.pause().args());
+    }
+
+    @Test
+    void restartSendsTheOperationAlone() {
+        assertEquals(new Request("restart", List.of()), Request.restart());
+    }
+
+    @Test
+    void loadSendsAFileThatExistsHereAsItsAbsolutePath(@TempDir Path dir) throws Exception {
+        Path world = Files.writeString(dir.resolve("maze.xml"), "<world/>");
+
+        assertEquals(new Request("load", List.of(world.toAbsolutePath().toString())),
+                Request.load(" " + dir.resolve("./maze.xml") + " "));
+    }
+
+    @Test
+    void loadSendsANameNotFoundHereAsTypedForTheEnvironmentToFindBesideItsWorld() {
+        assertEquals(new Request("load", List.of("small-maze.xml")), Request.load("small-maze.xml"));
+    }
+
+    @Test
+    void loadRefusesAnEmptyChoice() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Request.load("  "));
+
+        assertEquals("Load: choose or type a world file first", e.getMessage());
     }
 
     @Test
