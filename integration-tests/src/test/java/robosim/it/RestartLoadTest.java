@@ -125,6 +125,28 @@ class RestartLoadTest {
             RunReport report = h.await();
             assertEquals(before, report.robots(), "the same run again, pose for pose");
             assertTrue(report.departures().isEmpty(), "the new run lost no robot: " + report.departures());
+            assertEquals(List.of(), report.absent(), "both came to the new run");
+        }
+    }
+
+    @Test
+    void aRunStoppedAfterARestartBeforeItsRobotsCameReportsThemAbsent() throws Exception {
+        try (LocalEnvironment h = new LocalEnvironment(room, 1, ServerOptions.loopback());
+             ControlPeer control = new ControlPeer(h.viewerPort(), "ctl")) {
+            control.send("pause");
+            List<Future<String>> first = start(h, "r1", "r2");
+            confirmed("paused after step 0", control.reply());
+            confirmed("ran 2 steps; paused after step 2", control.ask("step", "2"));
+            confirmed("restart by control client ctl after step 2: world empty-room (seed 1) waits for its robots",
+                    control.ask("restart"));
+            for (Future<String> bye : first) {
+                bye.get(30, TimeUnit.SECONDS);
+            }
+
+            confirmed("stopped after step 0", control.ask("stop"));
+            RunReport report = h.await();
+            assertEquals(List.of("r1", "r2"), report.absent());
+            assertTrue(report.departures().isEmpty(), report.departures().toString());
         }
     }
 

@@ -258,10 +258,14 @@ final class EnvCommand implements Callable<Integer> {
     }
 
     /**
-     * @return {@code ran to the end}, or how the robot went before it: {@code left}, {@code dropped}
+     * @return {@code ran to the end}, {@code never connected to this run}, or how the robot went
+     *         before the end: {@code left}, {@code dropped}
      *         or {@code lost}, the step and the reason
      */
     static String howItEnded(RunReport report, String robot) {
+        if (report.absent().contains(robot)) {
+            return "never connected to this run";
+        }
         return report.departure(robot).map(Departure::describe).orElse("ran to the end");
     }
 

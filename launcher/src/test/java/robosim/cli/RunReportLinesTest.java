@@ -64,4 +64,13 @@ class RunReportLinesTest {
                         + " step 3)"),
                 out.toString().lines().toList());
     }
+
+    @Test
+    void aRobotThatNeverConnectedToTheRunSaysSoRatherThanThatItRanToTheEnd() {
+        RunReport report = new RunReport(0, 0, "stopped by control client ctl", List.of(at("r1", 1000), at("r2", 2000)),
+                0, null, 0, List.of(), List.of(), List.of("r2"));
+
+        assertEquals("never connected to this run", EnvCommand.howItEnded(report, "r2"));
+        assertEquals("ran to the end", EnvCommand.howItEnded(report, "r1"));
+    }
 }

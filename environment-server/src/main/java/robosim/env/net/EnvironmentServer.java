@@ -134,6 +134,7 @@ public final class EnvironmentServer implements AutoCloseable {
         long started = System.nanoTime();
         String reason = loop();
         List<Departure> departures = rules.departures();
+        List<String> absent = absent(departures);
         long wall = System.nanoTime() - started;
         listeners.end(Bye.DONE + reason);
         listeners.close();
@@ -149,7 +150,21 @@ public final class EnvironmentServer implements AutoCloseable {
             summaries.add(sim().summary(name));
         }
         return new RunReport(sim().stepCount(), sim().timeMs(), reason, summaries, wall, sim().find(), connected,
-                departures, rules.joins());
+                departures, rules.joins(), absent);
+    }
+
+    /**
+     * @return the robots not connected at the end that never went either: they never came to this
+     *         run (an open world's, or the robots of a run that a restart or load began)
+     */
+    private List<String> absent(List<Departure> departures) {
+        List<String> absent = new ArrayList<>();
+        for (String name : sim().robotNames()) {
+            if (!rules.connectedRobots().containsKey(name) && departures.stream().noneMatch(d -> d.robot().equals(name))) {
+                absent.add(name);
+            }
+        }
+        return absent;
     }
 
     /** The robots are there: the run starts, and its world and step 0 go to the listeners. */

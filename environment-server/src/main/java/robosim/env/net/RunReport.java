@@ -22,14 +22,36 @@ import robosim.env.core.RobotSummary;
  *                  went, each with the step and the reason; a robot that came back may be in it again
  * @param joins     the robots that joined after the run started (late, back, or spawned in an open
  *                  world), in the order they came
+ * @param absent    the robots of the world that never connected to this run (an open world's, or a
+ *                  run's after a restart or load that ended before they came), in the world's order
  */
 public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos,
-                        Find find, long connectedNanoTime, List<Departure> departures, List<Join> joins) {
+                        Find find, long connectedNanoTime, List<Departure> departures, List<Join> joins,
+                        List<String> absent) {
     /** Copies the lists so the record stays immutable. */
     public RunReport {
         robots = List.copyOf(robots);
         departures = List.copyOf(departures);
         joins = List.copyOf(joins);
+        absent = List.copyOf(absent);
+    }
+
+    /**
+     * A report in which every robot of the world connected at some time.
+     *
+     * @param steps     steps simulated
+     * @param timeMs    simulated time, ms
+     * @param endReason why it ended
+     * @param robots    every robot at the end, in the world file's order
+     * @param wallNanos wall-clock time the steps took
+     * @param find      the confirmed find of the world's gold, or null
+     * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected, or 0
+     * @param departures the robots that went before the end, in the order they went
+     * @param joins     the robots that joined after the run started, in the order they came
+     */
+    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
+                     long connectedNanoTime, List<Departure> departures, List<Join> joins) {
+        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, departures, joins, List.of());
     }
 
     /**
