@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -19,10 +20,14 @@ import robosim.cli.Main;
 import robosim.env.net.ServerOptions;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
+import robosim.protocol.LogLine;
 import robosim.protocol.Message;
 import robosim.protocol.RunStatus;
 
-/** The {@code status} control request on a live Environment in world {@code empty-room.xml} (robots r1 and r2). */
+/**
+ * The control requests that change nothing, {@code status} and {@code log}, on a live Environment in
+ * world {@code empty-room.xml} (robots r1 and r2).
+ */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)
 class RunStatusTest {
     private final ExecutorService threads = Executors.newCachedThreadPool(r -> {
@@ -120,6 +125,49 @@ class RunStatusTest {
 
             assertFalse(r.ok());
             assertEquals("status takes 0 arguments (status), got 1", r.text());
+        }
+    }
+
+    @Test
+    void aFollowerIsSentTheLinesOfRobotsJoiningAndOfRequestsCarriedOut() throws Exception {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback());
+             ControlPeer follower = new ControlPeer(h.viewerPort(), "panel");
+             ControlPeer control = new ControlPeer(h.viewerPort(), "ctl")) {
+            ControlReply answer = follower.ask("log");
+            assertTrue(answer.ok(), answer.text());
+            assertEquals("following the Environment's log from step 0", answer.text());
+            control.send("pause");
+            threads.submit(new ScriptedRobot(h.robotPort(), "r1", h.sim.world().robots().get(0).parameters(), false));
+            threads.submit(new ScriptedRobot(h.robotPort(), "r2", h.sim.world().robots().get(1).parameters(), false));
+            assertEquals("paused after step 0", control.reply().text());
+            control.ask("remove", "r2");
+
+            List<String> lines = new ArrayList<>();
+            while (lines.stream().noneMatch(l -> l.contains("removed robot r2"))) {
+                Message m = follower.peer.read();
+                if (m instanceof LogLine l) {
+                    lines.add(l.level() + " " + l.text());
+                }
+            }
+
+            assertTrue(lines.stream().anyMatch(l -> l.startsWith("INFO ") && l.contains("robot r1 connected")), lines::toString);
+            assertTrue(lines.stream().anyMatch(l -> l.contains("control client ctl removed robot r2 after step 0")),
+                    lines::toString);
+        }
+    }
+
+    @Test
+    void aClientThatDoesNotAskIsSentNoLogLines() throws Exception {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback());
+             ControlPeer control = new ControlPeer(h.viewerPort(), "ctl")) {
+            control.send("pause");
+            threads.submit(new ScriptedRobot(h.robotPort(), "r1", h.sim.world().robots().get(0).parameters(), false));
+            threads.submit(new ScriptedRobot(h.robotPort(), "r2", h.sim.world().robots().get(1).parameters(), false));
+
+            // reply() fails on any message but an answer, a log line among them
+            assertEquals("paused after step 0", control.reply().text());
+            assertEquals("ran 2 steps; paused after step 2", control.ask("step", "2").text());
+            assertFalse(control.ask("log", "now").ok());
         }
     }
 }
