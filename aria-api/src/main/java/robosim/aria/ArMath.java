@@ -1,6 +1,9 @@
 package robosim.aria;
 
-/** ARIA's angle arithmetic, in degrees. */
+/**
+ * ARIA's arithmetic for robot programs: angles in degrees, distances, rounding. Each rule is ARIA's
+ * as {@code ArMath} in ARIA's {@code include/Aria/ariaUtil.h} states it.
+ */
 public final class ArMath {
     private ArMath() {
     }
@@ -15,6 +18,15 @@ public final class ArMath {
         }
         double a = Math.IEEEremainder(angle, 360.0);
         return a <= -180.0 ? a + 360.0 : a;
+    }
+
+    /**
+     * @param ang1 degrees
+     * @param ang2 degrees
+     * @return {@code fixAngle(ang1 + ang2)}, in (-180, 180]
+     */
+    public static double addAngle(double ang1, double ang2) {
+        return fixAngle(ang1 + ang2);
     }
 
     /**
@@ -46,5 +58,49 @@ public final class ArMath {
             return t > s || t < e;
         }
         return false;
+    }
+
+    /**
+     * @param deg an angle in degrees
+     * @return the angle in radians
+     */
+    public static double degToRad(double deg) {
+        return deg * Math.PI / 180.0;
+    }
+
+    /**
+     * @param rad an angle in radians
+     * @return the angle in degrees
+     */
+    public static double radToDeg(double rad) {
+        return rad * 180.0 / Math.PI;
+    }
+
+    /**
+     * @param x1 the first point's x
+     * @param y1 the first point's y
+     * @param x2 the second point's x
+     * @param y2 the second point's y
+     * @return the straight-line distance between the two points
+     */
+    public static double distanceBetween(double x1, double y1, double x2, double y2) {
+        return Math.hypot(x1 - x2, y1 - y2);
+    }
+
+    /**
+     * ARIA's rounding: 0.49 is added and the result floored, so that a value just under one half
+     * goes down and one half itself goes down too ({@code roundInt(2.5)} is 2, {@code roundInt(-2.5)}
+     * is -3, {@code roundInt(0.51)} is 1); the result is held within an int's range. Programs that
+     * turn readings into whole millimetres rely on this rule.
+     *
+     * @param val a value
+     * @return the int ARIA rounds it to; 0 for NaN
+     */
+    public static int roundInt(double val) {
+        double v = Math.floor(val + 0.49);
+        if (Double.isNaN(v)) {
+            return 0;
+        }
+        return v >= Integer.MAX_VALUE ? Integer.MAX_VALUE : v <= Integer.MIN_VALUE ? Integer.MIN_VALUE : (int) v;
     }
 }
