@@ -47,6 +47,7 @@ public class ArRobot extends AbstractRobot {
     private volatile double moveDistance;
     private volatile Double headingTarget;
     private volatile double maxTransVel;
+    private final DriveLimits driveLimits = new DriveLimits();
     private volatile double maxRotVel;
 
     /**
@@ -341,6 +342,87 @@ public class ArRobot extends AbstractRobot {
     /** @return the translational limit, mm/s */
     public double getMaxTransVel() {
         return maxTransVel;
+    }
+
+    /**
+     * ARIA's name for the translational velocity limit: as {@link #setMaxTransVel}, except that a
+     * value of 0 or less is ignored with a log line, as ARIA's {@code setTransVelMax} ignores it (the
+     * original RoboSim's {@code setMaxTransVel} sets a zero limit).
+     *
+     * @param vel the new limit, mm/s; capped at the parameter file's {@code MaxVelocity}
+     */
+    public void setTransVelMax(double vel) {
+        if (!DriveLimits.ignoresVelocity("setTransVelMax", vel, getName())) {
+            setMaxTransVel(vel);
+        }
+    }
+
+    /** @return the translational velocity limit, mm/s (ARIA's name for {@link #getMaxTransVel}) */
+    public double getTransVelMax() {
+        return getMaxTransVel();
+    }
+
+    /**
+     * ARIA's name for the rotational velocity limit; a value of 0 or less is ignored with a log line.
+     *
+     * @param vel the new limit, deg/s; capped at the parameter file's {@code MaxRVelocity}
+     */
+    public void setRotVelMax(double vel) {
+        if (!DriveLimits.ignoresVelocity("setRotVelMax", vel, getName())) {
+            setMaxRotVel(vel);
+        }
+    }
+
+    /** @return the rotational velocity limit, deg/s (ARIA's name for {@link #getMaxRotVel}) */
+    public double getRotVelMax() {
+        return getMaxRotVel();
+    }
+
+    /** @param acc the translational acceleration, mm/s²; 0 or less is ignored, as in ARIA */
+    public void setTransAccel(double acc) {
+        setDriveLimit(Command.DriveLimit.TRANS_ACCEL, acc);
+    }
+
+    /** @param decel the translational deceleration, mm/s²; 0 or less is ignored, as in ARIA */
+    public void setTransDecel(double decel) {
+        setDriveLimit(Command.DriveLimit.TRANS_DECEL, decel);
+    }
+
+    /** @param acc the rotational acceleration, deg/s²; 0 or less is ignored, as in ARIA */
+    public void setRotAccel(double acc) {
+        setDriveLimit(Command.DriveLimit.ROT_ACCEL, acc);
+    }
+
+    /** @param decel the rotational deceleration, deg/s²; 0 or less is ignored, as in ARIA */
+    public void setRotDecel(double decel) {
+        setDriveLimit(Command.DriveLimit.ROT_DECEL, decel);
+    }
+
+    /** @return the translational acceleration in force, mm/s² (the parameter file's until set) */
+    public double getTransAccel() {
+        return driveLimits.get(Command.DriveLimit.TRANS_ACCEL, getParameters());
+    }
+
+    /** @return the translational deceleration in force, mm/s² (the parameter file's until set) */
+    public double getTransDecel() {
+        return driveLimits.get(Command.DriveLimit.TRANS_DECEL, getParameters());
+    }
+
+    /** @return the rotational acceleration in force, deg/s² (the parameter file's until set) */
+    public double getRotAccel() {
+        return driveLimits.get(Command.DriveLimit.ROT_ACCEL, getParameters());
+    }
+
+    /** @return the rotational deceleration in force, deg/s² (the parameter file's until set) */
+    public double getRotDecel() {
+        return driveLimits.get(Command.DriveLimit.ROT_DECEL, getParameters());
+    }
+
+    private void setDriveLimit(Command.DriveLimit limit, double value) {
+        Command.SetDriveLimit c = driveLimits.set(limit, value, getName());
+        if (c != null) {
+            request(c);
+        }
     }
 
     /** @return the rotational limit, deg/s */
