@@ -48,6 +48,7 @@ public class ArRobot extends AbstractRobot {
     private volatile Double headingTarget;
     private volatile double maxTransVel;
     private final DriveLimits driveLimits = new DriveLimits();
+    private final Odometer odometer = new Odometer();
     private volatile double maxRotVel;
 
     /**
@@ -95,6 +96,7 @@ public class ArRobot extends AbstractRobot {
             counter++;
             RobotState s = response.state();
             sonar.update(s.sonar(), new ArPose(s.x(), s.y(), s.th()), counter, s.timeMs());
+            odometer.update(s);
             sensorInterpTasks.runAll(getName());
             userTasks.runAll(getName());
         } finally {
@@ -513,6 +515,44 @@ public class ArRobot extends AbstractRobot {
     /** @return whether a collision stopped the robot's last motion */
     public boolean isStalled() {
         return state().stalled();
+    }
+
+    /**
+     * @return the distance travelled since the program connected, mm: ARIA's virtual odometer, the
+     *         sum over the cycles of the straight line between one odometry pose and the next
+     */
+    public double getOdometerDistance() {
+        return odometer.distance();
+    }
+
+    /** @return the degrees turned since the program connected: the sum of each cycle's absolute heading change */
+    public double getOdometerDegrees() {
+        return odometer.degrees();
+    }
+
+    /** @return the simulated seconds since the program connected, whole */
+    public long getOdometerTime() {
+        return odometer.seconds();
+    }
+
+    /** @return the distance travelled since {@link #resetTripOdometer()} (or since connecting), mm */
+    public double getTripOdometerDistance() {
+        return odometer.tripDistance();
+    }
+
+    /** @return the degrees turned since {@link #resetTripOdometer()} (or since connecting) */
+    public double getTripOdometerDegrees() {
+        return odometer.tripDegrees();
+    }
+
+    /** @return the simulated seconds since {@link #resetTripOdometer()} (or since connecting), whole */
+    public long getTripOdometerTime() {
+        return odometer.tripSeconds();
+    }
+
+    /** Starts the trip odometer again: its distance, degrees and time count from now. */
+    public void resetTripOdometer() {
+        odometer.resetTrip();
     }
 
     /** @return whether the robot is stopped: below 4 mm/s and 1 deg/s, ARIA's thresholds */
