@@ -49,6 +49,10 @@ public class ArRobot extends AbstractRobot {
     private volatile double maxTransVel;
     private final DriveLimits driveLimits = new DriveLimits();
     private final Odometer odometer = new Odometer();
+    private volatile double moveDoneDist = DEFAULT_MOVE_DONE;
+    private volatile double headingDoneDiff = DEFAULT_HEADING_DONE;
+    private volatile double stoppedVel = STOPPED_VEL;
+    private volatile double stoppedRotVel = STOPPED_ROT_VEL;
     private volatile double maxRotVel;
 
     /**
@@ -432,13 +436,14 @@ public class ArRobot extends AbstractRobot {
         return maxRotVel;
     }
 
-    /** @return whether the last move is done, within {@value #DEFAULT_MOVE_DONE} mm */
+    /** @return whether the last move is done, within {@link #getMoveDoneDist()} mm */
     public boolean isMoveDone() {
         return isMoveDone(0);
     }
 
     /**
-     * @param delta how close counts as done, mm; 0 means {@value #DEFAULT_MOVE_DONE}
+     * @param delta how close counts as done, mm; 0 (below 0.001 either way, as in ARIA) means
+     *              {@link #getMoveDoneDist()}
      * @return true if no move is active, else whether the robot is at least |distance| − delta from
      *         where the move started
      */
@@ -447,17 +452,18 @@ public class ArRobot extends AbstractRobot {
         if (start == null) {
             return true;
         }
-        double d = delta <= 0 ? DEFAULT_MOVE_DONE : delta;
+        double d = Math.abs(delta) < 0.001 ? moveDoneDist : delta;
         return start.findDistanceTo(getPose()) >= Math.abs(moveDistance) - d;
     }
 
-    /** @return whether the heading is reached, within {@value #DEFAULT_HEADING_DONE}° */
+    /** @return whether the heading is reached, within {@link #getHeadingDoneDiff()}° */
     public boolean isHeadingDone() {
         return isHeadingDone(0);
     }
 
     /**
-     * @param delta how close counts as done, degrees; 0 means {@value #DEFAULT_HEADING_DONE}
+     * @param delta how close counts as done, degrees; 0 (below 0.001 either way, as in ARIA) means
+     *              {@link #getHeadingDoneDiff()}
      * @return true if no heading command is active, else whether |heading − target| ≤ delta
      */
     public boolean isHeadingDone(double delta) {
@@ -465,8 +471,28 @@ public class ArRobot extends AbstractRobot {
         if (target == null) {
             return true;
         }
-        double d = delta <= 0 ? DEFAULT_HEADING_DONE : delta;
+        double d = Math.abs(delta) < 0.001 ? headingDoneDiff : delta;
         return Math.abs(ArMath.subAngle(getTh(), target)) <= d;
+    }
+
+    /** @param dist how close to a move's distance {@link #isMoveDone()} counts as done, mm (ARIA's default 40) */
+    public void setMoveDoneDist(double dist) {
+        moveDoneDist = dist;
+    }
+
+    /** @return how close to a move's distance {@link #isMoveDone()} counts as done, mm */
+    public double getMoveDoneDist() {
+        return moveDoneDist;
+    }
+
+    /** @param degrees how close to a heading {@link #isHeadingDone()} counts as done (ARIA's default 3) */
+    public void setHeadingDoneDiff(double degrees) {
+        headingDoneDiff = degrees;
+    }
+
+    /** @return how close to a heading {@link #isHeadingDone()} counts as done, degrees */
+    public double getHeadingDoneDiff() {
+        return headingDoneDiff;
     }
 
     // ---- state ----
@@ -555,9 +581,33 @@ public class ArRobot extends AbstractRobot {
         odometer.resetTrip();
     }
 
-    /** @return whether the robot is stopped: below 4 mm/s and 1 deg/s, ARIA's thresholds */
+    /**
+     * @return whether the robot is stopped: at most the stopped velocities ({@link #setStoppedVels},
+     *         ARIA's 4 mm/s and 1 deg/s by default)
+     */
     public boolean isStopped() {
-        return Math.abs(getVel()) <= STOPPED_VEL && Math.abs(getRotVel()) <= STOPPED_ROT_VEL;
+        return isStopped(0, 0);
+    }
+
+    /**
+     * @param vel    the translational speed that counts as stopped, mm/s; below 0.001 means the
+     *               robot's own ({@link #setStoppedVels}), as in ARIA
+     * @param rotVel the rotational speed that counts as stopped, deg/s; below 0.001 likewise
+     * @return whether |velocity| and |rotational velocity| are at most these
+     */
+    public boolean isStopped(double vel, double rotVel) {
+        double v = vel < 0.001 ? stoppedVel : vel;
+        double r = rotVel < 0.001 ? stoppedRotVel : rotVel;
+        return Math.abs(getVel()) <= v && Math.abs(getRotVel()) <= r;
+    }
+
+    /**
+     * @param vel    the translational speed {@link #isStopped()} counts as stopped, mm/s
+     * @param rotVel the rotational speed it counts as stopped, deg/s
+     */
+    public void setStoppedVels(double vel, double rotVel) {
+        stoppedVel = vel;
+        stoppedRotVel = rotVel;
     }
 
     /** @return the radius of the circle enclosing the robot, mm */

@@ -43,4 +43,10 @@ final class Cycles {
         robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, x, y, th,
                 0, 0, 0, 0, false, sonar, 0, laser, null)));
     }
+
+    /** One cycle at the origin, driving at these velocities. */
+    static void cycleMoving(ArRobot robot, long timeMs, double vel, double rotVel) {
+        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, 0, 0, 0,
+                vel, rotVel, vel, vel, false, NONE, 0, NONE, null)));
+    }
 }
