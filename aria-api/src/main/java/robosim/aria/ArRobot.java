@@ -88,6 +88,15 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
+     * The original RoboSim's name for {@link #blockingConnect()}.
+     *
+     * @return whether the robot connected
+     */
+    public boolean blocking_connect() {
+        return blockingConnect();
+    }
+
+    /**
      * One robot cycle, run as each step's state arrives (while the robot's code is yielded): the
      * counter goes up, the sonar readings are taken, then the sensor-interpretation tasks and the
      * user tasks run, all under the robot's lock, as ARIA's cycle does.

@@ -304,12 +304,19 @@ public abstract class AbstractRobot {
         return connectionError;
     }
 
-    /** Leaves the run. */
-    public void disconnect() {
+    /**
+     * Leaves the run.
+     *
+     * @return true if the robot was connected and has now left; false if it was not connected (as
+     *         ARIA's {@code ArRobot::disconnect} answers)
+     */
+    public boolean disconnect() {
         HardwareSimulator hw = hardware;
         if (hw != null && !hw.isEnded()) {
             hw.disconnect("the robot's program disconnected");
+            return true;
         }
+        return false;
     }
 
     /**
