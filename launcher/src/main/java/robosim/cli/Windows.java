@@ -3,8 +3,8 @@ package robosim.cli;
 import java.awt.AWTError;
 import java.awt.HeadlessException;
 import java.io.PrintWriter;
-import java.util.Locale;
 import javax.swing.SwingUtilities;
+import robosim.viewer.window.Displays;
 import robosim.viewer.window.ViewerPane;
 import robosim.viewer.window.ViewerWindow;
 
@@ -28,18 +28,12 @@ final class Windows {
      * @return true if a window can be opened; false once the reason is written to {@code err}
      */
     static boolean prepare(PrintWriter err, String command) {
-        String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
-        boolean x11 = !os.contains("win") && !os.contains("mac");
-        if (x11 && isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))) {
+        if (!Displays.displayNamed()) {
             err.println(command + ": --window needs a display, and DISPLAY is not set (draw PNG files with --png-dir instead)");
             return false;
         }
         System.setProperty("java.awt.headless", "false");
         return true;
-    }
-
-    private static boolean isBlank(String s) {
-        return s == null || s.isBlank();
     }
 
     /**

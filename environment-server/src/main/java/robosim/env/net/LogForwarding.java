@@ -88,6 +88,9 @@ final class LogForwarding implements AutoCloseable {
      * @param step the last step run
      */
     void forward(long step) {
+        if (queue.isEmpty() && dropped.get() == 0) {
+            return; // the step loop calls this at every wake-up: nothing to do is the common case
+        }
         followers.removeIf(Connection::isClosed);
         int lost = dropped.getAndSet(0);
         List<LogLine> lines = new ArrayList<>();

@@ -12,6 +12,7 @@ import java.awt.geom.Rectangle2D;
 import java.util.function.Supplier;
 import javax.swing.JComponent;
 import robosim.remote.Readings;
+import robosim.viewer.window.PolarFrame;
 
 /**
  * The robot's readings seen from the robot, as the viewer's sensor plot draws them: the robot in the
@@ -21,9 +22,9 @@ import robosim.remote.Readings;
 final class PolarPlot extends JComponent {
     private static final long serialVersionUID = 1L;
     /** The colour of the sonar rays. */
-    static final Color SONAR = new Color(31, 119, 180);
+    static final Color SONAR = PolarFrame.SONAR;
     /** The colour of the laser hits. */
-    static final Color LASER = new Color(40, 40, 40);
+    static final Color LASER = PolarFrame.LASER;
     private static final Color HEAT = new Color(214, 39, 40);
     private static final Color RING = new Color(200, 200, 200);
 
@@ -45,52 +46,34 @@ final class PolarPlot extends JComponent {
             g.fill(new Rectangle2D.Double(0, 0, w, h));
             Readings r = readings.get();
             double range = r == null || !(r.range() > 0) ? 5000 : r.range();
-            double scale = (Math.min(w, h) / 2.0 - 6) / range;
-            double cx = w / 2.0;
-            double cy = h / 2.0;
-            g.setColor(RING);
-            g.draw(new Ellipse2D.Double(cx - range * scale, cy - range * scale, 2 * range * scale, 2 * range * scale));
-            g.setColor(Color.DARK_GRAY);
-            g.drawString((int) range + " mm", 4, 14);
+            PolarFrame f = PolarFrame.paint(g, w, h, range, RING, Color.DARK_GRAY);
             if (r != null) {
                 g.setColor(LASER);
                 for (Readings.Point p : r.laser()) {
-                    double[] at = at(p, cx, cy, scale);
-                    g.fill(new Rectangle2D.Double(at[0] - 1, at[1] - 1, 2.5, 2.5));
+                    f.hit(g, p.x(), p.y(), 2.5);
                 }
                 g.setColor(SONAR);
-                g.setStroke(new BasicStroke(1.5f));
                 for (Readings.Ray ray : r.sonar()) {
-                    double[] from = at(ray.from(), cx, cy, scale);
-                    double[] to = at(ray.to(), cx, cy, scale);
-                    g.draw(new Line2D.Double(from[0], from[1], to[0], to[1]));
-                    g.fill(new Ellipse2D.Double(to[0] - 2, to[1] - 2, 4, 4));
+                    f.ray(g, ray.from().x(), ray.from().y(), ray.to().x(), ray.to().y());
                 }
-                drawHeat(g, r.heat(), cx, cy, scale);
+                drawHeat(g, f, r.heat());
             }
-            g.setColor(Color.BLACK);
-            g.fill(new Ellipse2D.Double(cx - 4, cy - 4, 8, 8));
-            g.setStroke(new BasicStroke(2f));
-            g.draw(new Line2D.Double(cx, cy, cx, cy - 14));
+            f.robot(g, Color.BLACK);
         } finally {
             g.dispose();
         }
     }
 
-    private static void drawHeat(Graphics2D g, Readings.Heat heat, double cx, double cy, double scale) {
+    private static void drawHeat(Graphics2D g, PolarFrame f, Readings.Heat heat) {
         if (heat == null || heat.intensity() <= 0) {
             return;
         }
         double a = Math.toRadians(heat.bearing());
-        double[] to = at(new Readings.Point(heat.distance() * Math.cos(a), heat.distance() * Math.sin(a)), cx, cy, scale);
+        double[] centre = f.at(0, 0);
+        double[] to = f.at(heat.distance() * Math.cos(a), heat.distance() * Math.sin(a));
         g.setColor(HEAT);
         g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 1f, new float[] {6f, 4f}, 0f));
-        g.draw(new Line2D.Double(cx, cy, to[0], to[1]));
+        g.draw(new Line2D.Double(centre[0], centre[1], to[0], to[1]));
         g.fill(new Ellipse2D.Double(to[0] - 5, to[1] - 5, 10, 10));
-    }
-
-    /** A robot-frame point (x forward, y left) on the plot: forward is up, left is left. */
-    private static double[] at(Readings.Point p, double cx, double cy, double scale) {
-        return new double[] {cx - p.y() * scale, cy - p.x() * scale};
     }
 }

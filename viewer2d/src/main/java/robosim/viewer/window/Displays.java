@@ -18,9 +18,7 @@ public final class Displays {
      *         get a display
      */
     public static String unavailable() {
-        String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
-        boolean x11 = !os.contains("win") && !os.contains("mac");
-        if (x11 && isBlank(System.getenv("DISPLAY")) && isBlank(System.getenv("WAYLAND_DISPLAY"))) {
+        if (!displayNamed()) {
             return "DISPLAY is not set: run under a display, e.g. xvfb-run -a mvn -B verify";
         }
         if (Boolean.getBoolean("java.awt.headless")) {
@@ -35,6 +33,16 @@ public final class Displays {
             return "display " + System.getenv("DISPLAY") + " cannot be opened: " + e.getMessage();
         }
         return null;
+    }
+
+    /**
+     * @return false on X11 or Wayland systems when neither {@code DISPLAY} nor {@code WAYLAND_DISPLAY}
+     *         names a display (where no window can open); true elsewhere
+     */
+    public static boolean displayNamed() {
+        String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
+        boolean x11 = !os.contains("win") && !os.contains("mac");
+        return !x11 || !isBlank(System.getenv("DISPLAY")) || !isBlank(System.getenv("WAYLAND_DISPLAY"));
     }
 
     private static boolean isBlank(String s) {
