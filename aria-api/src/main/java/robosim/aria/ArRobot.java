@@ -54,6 +54,7 @@ public class ArRobot extends AbstractRobot {
     private volatile double stoppedVel = STOPPED_VEL;
     private volatile double stoppedRotVel = STOPPED_ROT_VEL;
     private volatile double maxRotVel;
+    private final ActionDriver actions = new ActionDriver(this);
 
     /**
      * @param name      the robot's name in the world
@@ -98,8 +99,9 @@ public class ArRobot extends AbstractRobot {
 
     /**
      * One robot cycle, run as each step's state arrives (while the robot's code is yielded): the
-     * counter goes up, the sonar readings are taken, then the sensor-interpretation tasks and the
-     * user tasks run, all under the robot's lock, as ARIA's cycle does.
+     * counter goes up, the sonar readings are taken, then the sensor-interpretation tasks, the
+     * actions (resolved and sent, see {@link #addAction}) and the user tasks run, in ARIA's task
+     * order, all under the robot's lock, as ARIA's cycle does.
      */
     @Override
     protected void responded(RobotSensorResponse response) {
@@ -111,6 +113,7 @@ public class ArRobot extends AbstractRobot {
             sonar.update(s.sonar(), new ArPose(s.x(), s.y(), s.th()), counter, s.timeMs());
             odometer.update(s);
             sensorInterpTasks.runAll(getName());
+            actions.cycle(s.timeMs());
             userTasks.runAll(getName());
         } finally {
             lock.unlock();
@@ -223,6 +226,99 @@ public class ArRobot extends AbstractRobot {
         }
     }
 
+    // ---- actions ----
+
+    /**
+     * Adds an action, fired each cycle by the resolver (ARIA's {@code addAction}): higher priorities
+     * fire first and get the strength they want; see {@link ArPriorityResolver}. Actions drive the
+     * robot only while no direct motion command holds it: a direct command (setVel, move, setRotVel,
+     * setHeading, setVel2, stop) takes its channel from the actions until {@link #clearDirectMotion()}
+     * (or for {@link #setDirectMotionPrecedenceTime} ms), as in ARIA.
+     *
+     * @param action   the action; its robot becomes this one
+     * @param priority its priority (ARIA's examples use 0..100)
+     * @return false if the action is null
+     */
+    public boolean addAction(ArAction action, int priority) {
+        return actions.add(action, priority);
+    }
+
+    /** @param action an action to remove @return whether it was there */
+    public boolean remAction(ArAction action) {
+        return actions.remove(action);
+    }
+
+    /** @param actionName the name of an action to remove (the one of lowest priority) @return whether one was there */
+    public boolean remAction(String actionName) {
+        return actions.remove(actionName);
+    }
+
+    /** @param actionName an action's name @return the action of that name with the lowest priority, or null */
+    public ArAction findAction(String actionName) {
+        return actions.find(actionName);
+    }
+
+    /** @return the actions with their priorities, in firing order (highest priority first) */
+    public List<ArResolver.Entry> getActionList() {
+        return actions.entries();
+    }
+
+    /** Deactivates every action of the robot (they stay added). */
+    public void deactivateActions() {
+        actions.deactivateAll();
+    }
+
+    /** @param resolver the resolver that combines the actions (an {@link ArPriorityResolver} by default) */
+    public void setResolver(ArResolver resolver) {
+        actions.setResolver(java.util.Objects.requireNonNull(resolver, "resolver"));
+    }
+
+    /** @return the resolver that combines the actions */
+    public ArResolver getResolver() {
+        return actions.resolver();
+    }
+
+    /** @param on whether each cycle logs every action's desire (ARIA's {@code setLogActions}) */
+    public void setLogActions(boolean on) {
+        actions.setLogActions(on);
+    }
+
+    /** @return what the actions wanted at the last cycle, combined (a copy) */
+    public ArActionDesired getActionDesired() {
+        return actions.lastDesired();
+    }
+
+    /**
+     * Gives motion back to the actions after direct motion commands, and forgets the actions' last
+     * values so that what they want is sent again (ARIA's {@code clearDirectMotion}).
+     */
+    public void clearDirectMotion() {
+        actions.clearDirectMotion();
+    }
+
+    /**
+     * @param ms how long a direct motion command keeps its channel from the actions, simulated ms;
+     *           0 (ARIA's default) means until {@link #clearDirectMotion()}
+     */
+    public void setDirectMotionPrecedenceTime(int ms) {
+        actions.setPrecedenceMs(ms);
+    }
+
+    /** @return how long a direct motion command keeps its channel from the actions, ms; 0 means until cleared */
+    public long getDirectMotionPrecedenceTime() {
+        return actions.precedenceMs();
+    }
+
+    /** @return whether a direct motion command holds translation or rotation now */
+    public boolean isDirectMotion() {
+        long now = simulatedMs();
+        return actions.transDirect(now) || actions.rotDirect(now);
+    }
+
+    private long simulatedMs() {
+        return state().timeMs();
+    }
+
     // ---- range devices ----
 
     /** @param device a range device to attach; its robot becomes this one */
@@ -271,6 +367,7 @@ public class ArRobot extends AbstractRobot {
         moveStart = getPose();
         moveDistance = distance;
         request(move);
+        actions.directTrans(simulatedMs());
     }
 
     /** Translational and rotational velocity to zero at once. */
@@ -278,6 +375,7 @@ public class ArRobot extends AbstractRobot {
         moveStart = null;
         headingTarget = null;
         request(new Command.Stop());
+        actions.stopped(simulatedMs());
     }
 
     /**
@@ -288,6 +386,7 @@ public class ArRobot extends AbstractRobot {
         Command.SetVel vel = new Command.SetVel(Math.rint(velocity));
         moveStart = null;
         request(vel);
+        actions.directTrans(simulatedMs());
     }
 
     /**
@@ -298,6 +397,7 @@ public class ArRobot extends AbstractRobot {
         Command.SetRotVel rotVel = new Command.SetRotVel(velocity);
         headingTarget = null;
         request(rotVel);
+        actions.directRot(simulatedMs());
     }
 
     /**
@@ -312,6 +412,8 @@ public class ArRobot extends AbstractRobot {
         moveStart = null;
         headingTarget = null;
         request(vel2);
+        actions.directTrans(simulatedMs());
+        actions.directRot(simulatedMs());
     }
 
     /**
@@ -322,6 +424,7 @@ public class ArRobot extends AbstractRobot {
         Command.SetHeading turn = new Command.SetHeading(heading);
         headingTarget = ArMath.fixAngle(heading);
         request(turn);
+        actions.directRot(simulatedMs());
     }
 
     /**
@@ -332,6 +435,7 @@ public class ArRobot extends AbstractRobot {
         Command.SetDeltaHeading turn = new Command.SetDeltaHeading(delta);
         headingTarget = ArMath.fixAngle(getTh() + delta);
         request(turn);
+        actions.directRot(simulatedMs());
     }
 
     /**
