@@ -12,6 +12,10 @@ RobotLengthFront 313   ; mm ahead of the turning centre
 RobotLengthRear 313    ; mm behind it
 MaxVelocity 1200       ; mm/s, the fastest the robot ever drives
 MaxRVelocity 300       ; deg/s, the fastest it ever turns
+FrontBumpers          true     ; a front bump ring (RoboSim's bodies have one)
+NumFrontBumpers       5        ; number of front bumpers
+RearBumpers           true     ; a rear bump ring (RoboSim's bodies have one)
+NumRearBumpers        5        ; number of rear bumpers
 
 Section Conversion factors
 ; firmware units to ARIA's: what a Pioneer protocol server speaks

@@ -17,6 +17,10 @@ TransDecel            300      ; translational deceleration, mm/s/s
 RotAccel              100      ; rotational acceleration, deg/s/s
 RotDecel              100      ; rotational deceleration, deg/s/s
 DiffConvFactor        0.0034   ; wheel speed difference to rad/s
+FrontBumpers          true     ; a front bump ring (RoboSim's bodies have one)
+NumFrontBumpers       5        ; number of front bumpers
+RearBumpers           true     ; a rear bump ring (RoboSim's bodies have one)
+NumRearBumpers        5        ; number of rear bumpers
 
 Section Conversion factors
 ; firmware units to ARIA's: what a Pioneer protocol server speaks

@@ -12,6 +12,10 @@ RobotLengthFront 210   ; mm ahead of the turning centre
 RobotLengthRear 301    ; mm behind it
 MaxVelocity 2200       ; mm/s, the fastest the robot ever drives
 MaxRVelocity 500       ; deg/s, the fastest it ever turns
+FrontBumpers          true     ; a front bump ring (RoboSim's bodies have one)
+NumFrontBumpers       5        ; number of front bumpers
+RearBumpers           true     ; a rear bump ring (RoboSim's bodies have one)
+NumRearBumpers        5        ; number of rear bumpers
 
 Section Conversion factors
 ; firmware units to ARIA's: what a Pioneer protocol server speaks

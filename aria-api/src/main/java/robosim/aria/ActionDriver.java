@@ -255,7 +255,7 @@ final class ActionDriver {
             if (rotStopped) {
                 robot.send(new Command.SetRotVel(0));
             } else if (rotHeading) {
-                robot.send(new Command.SetHeading(rotVal));
+                robot.send(new Command.SetHeading(robot.encoderHeading(rotVal)));
             } else {
                 robot.send(new Command.SetRotVel(rotVal));
             }

@@ -15,6 +15,14 @@ record ArPoseWithTime(double x, double y, long timeMs, ArPose robotPose) {
         robotPose = new ArPose(robotPose.getX(), robotPose.getY(), robotPose.getTh());
     }
 
+    /**
+     * @param t a rigid motion
+     * @return this reading moved by it, with its time and the robot's pose moved too
+     */
+    ArPoseWithTime moved(ArTransform t) {
+        return new ArPoseWithTime(t.transformX(x, y), t.transformY(x, y), timeMs, t.doTransform(robotPose));
+    }
+
     /** @return the echo's position, heading 0 */
     ArPose toPose() {
         return new ArPose(x, y, 0);

@@ -71,6 +71,46 @@ final class ArRangeBuffer {
         readings.removeIf(r -> r.distanceTo(robot.getX(), robot.getY()) > dist);
     }
 
+    /** Moves every reading by a rigid motion, as ARIA's {@code ArRangeBuffer::applyTransform}. */
+    void applyTransform(ArTransform t) {
+        List<ArPoseWithTime> moved = new ArrayList<>(readings.size());
+        for (ArPoseWithTime r : readings) {
+            moved.add(r.moved(t));
+        }
+        readings.clear();
+        readings.addAll(moved);
+    }
+
+    /**
+     * ARIA's {@code ArRangeBuffer::getClosestBox}: the reading nearest the robot centre among those
+     * inside a box given in the robot's frame (x forward, y left), edges included; the corners may
+     * come in any order.
+     *
+     * @param robot the robot's pose
+     * @return the nearest reading in the robot's frame (its heading the reading's 0 turned into that
+     *         frame), or null if none is in the box
+     */
+    ArPose closestBox(double x1, double y1, double x2, double y2, ArPose robot) {
+        ArTransform toLocal = new ArTransform(robot, new ArPose());
+        double minX = Math.min(x1, x2);
+        double maxX = Math.max(x1, x2);
+        double minY = Math.min(y1, y2);
+        double maxY = Math.max(y1, y2);
+        ArPose best = null;
+        double bestDist = Double.POSITIVE_INFINITY;
+        for (ArPoseWithTime r : readings) {
+            ArPose p = toLocal.doTransform(r.toPose());
+            if (p.getX() >= minX && p.getX() <= maxX && p.getY() >= minY && p.getY() <= maxY) {
+                double d = Math.hypot(p.getX(), p.getY());
+                if (d < bestDist) {
+                    bestDist = d;
+                    best = p;
+                }
+            }
+        }
+        return best;
+    }
+
     /** @return the readings' positions, newest first, as new poses */
     List<ArPose> poses() {
         List<ArPose> out = new ArrayList<>(readings.size());

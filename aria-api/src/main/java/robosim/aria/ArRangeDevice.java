@@ -44,6 +44,7 @@ public class ArRangeDevice {
     private final String taskName;
     private final ArRangeBuffer current;
     private final ArRangeBuffer cumulative;
+    private volatile List<ArSensorReading> rawReadings = List.of();
     private volatile ArRobot robot;
     private volatile double maxRange;
     private int maxSecondsToKeepCurrent = DEFAULT_MAX_SECONDS_TO_KEEP_CURRENT;
@@ -181,6 +182,19 @@ public class ArRangeDevice {
         cumulative.add(reading);
     }
 
+    /**
+     * Adds a reading to the current buffer only: for devices whose readings say nothing lasting
+     * ({@link ArBumpers}).
+     *
+     * @param x      the reading's global x, mm
+     * @param y      the reading's global y, mm
+     * @param pose   the robot's pose when it was taken
+     * @param timeMs simulated time when it was taken
+     */
+    protected synchronized void addCurrentReading(double x, double y, ArPose pose, long timeMs) {
+        current.add(new ArPoseWithTime(x, y, timeMs, pose));
+    }
+
     /** @return the current readings' positions, newest first, pruned first */
     public synchronized List<ArPose> getCurrentBuffer() {
         prune();
@@ -310,6 +324,107 @@ public class ArRangeDevice {
         return Math.min(c.distance(), maxRange);
     }
 
+    /**
+     * The nearest current reading inside a box around the robot (ARIA's {@code currentReadingBox}).
+     *
+     * @param x1 one corner's x, mm, in the robot's frame (x forward)
+     * @param y1 one corner's y, mm, in the robot's frame (y left)
+     * @param x2 the opposite corner's x, mm
+     * @param y2 the opposite corner's y, mm
+     * @return the distance from the robot centre to the nearest current reading in the box (edges
+     *         included), at most the maximum range; the maximum range if there is none
+     */
+    public double currentReadingBox(double x1, double y1, double x2, double y2) {
+        return currentReadingBox(x1, y1, x2, y2, null);
+    }
+
+    /**
+     * As {@link #currentReadingBox(double, double, double, double)}, also giving the reading.
+     *
+     * @param x1         one corner's x, mm, robot frame
+     * @param y1         one corner's y, mm, robot frame
+     * @param x2         the opposite corner's x, mm
+     * @param y2         the opposite corner's y, mm
+     * @param readingPos null, or a pose set to the nearest reading in the robot's frame; set to
+     *                   (0, 0, 0) if there is none, as ARIA sets it
+     * @return the distance, mm, or the maximum range
+     */
+    public synchronized double currentReadingBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
+        prune();
+        return box(current, x1, y1, x2, y2, readingPos);
+    }
+
+    /**
+     * The nearest cumulative reading inside a box around the robot (ARIA's
+     * {@code cumulativeReadingBox}).
+     *
+     * @param x1 one corner's x, mm, robot frame
+     * @param y1 one corner's y, mm, robot frame
+     * @param x2 the opposite corner's x, mm
+     * @param y2 the opposite corner's y, mm
+     * @return the distance from the robot centre, at most the maximum range; the maximum range if
+     *         there is none
+     */
+    public double cumulativeReadingBox(double x1, double y1, double x2, double y2) {
+        return cumulativeReadingBox(x1, y1, x2, y2, null);
+    }
+
+    /**
+     * As {@link #cumulativeReadingBox(double, double, double, double)}, also giving the reading.
+     *
+     * @param x1         one corner's x, mm, robot frame
+     * @param y1         one corner's y, mm, robot frame
+     * @param x2         the opposite corner's x, mm
+     * @param y2         the opposite corner's y, mm
+     * @param readingPos null, or a pose set to the nearest reading in the robot's frame; (0, 0, 0)
+     *                   if there is none
+     * @return the distance, mm, or the maximum range
+     */
+    public synchronized double cumulativeReadingBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
+        prune();
+        return box(cumulative, x1, y1, x2, y2, readingPos);
+    }
+
+    private double box(ArRangeBuffer buffer, double x1, double y1, double x2, double y2, ArPose readingPos) {
+        ArPose closest = buffer.closestBox(x1, y1, x2, y2, robotPose());
+        ArPose found = closest == null ? new ArPose() : closest;
+        if (readingPos != null) {
+            readingPos.setPose(found.getX(), found.getY(), found.getTh());
+        }
+        return closest == null ? maxRange : Math.min(Math.hypot(found.getX(), found.getY()), maxRange);
+    }
+
+    /**
+     * Moves the buffered readings by a rigid motion (ARIA's {@code applyTransform}):
+     * {@link ArRobot#moveTo} moves them with the robot, so they keep their place relative to it.
+     *
+     * @param trans        the motion
+     * @param doCumulative whether the cumulative buffer moves too (the current buffer always does)
+     */
+    public synchronized void applyTransform(ArTransform trans, boolean doCumulative) {
+        current.applyTransform(trans);
+        if (doCumulative) {
+            cumulative.applyTransform(trans);
+        }
+        for (ArSensorReading r : rawReadings) {
+            r.applyTransform(trans);
+        }
+    }
+
+    /**
+     * @return the device's latest readings as it took them (ARIA's {@code getRawReadings}): the
+     *         laser's latest scan, the sonar readings new in the latest cycle; empty for a device
+     *         that keeps none
+     */
+    public List<ArSensorReading> getRawReadings() {
+        return rawReadings;
+    }
+
+    /** @param readings the device's latest readings, kept as they are (callers pass a fresh list) */
+    protected void setRawReadings(List<ArSensorReading> readings) {
+        rawReadings = List.copyOf(readings);
+    }
+
     // ---- the cycle ----
 
     /**
@@ -336,7 +451,7 @@ public class ArRangeDevice {
             cumulative.removeOlderThan(s.timeMs(), maxSecondsToKeepCumulative * 1000L);
         }
         if (maxDistToKeepCumulative > 0) {
-            cumulative.removeFartherThan(new ArPose(s.x(), s.y(), s.th()), maxDistToKeepCumulative);
+            cumulative.removeFartherThan(robotPose(), maxDistToKeepCumulative);
         }
     }
 
@@ -346,10 +461,13 @@ public class ArRangeDevice {
         return r == null ? null : r.currentState();
     }
 
-    /** @return the robot's pose in its latest cycle, or the origin */
+    /**
+     * @return the robot's pose ({@link ArRobot#getPose()}, moved by {@link ArRobot#moveTo}) in its
+     *         latest cycle, or the origin
+     */
     ArPose robotPose() {
-        RobotState s = cycleState();
-        return s == null ? new ArPose() : new ArPose(s.x(), s.y(), s.th());
+        ArRobot r = robot;
+        return r == null || r.currentState() == null ? new ArPose() : r.getPose();
     }
 
     private long nowMs() {

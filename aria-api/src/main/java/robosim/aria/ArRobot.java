@@ -5,6 +5,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
+import robosim.params.BumperParameters;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
@@ -34,6 +35,8 @@ public class ArRobot extends AbstractRobot {
     public static final double STOPPED_VEL = 4;
     /** ARIA's {@code isStopped} rotational threshold, deg/s. */
     public static final double STOPPED_ROT_VEL = 1;
+    /** The battery voltage RoboSim's robots report, volts: ARIA's 12 V scale, a full battery. */
+    public static final double NOMINAL_BATTERY_VOLTAGE = 12.0;
 
     private final SonarRing sonar;
     private final ReentrantLock lock = new ReentrantLock();
@@ -55,6 +58,9 @@ public class ArRobot extends AbstractRobot {
     private volatile double stoppedRotVel = STOPPED_ROT_VEL;
     private volatile double maxRotVel;
     private final ActionDriver actions = new ActionDriver(this);
+    private volatile ArTransform encoderTransform = new ArTransform();
+    private volatile BumperParameters bumpers = BumperParameters.ARIA_DEFAULTS;
+    private volatile boolean cycleStopped;
 
     /**
      * @param name      the robot's name in the world
@@ -64,13 +70,15 @@ public class ArRobot extends AbstractRobot {
      */
     public ArRobot(String name, String host, int port, String paramFile) {
         this(name, host, port, RobotParameterFiles.load(paramFile));
+        this.bumpers = RobotParameterFiles.bumpers(paramFile);
     }
 
     /**
      * @param name       the robot's name in the world
      * @param host       the Environment's host
      * @param port       the Environment's robot port
-     * @param parameters the robot's parameters
+     * @param parameters the robot's parameters; the robot has no bump rings (ARIA's default), as
+     *                   these are read from a parameter file's bumper keys
      */
     public ArRobot(String name, String host, int port, RobotParameters parameters) {
         super(name, host, port, "pioneer", parameters);
@@ -108,9 +116,12 @@ public class ArRobot extends AbstractRobot {
         lock.lock();
         try {
             super.responded(response);
+            if (cycleStopped) {
+                return;
+            }
             counter++;
             RobotState s = response.state();
-            sonar.update(s.sonar(), new ArPose(s.x(), s.y(), s.th()), counter, s.timeMs());
+            sonar.update(s.sonar(), getPose(), counter, s.timeMs());
             odometer.update(s);
             sensorInterpTasks.runAll(getName());
             actions.cycle(s.timeMs());
@@ -204,8 +215,11 @@ public class ArRobot extends AbstractRobot {
      * always runs, on the robot's hardware thread.
      */
     public void runAsync() {
+        cycleStopped = false;
         runningAsync = true;
-        keepAlive(true);
+        if (isConnected()) {
+            keepAlive(true);
+        }
     }
 
     /** @return whether {@link #runAsync()} was called and the robot is still connected */
@@ -313,6 +327,15 @@ public class ArRobot extends AbstractRobot {
     public boolean isDirectMotion() {
         long now = simulatedMs();
         return actions.transDirect(now) || actions.rotDirect(now);
+    }
+
+    /**
+     * @param heading a heading in the robot's frame (the one {@link #moveTo} set), degrees
+     * @return the same heading in the encoder frame, in which the Environment turns
+     */
+    double encoderHeading(double heading) {
+        double frameTh = encoderTransform.getTh();
+        return frameTh == 0 ? heading : ArMath.subAngle(heading, frameTh);
     }
 
     private long simulatedMs() {
@@ -423,7 +446,7 @@ public class ArRobot extends AbstractRobot {
     public void setHeading(double heading) {
         Command.SetHeading turn = new Command.SetHeading(heading);
         headingTarget = ArMath.fixAngle(heading);
-        request(turn);
+        request(new Command.SetHeading(encoderHeading(heading)));
         actions.directRot(simulatedMs());
     }
 
@@ -610,25 +633,27 @@ public class ArRobot extends AbstractRobot {
 
     // ---- state ----
 
-    /** @return odometry x, mm */
+    /** @return odometry x, mm (in the frame {@link #moveTo} set, if it was called) */
     public double getX() {
-        return state().x();
+        return getPose().getX();
     }
 
-    /** @return odometry y, mm */
+    /** @return odometry y, mm (in the frame {@link #moveTo} set, if it was called) */
     public double getY() {
-        return state().y();
+        return getPose().getY();
     }
 
-    /** @return odometry heading, degrees in (-180, 180] */
+    /** @return odometry heading, degrees in (-180, 180] (in the frame {@link #moveTo} set) */
     public double getTh() {
-        return state().th();
+        return getPose().getTh();
     }
 
-    /** @return the odometry pose, a new object */
+    /**
+     * @return the odometry pose, a new object: the encoder pose ({@link #getEncoderPose()}) carried
+     *         into the frame {@link #moveTo} set, as ARIA's encoder transform carries it
+     */
     public ArPose getPose() {
-        RobotState s = state();
-        return new ArPose(s.x(), s.y(), s.th());
+        return encoderTransform.doTransform(getEncoderPose());
     }
 
     /** @return translational velocity, (left + right) / 2, mm/s */
@@ -748,14 +773,319 @@ public class ArRobot extends AbstractRobot {
         return getParameters().robotLengthRear();
     }
 
-    /** @return whether either wheel is stalled; both are, when RoboSim stalls a robot */
+    /**
+     * @return whether the left motor is stalled: bit 0 of {@link #getStallValue()}, as ARIA's
+     *         {@code ArRobot.h} reads it (RoboSim stalls both wheels together)
+     */
     public boolean isLeftMotorStalled() {
-        return isStalled();
+        return (getStallValue() & StallValue.LEFT_MOTOR) != 0;
     }
 
-    /** @return whether either wheel is stalled; both are, when RoboSim stalls a robot */
+    /**
+     * @return whether the right motor is stalled: bit 8 of {@link #getStallValue()}, as ARIA's
+     *         {@code ArRobot.h} reads it
+     */
     public boolean isRightMotorStalled() {
-        return isStalled();
+        return (getStallValue() & StallValue.RIGHT_MOTOR) != 0;
+    }
+
+    // ---- the pose's frame, range-device queries, stall and bumpers, battery, stopRunning ----
+
+    /**
+     * @return the pose the robot's encoders give (the Environment's odometry), which
+     *         {@link #moveTo} does not change; a new object
+     */
+    public ArPose getEncoderPose() {
+        RobotState s = state();
+        return new ArPose(s.x(), s.y(), s.th());
+    }
+
+    /** @return the transform from the encoder pose to {@link #getPose()} (the identity until {@link #moveTo}) */
+    public ArTransform getEncoderTransform() {
+        return encoderTransform;
+    }
+
+    /**
+     * Re-bases the odometric pose, moving the readings of the range devices with the robot, as ARIA's
+     * {@code ArRobot::moveTo(pose)} (with {@code doCumulative} true) does. The robot does not drive:
+     * from now on {@link #getPose()} answers {@code pose} plus whatever the encoders add, while
+     * {@link #getEncoderPose()} keeps the raw pose. Headings given to {@link #setHeading} are in the
+     * new frame.
+     *
+     * @param pose the robot's new pose, mm and degrees
+     */
+    public void moveTo(ArPose pose) {
+        moveTo(pose, true);
+    }
+
+    /**
+     * As {@link #moveTo(ArPose)}.
+     *
+     * @param pose         the robot's new pose
+     * @param doCumulative whether the range devices' cumulative buffers move too (the current
+     *                     buffers and the sonar readings always do)
+     */
+    public void moveTo(ArPose pose, boolean doCumulative) {
+        rebase(new ArTransform(getEncoderPose(), pose), doCumulative);
+    }
+
+    /**
+     * ARIA's {@code moveTo(poseTo, poseFrom)}: the robot is taken to have been at {@code from} (a pose
+     * in the current frame) and to be at {@code to} there; the frame moves by that difference.
+     *
+     * @param to   where {@code from} is in the new frame
+     * @param from a pose in the current frame
+     */
+    public void moveTo(ArPose to, ArPose from) {
+        moveTo(to, from, true);
+    }
+
+    /**
+     * As {@link #moveTo(ArPose, ArPose)}.
+     *
+     * @param to           where {@code from} is in the new frame
+     * @param from         a pose in the current frame
+     * @param doCumulative whether the range devices' cumulative buffers move too
+     */
+    public void moveTo(ArPose to, ArPose from, boolean doCumulative) {
+        rebase(new ArTransform(encoderTransform.doInvTransform(from), to), doCumulative);
+    }
+
+    private void rebase(ArTransform newEncoderTransform, boolean doCumulative) {
+        lock.lock();
+        try {
+            ArPose before = getPose();
+            encoderTransform = newEncoderTransform;
+            ArTransform moved = new ArTransform(before, getPose());
+            for (ArRangeDevice d : rangeDevices) {
+                d.applyTransform(moved, doCumulative);
+            }
+            sonar.applyTransform(moved);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * The nearest current reading of all the attached range devices in an angle interval (ARIA's
+     * {@code checkRangeDevicesCurrentPolar}).
+     *
+     * @param startAngle degrees, relative to the robot's heading
+     * @param endAngle   degrees, relative to the robot's heading
+     * @return the smallest {@link ArRangeDevice#currentReadingPolar} over the devices (a device with
+     *         nothing there answers its maximum range); −1 if no device is attached
+     */
+    public double checkRangeDevicesCurrentPolar(double startAngle, double endAngle) {
+        return checkRangeDevicesCurrentPolar(startAngle, endAngle, null);
+    }
+
+    /**
+     * As {@link #checkRangeDevicesCurrentPolar(double, double)}, also giving the reading's angle.
+     *
+     * @param startAngle degrees, relative to the robot's heading
+     * @param endAngle   degrees, relative to the robot's heading
+     * @param angleOut   null, or an array whose element 0 receives the nearest reading's angle
+     * @return the distance, mm, or −1 if no device is attached
+     */
+    public double checkRangeDevicesCurrentPolar(double startAngle, double endAngle, double[] angleOut) {
+        return nearest(d -> d.currentReadingPolar(startAngle, endAngle, null),
+                (d, out) -> d.currentReadingPolar(startAngle, endAngle, out), angleOut);
+    }
+
+    /**
+     * The nearest cumulative reading of all the attached range devices in an angle interval (ARIA's
+     * {@code checkRangeDevicesCumulativePolar}).
+     *
+     * @param startAngle degrees, relative to the robot's heading
+     * @param endAngle   degrees, relative to the robot's heading
+     * @return the smallest {@link ArRangeDevice#cumulativeReadingPolar} over the devices; −1 if no
+     *         device is attached
+     */
+    public double checkRangeDevicesCumulativePolar(double startAngle, double endAngle) {
+        return checkRangeDevicesCumulativePolar(startAngle, endAngle, null);
+    }
+
+    /**
+     * As {@link #checkRangeDevicesCumulativePolar(double, double)}, also giving the reading's angle.
+     *
+     * @param startAngle degrees, relative to the robot's heading
+     * @param endAngle   degrees, relative to the robot's heading
+     * @param angleOut   null, or an array whose element 0 receives the nearest reading's angle
+     * @return the distance, mm, or −1 if no device is attached
+     */
+    public double checkRangeDevicesCumulativePolar(double startAngle, double endAngle, double[] angleOut) {
+        return nearest(d -> d.cumulativeReadingPolar(startAngle, endAngle, null),
+                (d, out) -> d.cumulativeReadingPolar(startAngle, endAngle, out), angleOut);
+    }
+
+    /** Picks the device with the smallest answer, then asks it again to fill the out-parameter. */
+    private <T> double nearest(java.util.function.ToDoubleFunction<ArRangeDevice> ask,
+                               java.util.function.ToDoubleBiFunction<ArRangeDevice, T> askFilling, T out) {
+        ArRangeDevice best = null;
+        double closest = 0;
+        for (ArRangeDevice d : rangeDevices) {
+            double dist = ask.applyAsDouble(d);
+            // ARIA keeps the first device on a tie
+            if (best == null || dist < closest) {
+                best = d;
+                closest = dist;
+            }
+        }
+        if (best == null) {
+            return -1;
+        }
+        if (out != null) {
+            askFilling.applyAsDouble(best, out);
+        }
+        return closest;
+    }
+
+    /**
+     * The nearest current reading of all the attached range devices in a box around the robot
+     * (ARIA's {@code checkRangeDevicesCurrentBox}).
+     *
+     * @param x1 one corner's x, mm, robot frame (x forward)
+     * @param y1 one corner's y, mm, robot frame (y left)
+     * @param x2 the opposite corner's x, mm
+     * @param y2 the opposite corner's y, mm
+     * @return the smallest {@link ArRangeDevice#currentReadingBox} over the devices; −1 if no
+     *         device is attached
+     */
+    public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2) {
+        return checkRangeDevicesCurrentBox(x1, y1, x2, y2, null);
+    }
+
+    /**
+     * As {@link #checkRangeDevicesCurrentBox(double, double, double, double)}, also giving the reading.
+     *
+     * @param x1         one corner's x, mm, robot frame
+     * @param y1         one corner's y, mm, robot frame
+     * @param x2         the opposite corner's x, mm
+     * @param y2         the opposite corner's y, mm
+     * @param readingPos null, or a pose set to the nearest reading in the robot's frame ((0, 0, 0)
+     *                   if the nearest device has none in the box, as in ARIA)
+     * @return the distance, mm, or −1 if no device is attached
+     */
+    public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
+        return nearest(d -> d.currentReadingBox(x1, y1, x2, y2, null),
+                (d, out) -> d.currentReadingBox(x1, y1, x2, y2, out), readingPos);
+    }
+
+    /**
+     * The nearest cumulative reading of all the attached range devices in a box around the robot
+     * (ARIA's {@code checkRangeDevicesCumulativeBox}).
+     *
+     * @param x1 one corner's x, mm, robot frame
+     * @param y1 one corner's y, mm, robot frame
+     * @param x2 the opposite corner's x, mm
+     * @param y2 the opposite corner's y, mm
+     * @return the smallest {@link ArRangeDevice#cumulativeReadingBox} over the devices; −1 if no
+     *         device is attached
+     */
+    public double checkRangeDevicesCumulativeBox(double x1, double y1, double x2, double y2) {
+        return checkRangeDevicesCumulativeBox(x1, y1, x2, y2, null);
+    }
+
+    /**
+     * As {@link #checkRangeDevicesCumulativeBox(double, double, double, double)}, also giving the
+     * reading.
+     *
+     * @param x1         one corner's x, mm, robot frame
+     * @param y1         one corner's y, mm, robot frame
+     * @param x2         the opposite corner's x, mm
+     * @param y2         the opposite corner's y, mm
+     * @param readingPos null, or a pose set to the nearest reading in the robot's frame
+     * @return the distance, mm, or −1 if no device is attached
+     */
+    public double checkRangeDevicesCumulativeBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
+        return nearest(d -> d.cumulativeReadingBox(x1, y1, x2, y2, null),
+                (d, out) -> d.cumulativeReadingBox(x1, y1, x2, y2, out), readingPos);
+    }
+
+    /**
+     * The Pioneer's stall and bumper flags, with ARIA's layout: bit 0 the left motor's stall, bits
+     * 1–7 the rear bumpers, bit 8 the right motor's stall, bits 9–15 the front bumpers (bumper i in
+     * bit 1 + i, or 9 + i). The bumper flags come from the body's six contact sectors (see
+     * {@link ArBumpers} and docs/ARIA-SEMANTICS.md for the mapping); a ring the parameter file does
+     * not declare reports none.
+     *
+     * @return the flags of the latest cycle
+     */
+    public int getStallValue() {
+        return StallValue.of(state(), bumpers);
+    }
+
+    /** @return whether a front bumper is pressed (and the robot has a front ring), as in ARIA */
+    public boolean isFrontBumperTriggered() {
+        return hasFrontBumpers() && (getStallValue() >> 9 & 0x7f) != 0;
+    }
+
+    /** @return whether a rear bumper is pressed (and the robot has a rear ring), as in ARIA */
+    public boolean isRearBumperTriggered() {
+        return hasRearBumpers() && (getStallValue() >> 1 & 0x7f) != 0;
+    }
+
+    /** @return whether the parameter file gives the robot a front bump ring ({@code FrontBumpers}) */
+    public boolean hasFrontBumpers() {
+        return bumpers.frontBumpers();
+    }
+
+    /** @return the front ring's bumpers ({@code NumFrontBumpers}, ARIA's default 5) */
+    public int getNumFrontBumpers() {
+        return bumpers.numFrontBumpers();
+    }
+
+    /** @return whether the parameter file gives the robot a rear bump ring ({@code RearBumpers}) */
+    public boolean hasRearBumpers() {
+        return bumpers.rearBumpers();
+    }
+
+    /** @return the rear ring's bumpers ({@code NumRearBumpers}, ARIA's default 5) */
+    public int getNumRearBumpers() {
+        return bumpers.numRearBumpers();
+    }
+
+    /**
+     * The battery voltage on ARIA's 12 V scale. RoboSim does not model a battery: this is always
+     * {@value #NOMINAL_BATTERY_VOLTAGE}, a full battery, so a program that watches for a low battery
+     * never sees one.
+     *
+     * @return volts
+     */
+    public double getBatteryVoltage() {
+        return NOMINAL_BATTERY_VOLTAGE;
+    }
+
+    /** @return as {@link #getBatteryVoltage()}: RoboSim's battery does not change */
+    public double getBatteryVoltageNow() {
+        return NOMINAL_BATTERY_VOLTAGE;
+    }
+
+    /**
+     * Stops the robot's cycle and disconnects, as ARIA's {@code stopRunning()}: a {@link #run()} in
+     * another thread returns.
+     */
+    public void stopRunning() {
+        stopRunning(true);
+    }
+
+    /**
+     * Stops the robot's cycle (ARIA's {@code stopRunning(doDisconnect)}): from the next state on, the
+     * counter stops, the sonar readings, odometers and range devices are no longer updated and no
+     * task runs, until {@link #runAsync()} starts the cycle again. The pose and velocities still
+     * follow the Environment's state.
+     *
+     * @param doDisconnect whether to leave the run too
+     */
+    public void stopRunning(boolean doDisconnect) {
+        cycleStopped = true;
+        runningAsync = false;
+        if (isConnected()) {
+            keepAlive(false);
+        }
+        if (doDisconnect) {
+            disconnect();
+        }
     }
 
     // ---- sonar ----

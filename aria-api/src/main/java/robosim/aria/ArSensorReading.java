@@ -68,6 +68,33 @@ public final class ArSensorReading {
         ignoreThisReading = false;
     }
 
+    /** @return a copy of this reading, so that a device's raw readings do not move with the robot's */
+    ArSensorReading copy() {
+        ArSensorReading c = new ArSensorReading(sensorX, sensorY, sensorTh, range);
+        c.x = x;
+        c.y = y;
+        c.localX = localX;
+        c.localY = localY;
+        c.poseTaken = new ArPose(poseTaken.getX(), poseTaken.getY(), poseTaken.getTh());
+        c.counterTaken = counterTaken;
+        c.timeTaken = timeTaken;
+        c.ignoreThisReading = ignoreThisReading;
+        return c;
+    }
+
+    /**
+     * Moves the reading's global position and the pose it was taken at by a rigid motion, as ARIA's
+     * {@code ArSensorReading::applyTransform} does when the robot is moved ({@link ArRobot#moveTo}).
+     *
+     * @param t the motion
+     */
+    void applyTransform(ArTransform t) {
+        double nx = t.transformX(x, y);
+        y = t.transformY(x, y);
+        x = nx;
+        poseTaken = t.doTransform(poseTaken);
+    }
+
     /** @return the range from the sensor, mm */
     public int getRange() {
         return range;

@@ -37,7 +37,6 @@ public class ArSick extends ArRangeDevice {
     private volatile boolean maxRangeChosen;
     private volatile boolean connected;
     private volatile String connectionError;
-    private volatile List<ArSensorReading> rawReadings = List.of();
     private volatile int[] rawScan = new int[0];
 
     /** A laser with buffers of 361 readings (a whole scan at 0.5°) and 200. */
@@ -150,8 +149,9 @@ public class ArSick extends ArRangeDevice {
      * @return the latest scan's readings, from the laser's right to its left: each one's sensor
      *         pose is the mounting pose turned by the beam's angle; empty when the laser is off
      */
+    @Override
     public List<ArSensorReading> getRawReadings() {
-        return rawReadings;
+        return super.getRawReadings();
     }
 
     /** @return the latest scan's ranges, mm from the laser, from its right to its left; a copy */
@@ -169,7 +169,7 @@ public class ArSick extends ArRangeDevice {
         }
         int[] scan = s.laser() == null ? new int[0] : s.laser().clone();
         RobotParameters p = robot.getParameters();
-        ArPose pose = new ArPose(s.x(), s.y(), s.th());
+        ArPose pose = robotPose();
         // the step follows from the scan's length, so a scan taken before a change of increment
         // is still read right
         double step = scan.length > 1 ? 180.0 / (scan.length - 1) : 0;
@@ -184,6 +184,6 @@ public class ArSick extends ArRangeDevice {
             }
         }
         rawScan = scan;
-        rawReadings = List.copyOf(readings);
+        setRawReadings(readings);
     }
 }

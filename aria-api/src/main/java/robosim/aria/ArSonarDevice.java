@@ -1,10 +1,15 @@
 package robosim.aria;
 
+import java.util.ArrayList;
+import java.util.List;
+
 /**
  * The sonar ring as a range device (ARIA's {@code ArSonarDevice}), named {@code sonar}: each cycle
  * it adds the sonar readings that arrived in that cycle ({@link ArRobot#isSonarNew}) and lie below
  * its maximum range, at the echoes' global positions. A sonar reading at the maximum range means
- * nothing was seen, so it is not an obstacle.
+ * nothing was seen, so it is not an obstacle. Its raw readings ({@link #getRawReadings()}) are
+ * copies of the sonar readings new in the latest cycle, in sonar order (ARIA's sonar device keeps
+ * none: RoboSim's choice, so that a program can see which transducers fired).
  *
  * <pre>{@code
  * ArSonarDevice sonar = new ArSonarDevice();
@@ -39,11 +44,17 @@ public class ArSonarDevice extends ArRangeDevice {
         double max = getMaxRange();
         ArPose pose = robotPose();
         long timeMs = robot.currentState().timeMs();
+        List<ArSensorReading> fresh = new ArrayList<>();
         for (int i = 0; i < robot.getNumSonar(); i++) {
             ArSensorReading r = robot.getSonarReading(i);
-            if (robot.isSonarNew(i) && r.getRange() < max) {
+            if (!robot.isSonarNew(i)) {
+                continue;
+            }
+            fresh.add(r.copy());
+            if (r.getRange() < max) {
                 addReading(r.getX(), r.getY(), pose, timeMs);
             }
         }
+        setRawReadings(fresh);
     }
 }

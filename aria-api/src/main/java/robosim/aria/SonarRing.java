@@ -32,6 +32,13 @@ final class SonarRing {
         }
     }
 
+    /** Moves every reading by a rigid motion, for {@link ArRobot#moveTo}. */
+    void applyTransform(ArTransform t) {
+        for (ArSensorReading r : readings) {
+            r.applyTransform(t);
+        }
+    }
+
     int range(int num) {
         return num < 0 || num >= readings.length ? -1 : readings[num].getRange();
     }

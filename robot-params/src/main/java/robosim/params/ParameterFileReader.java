@@ -68,6 +68,20 @@ public final class ParameterFileReader {
         return ConversionFactors.read(file, lines(file));
     }
 
+    /**
+     * Reads the bump rings of a parameter file ({@code FrontBumpers}, {@code NumFrontBumpers},
+     * {@code RearBumpers}, {@code NumRearBumpers}); a key the file does not give keeps
+     * {@link BumperParameters#ARIA_DEFAULTS}' value.
+     *
+     * @param file the {@code .p} file
+     * @return its bump rings
+     * @throws ParameterFileException naming the file, the line and the rule for a bad value
+     * @throws UncheckedIOException   when the file cannot be read
+     */
+    public static BumperParameters bumpers(Path file) {
+        return BumperParameters.read(file, lines(file));
+    }
+
     private static List<String> lines(Path file) {
         byte[] bytes;
         try {

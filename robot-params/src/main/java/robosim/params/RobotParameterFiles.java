@@ -65,6 +65,24 @@ public final class RobotParameterFiles {
     }
 
     /**
+     * Finds a parameter file as {@link #load} does and reads its bump rings: the bumper keys of
+     * ARIA's form, ARIA's defaults (no rings) for the XML forms, which have none.
+     *
+     * @param file a path, or a shipped name such as {@code p3dx}
+     * @return the robot's bump rings
+     * @throws IllegalArgumentException if no such file is found
+     * @throws robosim.params.ParameterFileException if a bumper key breaks a rule
+     */
+    public static BumperParameters bumpers(String file) {
+        Path path = resolve(file);
+        Path name = path.getFileName();
+        if (name != null && name.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".p")) {
+            return ParameterFileReader.bumpers(path);
+        }
+        return BumperParameters.ARIA_DEFAULTS;
+    }
+
+    /**
      * @return the RoboSim root: system property {@code robosim.root}, else the working directory
      */
     public static Path root() {
