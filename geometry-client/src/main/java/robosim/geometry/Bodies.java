@@ -17,6 +17,8 @@ final class Bodies {
     private final GeometryFactory factory;
     private final double cellSize;
     private final List<Body> list = new ArrayList<>();
+    /** The bodies left out of every query (a puck held in a gripper). */
+    private final java.util.BitSet hidden = new java.util.BitSet();
     /** The area the grid covers; null until there is an obstacle or a body. */
     private Envelope extent;
     private CellGrid grid;
@@ -61,6 +63,11 @@ final class Bodies {
         }
     }
 
+    void setSolid(int id, boolean solid) {
+        get(id);
+        hidden.set(id, !solid);
+    }
+
     Body get(int id) {
         return list.get(id);
     }
@@ -74,7 +81,7 @@ final class Bodies {
         if (grid != null) {
             for (int i : grid.query(env)) {
                 Body b = list.get(i);
-                if (i != ignoreId && b.envelope.intersects(env)) {
+                if (i != ignoreId && !hidden.get(i) && b.envelope.intersects(env)) {
                     near.add(b);
                 }
             }

@@ -118,6 +118,17 @@ public final class GeometryClient {
     }
 
     /**
+     * Makes a body solid or not. A body that is not solid is left out of every query (motion,
+     * contact and sensing) until it is made solid again, as a puck held in a gripper is.
+     *
+     * @param id    the body
+     * @param solid whether it is solid; bodies start solid
+     */
+    public void setSolid(int id, boolean solid) {
+        bodies.setSolid(id, solid);
+    }
+
+    /**
      * Moves a body, with no collision check.
      *
      * @param id   the body

@@ -14,7 +14,7 @@ import robosim.protocol.Command;
 /**
  * Turns the robot's {@link Command}s into the Pioneer commands ARIA would send for them: VEL, RVEL,
  * VEL2 (in units of the Vel2Divisor), MOVE, HEAD, DHEAD, STOP, SETV, SETRV, SETA and SETRA, SONAR,
- * the simulated laser's commands, SIM_MESSAGE, SIM_SET_POSE, SIM_RESET and SIM_STAT. A command the
+ * the simulated laser's commands, GRIPPER and GRIPPERVAL, SIM_MESSAGE, SIM_SET_POSE, SIM_RESET and SIM_STAT. A command the
  * protocol cannot carry (messages between robots, a find report, the heat sensor, wheel moves) is
  * answered with an error in the robot's next state, once for each kind, instead of being dropped in
  * silence. No sockets: the link sends what it returns.
@@ -82,6 +82,9 @@ final class CommandToPackets {
         if (c instanceof Command.ReportTruePose r) {
             return List.of(Commands.comInt(Commands.SIM_STAT, r.on() ? 2 : 0));
         }
+        if (c instanceof Command.Gripper g) {
+            return gripper(g);
+        }
         if (c instanceof Command.ConfigureHeatSensor) {
             return refuse("heat sensor", "ConfigureHeatSensor");
         }
@@ -89,6 +92,18 @@ final class CommandToPackets {
             return refuse("report of a find to the Environment", "ReportFound");
         }
         return refuse("messages between robots", c.getClass().getSimpleName());
+    }
+
+    /**
+     * GRIPPER with the command code, followed by GRIPPERVAL for the two codes that take a value,
+     * as ARIA's ArGripper.cpp sends them.
+     */
+    private static List<PioneerPacket> gripper(Command.Gripper g) {
+        PioneerPacket op = Commands.comInt(Commands.GRIPPER, g.op());
+        if (g.op() == Command.Gripper.GRIP_PRESSURE || g.op() == Command.Gripper.LIFT_CARRY) {
+            return List.of(op, Commands.comInt(Commands.GRIPPERVAL, g.value()));
+        }
+        return List.of(op);
     }
 
     /** The drive's commands that one Pioneer command carries. */

@@ -66,6 +66,8 @@ public final class Commands {
     public static final int VEL2 = 32;
     /** A gripper command. */
     public static final int GRIPPER = 33;
+    /** The argument of the gripper command before it (GRIP_PRESSURE, LIFT_CARRY), as ARIA's GRIPPERVAL. */
+    public static final int GRIPPERVAL = 36;
     /** Asks for IO packets. */
     public static final int IOREQUEST = 40;
     /** Sets whether bumping stalls the robot: 0 no, 1 front, 2 rear, 3 both. */
@@ -117,7 +119,7 @@ public final class Commands {
             Map.entry(SETRV, "SETRV"), Map.entry(VEL, "VEL"), Map.entry(HEAD, "HEAD"), Map.entry(DHEAD, "DHEAD"),
             Map.entry(SAY, "SAY"), Map.entry(CONFIG, "CONFIG"), Map.entry(ENCODER, "ENCODER"),
             Map.entry(RVEL, "RVEL"), Map.entry(SETRA, "SETRA"), Map.entry(SONAR, "SONAR"), Map.entry(STOP, "STOP"),
-            Map.entry(VEL2, "VEL2"), Map.entry(GRIPPER, "GRIPPER"), Map.entry(IOREQUEST, "IOREQUEST"),
+            Map.entry(VEL2, "VEL2"), Map.entry(GRIPPER, "GRIPPER"), Map.entry(GRIPPERVAL, "GRIPPERVAL"), Map.entry(IOREQUEST, "IOREQUEST"),
             Map.entry(BUMPSTALL, "BUMPSTALL"), Map.entry(ESTOP, "ESTOP"), Map.entry(BATTERYINFO, "BATTERYINFO"),
             Map.entry(LATVEL, "LATVEL"), Map.entry(SIM_SET_POSE, "SIM_SET_POSE"), Map.entry(SIM_RESET, "SIM_RESET"),
             Map.entry(SIM_LRF_ENABLE, "SIM_LRF_ENABLE"), Map.entry(SIM_LRF_SET_FOV_START, "SIM_LRF_SET_FOV_START"),

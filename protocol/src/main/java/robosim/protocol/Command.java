@@ -8,7 +8,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
  * robots, and events of the run. Units: mm, mm/s, degrees, deg/s.
  *
  * <p>Each command belongs to one group, named after what carries it out in the Environment:
- * {@link Motion}, {@link SensorSetting}, {@link Messaging}, {@link RunEvent} and {@link Simulator}. Each record checks
+ * {@link Motion}, {@link SensorSetting}, {@link Messaging}, {@link RunEvent}, {@link Simulator} and {@link Accessory}. Each record checks
  * its values as it is made, so a command that breaks a rule (a non-finite velocity, a laser
  * increment no SICK has) cannot exist, on the robot's side or decoded from the wire.
  */
@@ -37,6 +37,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.SetTruePose.class, name = "truePose"),
         @JsonSubTypes.Type(value = Command.ResetToStart.class, name = "resetToStart"),
         @JsonSubTypes.Type(value = Command.ReportTruePose.class, name = "reportTruePose"),
+        @JsonSubTypes.Type(value = Command.Gripper.class, name = "gripper"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -375,6 +376,68 @@ public sealed interface Command {
      * @param on whether to report it
      */
     record ReportTruePose(boolean on) implements SensorSetting { }
+
+    /** Commands carried out by the robot's accessories in the Environment: its gripper. */
+    sealed interface Accessory extends Command { }
+
+    /**
+     * An operation of the robot's Pioneer gripper, with ARIA's GRIPPER command codes
+     * ({@code ArGripperCommands} in ARIA's ArGripper.h): 1 GRIP_OPEN, 2 GRIP_CLOSE, 3 GRIP_STOP,
+     * 4 LIFT_UP, 5 LIFT_DOWN, 6 LIFT_STOP, 7 GRIPPER_STORE, 8 GRIPPER_DEPLOY, 15 GRIPPER_HALT,
+     * 16 GRIP_PRESSURE and 17 LIFT_CARRY (those two take the GRIPPERVAL argument). Carried out by
+     * the Environment's model of the gripper; a robot without a gripper gets an error back.
+     *
+     * Its constructor throws IllegalArgumentException if the code is none of those.
+     *
+     * @param op    the GRIPPER command code
+     * @param value the GRIPPERVAL argument in 20 ms units (GRIP_PRESSURE: grasp time, 0 to 255;
+     *              LIFT_CARRY: lift travel, positive up), 0 for the others
+     */
+    record Gripper(int op, int value) implements Accessory {
+        /** ARIA's GRIP_OPEN. */
+        public static final int GRIP_OPEN = 1;
+        /** ARIA's GRIP_CLOSE. */
+        public static final int GRIP_CLOSE = 2;
+        /** ARIA's GRIP_STOP. */
+        public static final int GRIP_STOP = 3;
+        /** ARIA's LIFT_UP. */
+        public static final int LIFT_UP = 4;
+        /** ARIA's LIFT_DOWN. */
+        public static final int LIFT_DOWN = 5;
+        /** ARIA's LIFT_STOP. */
+        public static final int LIFT_STOP = 6;
+        /** ARIA's GRIPPER_STORE: close the paddles and raise the lift. */
+        public static final int GRIPPER_STORE = 7;
+        /** ARIA's GRIPPER_DEPLOY: open the paddles and lower the lift. */
+        public static final int GRIPPER_DEPLOY = 8;
+        /** ARIA's GRIPPER_HALT: stop the paddles and the lift. */
+        public static final int GRIPPER_HALT = 15;
+        /** ARIA's GRIP_PRESSURE: the grasp time, in 20 ms units. */
+        public static final int GRIP_PRESSURE = 16;
+        /** ARIA's LIFT_CARRY: move the lift for a time, in 20 ms units, positive up. */
+        public static final int LIFT_CARRY = 17;
+
+        public Gripper {
+            if (!(op >= GRIP_OPEN && op <= GRIPPER_DEPLOY) && op != GRIPPER_HALT && op != GRIP_PRESSURE
+                    && op != LIFT_CARRY) {
+                throw new IllegalArgumentException(op + " was supplied for the gripper command: ARIA's codes are "
+                        + "1 to 8, 15, 16 and 17");
+            }
+            if (op == GRIP_PRESSURE && (value < 0 || value > 255)) {
+                throw new IllegalArgumentException(value + " was supplied for the grasp time: 0 to 255 (20 ms units)");
+            }
+            if (op == LIFT_CARRY && (value < Short.MIN_VALUE || value > Short.MAX_VALUE)) {
+                throw new IllegalArgumentException(value + " was supplied for the lift carry: a signed 16-bit value");
+            }
+        }
+
+        /**
+         * @param op the GRIPPER command code of an operation without an argument
+         */
+        public Gripper(int op) {
+            this(op, 0);
+        }
+    }
 
     private static void finite(String name, double v) {
         if (!Double.isFinite(v)) {

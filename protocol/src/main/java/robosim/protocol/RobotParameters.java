@@ -1,6 +1,8 @@
 package robosim.protocol;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
+import com.fasterxml.jackson.annotation.JsonSetter;
+import com.fasterxml.jackson.annotation.Nulls;
 import java.util.List;
 
 /**
@@ -31,6 +33,8 @@ import java.util.List;
  * @param laserMaxRange    the laser's maximum range, mm (a SICK LMS200: 8000)
  * @param shape            the body: {@value #RECTANGLE} (length front and rear, width) or
  *                         {@value #ROUND} (a disc of {@code robotRadius}, as the Nomadic Scout)
+ * @param hasGripper       whether a Pioneer 2-DOF gripper is mounted at the front (the parameter
+ *                         file's {@code HasGripper}; absent reads as none)
  */
 public record RobotParameters(
         String robotClass,
@@ -52,7 +56,8 @@ public record RobotParameters(
         double laserY,
         double laserTh,
         double laserMaxRange,
-        String shape) {
+        String shape,
+        @JsonSetter(nulls = Nulls.AS_EMPTY) boolean hasGripper) {
 
     /** A body given by its length front and rear and its width. */
     public static final String RECTANGLE = "rectangle";
@@ -206,6 +211,51 @@ public record RobotParameters(
         this(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear, maxVelocity,
                 maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
                 sonarUnits, laserX, laserY, laserTh, laserMaxRange, RECTANGLE);
+    }
+
+    /**
+     * Parameters without a gripper.
+     *
+     * @param robotClass       the robot's class
+     * @param subclass         the robot's subclass
+     * @param robotRadius      enclosing radius
+     * @param robotWidth       body width
+     * @param robotLengthFront body extent ahead of the centre
+     * @param robotLengthRear  body extent behind the centre
+     * @param maxVelocity      maximum translational speed
+     * @param maxRVelocity     maximum rotational speed
+     * @param transAccel       translational acceleration
+     * @param transDecel       translational deceleration
+     * @param rotAccel         rotational acceleration
+     * @param rotDecel         rotational deceleration
+     * @param diffConvFactor   rad/s per mm/s of wheel-speed difference
+     * @param sonarMaxRange    the sonars' maximum range
+     * @param sonarUnits       the sonar transducers
+     * @param laserX           the laser's position, mm forward of the centre
+     * @param laserY           the laser's position, mm left of the centre
+     * @param laserTh          the laser's heading, degrees
+     * @param laserMaxRange    the laser's maximum range, mm
+     * @param shape            {@value #RECTANGLE} or {@value #ROUND}
+     */
+    public RobotParameters(String robotClass, String subclass, double robotRadius, double robotWidth,
+                           double robotLengthFront, double robotLengthRear, double maxVelocity,
+                           double maxRVelocity, double transAccel, double transDecel, double rotAccel,
+                           double rotDecel, double diffConvFactor, double sonarMaxRange,
+                           List<SonarUnit> sonarUnits, double laserX, double laserY, double laserTh,
+                           double laserMaxRange, String shape) {
+        this(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear, maxVelocity,
+                maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
+                sonarUnits, laserX, laserY, laserTh, laserMaxRange, shape, false);
+    }
+
+    /**
+     * @param has whether a gripper is mounted
+     * @return these parameters with or without a gripper
+     */
+    public RobotParameters withGripper(boolean has) {
+        return new RobotParameters(robotClass, subclass, robotRadius, robotWidth, robotLengthFront, robotLengthRear,
+                maxVelocity, maxRVelocity, transAccel, transDecel, rotAccel, rotDecel, diffConvFactor, sonarMaxRange,
+                sonarUnits, laserX, laserY, laserTh, laserMaxRange, shape, has);
     }
 
     /** @return whether the body is round */

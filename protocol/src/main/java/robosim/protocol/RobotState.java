@@ -29,11 +29,43 @@ import java.util.List;
  *                   of {@value #BUMPER_SECTORS}, sector 0 centred dead ahead, counting counter-clockwise
  * @param truePose   the robot's true pose (x mm, y mm, th degrees) when it asked for it with
  *                   {@link Command.ReportTruePose}; null otherwise
+ * @param gripper    the state of the robot's gripper, or null when its parameters give it none
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
                          int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose) {
+                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper) {
+
+    /**
+     * A state without a gripper.
+     *
+     * @param step       the step these values are the result of
+     * @param timeMs     simulated time at the end of that step
+     * @param x          odometry x in mm
+     * @param y          odometry y in mm
+     * @param th         odometry heading in degrees
+     * @param vel        translational velocity in mm/s
+     * @param rotVel     rotational velocity in deg/s
+     * @param leftVel    left wheel velocity in mm/s
+     * @param rightVel   right wheel velocity in mm/s
+     * @param stalled    whether the last motion was stopped by a collision
+     * @param sonar      sonar ranges in mm
+     * @param collisions collisions counted since the start
+     * @param laser      the laser's latest scan in mm
+     * @param heat       the heat sensor's reading, or null
+     * @param messages   the messages delivered in that step
+     * @param errors     what was wrong with requests of the robot
+     * @param bumpers    the bumper ring's contacts
+     * @param truePose   the robot's true pose, or null
+     */
+    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
+                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
+                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
+                      int bumpers, double[] truePose) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
+                messages, errors, bumpers, truePose, null);
+    }
 
     /**
      * A state without the true pose.

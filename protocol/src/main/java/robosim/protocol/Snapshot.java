@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.List;
 
 /**
@@ -12,15 +13,19 @@ import java.util.List;
  * @param said     what robots said in this step
  * @param events   the robots that joined or went since the snapshot before, in the order they did;
  *                 absent (read as none) in recordings made before robots could join a run under way
+ * @param objects  the world's movable objects (pucks) where they are now, in the world file's order;
+ *                 absent (read as none) in recordings made before worlds had objects
  */
 public record Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
-                          List<Said> said, List<Event> events) implements Message {
+                          List<Said> said, List<Event> events,
+                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<ObjectView> objects) implements Message {
     /** Copies the lists so the record stays immutable. */
     public Snapshot {
         robots = List.copyOf(robots);
         messages = messages == null ? List.of() : List.copyOf(messages);
         said = said == null ? List.of() : List.copyOf(said);
         events = events == null ? List.of() : List.copyOf(events);
+        objects = objects == null ? List.of() : List.copyOf(objects);
     }
 
     /**
@@ -41,7 +46,7 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those events
      */
     public Snapshot withEvents(List<Event> happened) {
-        return new Snapshot(step, timeMs, robots, messages, said, happened);
+        return new Snapshot(step, timeMs, robots, messages, said, happened, objects);
     }
 
     /**
@@ -133,4 +138,37 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
             this(name, x, y, th, stalled, connected, sonar, x, y, th, new int[0], 1, 0, 0);
         }
     }
+
+    /**
+     * A snapshot without world objects.
+     *
+     * @param step     the step just completed
+     * @param timeMs   simulated time after it
+     * @param robots   every robot
+     * @param messages the messages robots sent in this step
+     * @param said     what robots said in this step
+     * @param events   the robots that joined or went since the snapshot before
+     */
+    public Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages, List<Said> said,
+                    List<Event> events) {
+        this(step, timeMs, robots, messages, said, events, List.of());
+    }
+
+    /**
+     * @param others the world's objects where they are now
+     * @return this snapshot with those objects
+     */
+    public Snapshot withObjects(List<ObjectView> others) {
+        return new Snapshot(step, timeMs, robots, messages, said, events, others);
+    }
+
+    /**
+     * A movable world object (a puck) where it is now.
+     *
+     * @param x      its centre, mm
+     * @param y      its centre, mm
+     * @param heldBy the robot whose gripper holds it, or null when it lies on the floor
+     * @param lifted whether it is held off the floor (the holder's lift is not at the bottom)
+     */
+    public record ObjectView(double x, double y, String heldBy, boolean lifted) { }
 }

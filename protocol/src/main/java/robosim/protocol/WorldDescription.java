@@ -1,5 +1,6 @@
 package robosim.protocol;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import com.fasterxml.jackson.annotation.JsonSetter;
 import com.fasterxml.jackson.annotation.Nulls;
 import java.util.List;
@@ -17,6 +18,8 @@ import java.util.List;
  * @param minX      the world's left edge, mm: 0 for a world file, a map's own for a map
  * @param minY      the world's bottom edge, mm
  * @param zones     a map's forbidden lines and areas, which are not solid
+ * @param objects   the world's movable objects (pucks) where they start, in the world file's order;
+ *                  where they are later comes in each {@link Snapshot}
  *
  * <p>A description without {@code minX}, {@code minY} or {@code zones}, as recordings made before
  * maps hold them, reads as a world from (0, 0) without zones.
@@ -24,7 +27,8 @@ import java.util.List;
 public record WorldDescription(String name, double width, double height, int stepMs,
                                List<Obstacle> obstacles, List<RobotInfo> robots, List<HeatSource> heat,
                                @JsonSetter(nulls = Nulls.AS_EMPTY) double minX,
-                               @JsonSetter(nulls = Nulls.AS_EMPTY) double minY, List<Zone> zones)
+                               @JsonSetter(nulls = Nulls.AS_EMPTY) double minY, List<Zone> zones,
+                               @JsonInclude(JsonInclude.Include.NON_EMPTY) List<WorldObject> objects)
         implements Message {
     /** Copies the lists so the record stays immutable; an absent list of zones reads as none. */
     public WorldDescription {
@@ -32,6 +36,7 @@ public record WorldDescription(String name, double width, double height, int ste
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
         zones = zones == null ? List.of() : List.copyOf(zones);
+        objects = objects == null ? List.of() : List.copyOf(objects);
     }
 
     /**
@@ -99,4 +104,43 @@ public record WorldDescription(String name, double width, double height, int ste
      * @param parameters its body and sensor poses
      */
     public record RobotInfo(String name, String robotType, RobotParameters parameters) { }
+
+    /**
+     * A description without world objects.
+     *
+     * @param name      the world's name
+     * @param width     mm
+     * @param height    mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and obstacles
+     * @param robots    robots
+     * @param heat      the heat sources
+     * @param minX      the world's left edge, mm
+     * @param minY      the world's bottom edge, mm
+     * @param zones     a map's forbidden lines and areas
+     */
+    public WorldDescription(String name, double width, double height, int stepMs, List<Obstacle> obstacles,
+                            List<RobotInfo> robots, List<HeatSource> heat, double minX, double minY, List<Zone> zones) {
+        this(name, width, height, stepMs, obstacles, robots, heat, minX, minY, zones, List.of());
+    }
+
+    /**
+     * @param others the world's movable objects where they start
+     * @return this description with those objects
+     */
+    public WorldDescription withObjects(List<WorldObject> others) {
+        return new WorldDescription(name, width, height, stepMs, obstacles, robots, heat, minX, minY, zones, others);
+    }
+
+    /**
+     * A movable object of the world, as its {@code <object>} element gives it.
+     *
+     * @param type   its type, {@code puck}
+     * @param x      where it starts, mm
+     * @param y      where it starts, mm
+     * @param radius mm
+     * @param color  its colour as the world file names it (for cameras and viewers), or null
+     */
+    public record WorldObject(String type, double x, double y, double radius,
+                              @JsonInclude(JsonInclude.Include.NON_NULL) String color) { }
 }

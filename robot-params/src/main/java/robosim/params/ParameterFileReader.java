@@ -29,7 +29,9 @@ import java.util.regex.Pattern;
  * the laser keys of a later laser's section ({@code Laser 2 parameters}, ...) are ignored. The laser's
  * mounting pose comes from {@code LaserX}, {@code LaserY}, {@code LaserTh} and its range from
  * {@code LaserMaxRange} (default {@link RobotParameters#DEFAULT_LASER_MAX_RANGE}; ARIA's {@code 0}
- * also means the default). {@link #conversionFactors} reads the file's conversion factors.
+ * also means the default). {@code HasGripper true} (RoboSim's own key; ARIA's files have none, and
+ * a Pioneer's gripper is an accessory, so the default is none) mounts a Pioneer 2-DOF gripper.
+ * {@link #conversionFactors} reads the file's conversion factors.
  *
  * <p>{@link XmlParameterFileReader} reads the same parameters from XML under the same rules;
  * {@link RobotParametersReader} picks one by extension.
@@ -150,6 +152,7 @@ public final class ParameterFileReader {
                 case "class" -> rules.robotClass(value(file, lineNo, words));
                 case "subclass" -> rules.subclass(value(file, lineNo, words));
                 case "robotshape" -> rules.shape(value(file, lineNo, words), lineNo);
+                case "hasgripper" -> rules.hasGripper(value(file, lineNo, words), lineNo);
                 case "sonarnum" -> rules.sonarNum(value(file, lineNo, words), lineNo);
                 case "sonarunit" -> {
                     // ARIA's MTX lines add board, unit, gain, threshold, range and a flag: RoboSim models the pose

@@ -86,6 +86,7 @@ final class ParameterRules {
     private String robotClass = "Pioneer";
     private String subclass;
     private String shape = RobotParameters.RECTANGLE;
+    private boolean hasGripper;
     private Integer sonarNum;
     private int sonarNumLine;
     private final Map<Integer, SonarUnit> sonars = new TreeMap<>();
@@ -121,6 +122,15 @@ final class ParameterRules {
 
     void subclass(String value) {
         subclass = value;
+    }
+
+    /** Sets whether a Pioneer gripper is mounted: {@code true}/{@code false} or {@code 1}/{@code 0}. */
+    void hasGripper(String value, int line) {
+        String v = value.toLowerCase(Locale.ROOT);
+        if (!Set.of("true", "false", "1", "0").contains(v)) {
+            throw error(line, "HasGripper '" + value + "' must be true, false, 1 or 0");
+        }
+        hasGripper = v.equals("true") || v.equals("1");
     }
 
     /** Sets the body's shape: {@code rectangle} or {@code round}. */
@@ -293,7 +303,7 @@ final class ParameterRules {
                 numbers.get("diffconvfactor"), numbers.get("sonarmaxrange"),
                 List.copyOf(sonars.values()),
                 numbers.get("laserx"), numbers.get("lasery"), numbers.get("laserth"),
-                laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange, shape);
+                laserRange == 0 ? RobotParameters.DEFAULT_LASER_MAX_RANGE : laserRange, shape, hasGripper);
     }
 
     /** Logs the file's one warning, if it has anything to warn of. */

@@ -50,7 +50,7 @@ public final class XmlParameterFileReader {
     private static final Set<String> NUMBERS = Set.of("robotRadius", "robotDiagonal", "robotWidth",
             "robotLength", "robotLengthFront", "robotLengthRear", "maxVelocity", "maxRVelocity", "transAccel",
             "transDecel", "rotAccel", "rotDecel", "diffConvFactor", "sonarMaxRange");
-    private static final Set<String> OTHERS = Set.of("class", "subclass", "robotShape", "sonarNum", "sonarUnit", "laser");
+    private static final Set<String> OTHERS = Set.of("class", "subclass", "robotShape", "hasGripper", "sonarNum", "sonarUnit", "laser");
     private static final List<String> SONAR_ATTRIBUTES = List.of("number", "x", "y", "th");
     /** The laser's attributes; with {@code laser} in front they are the {@code .p} keys. */
     private static final List<String> LASER_ATTRIBUTES = List.of("x", "y", "th", "maxRange");
@@ -226,6 +226,7 @@ public final class XmlParameterFileReader {
             case "class" -> rules.robotClass(text(name, line));
             case "subclass" -> rules.subclass(text(name, line));
             case "robotShape" -> rules.shape(text(name, line), line);
+            case "hasGripper" -> rules.hasGripper(text(name, line), line);
             case "sonarNum" -> rules.sonarNum(text(name, line), line);
             case "sonar" -> forEachChild(name, line, this::originalSonarUnit);
             case "sonarUnit" -> {

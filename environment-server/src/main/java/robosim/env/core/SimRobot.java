@@ -39,6 +39,8 @@ final class SimRobot {
     private final Sensors sensors;
     private final Odometry odometry;
     boolean connected;
+    /** How its motion is swept: through the world's pucks, which it pushes. */
+    Sweeper sweeper = Sweeper.PLAIN;
 
     SimRobot(String name, String type, RobotParameters params, BodyShape body, int bodyId,
              double x, double y, double th, Noise noise, RandomGenerator random) {
@@ -76,7 +78,7 @@ final class SimRobot {
             bumpers = bumpers(geometry);
             return;
         }
-        SweepResult r = geometry.sweep(bodyId, vel * dt, Math.toRadians(rotVel) * dt);
+        SweepResult r = sweeper.sweep(geometry, bodyId, vel * dt, Math.toRadians(rotVel) * dt);
         Pose2D p = r.pose();
         distance += Math.abs(vel * dt) * r.fraction();
         x = p.x();

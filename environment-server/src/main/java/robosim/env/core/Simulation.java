@@ -58,6 +58,9 @@ public final class Simulation {
     private final MessageRouter messages;
     private final RunEvents events;
     private long step;
+    /** The world's movable objects, and the robots' grippers that hold them. */
+    private final Pucks pucks;
+    private final Grippers grippers;
 
     /**
      * A simulation with seed 1.
@@ -93,6 +96,8 @@ public final class Simulation {
         }
         geometry = new GeometryClient(obstacles);
         placement = new Placement(geometry);
+        pucks = new Pucks(world.objects());
+        grippers = new Grippers(pucks, geometry);
         SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
             BodyShape body = RobotSpec.bodyOf(spec.parameters());
@@ -104,6 +109,7 @@ public final class Simulation {
             order.add(newRobot(spec, spec.parameters(), body, id, streams.split()));
             starts.add(spec);
         }
+        pucks.place(geometry);
         unread = new boolean[order.size()];
         Arrays.fill(unread, true);
         // the messages' losses draw from a stream of their own, so they do not shift the robots' noise
@@ -112,8 +118,10 @@ public final class Simulation {
     }
 
     private SimRobot newRobot(RobotSpec spec, RobotParameters p, BodyShape body, int bodyId, RandomGenerator random) {
-        return new SimRobot(spec.name(), spec.type(), p, body, bodyId, spec.x(), spec.y(), spec.th(), world.noise(),
-                random);
+        SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, bodyId, spec.x(), spec.y(), spec.th(),
+                world.noise(), random);
+        r.sweeper = pucks;
+        return r;
     }
 
     /**
@@ -270,6 +278,7 @@ public final class Simulation {
         for (SimRobot r : order) {
             r.move(geometry, dt);
         }
+        grippers.step(order, dt);
         step = current;
         readSensors();
         messages.deliver(step, new RobotPositions(this::robot, geometry), RobotPositions.connected(order));
@@ -287,6 +296,11 @@ public final class Simulation {
             events.take(r, e, current);
         } else if (c instanceof Command.Simulator s) {
             simulator(r, s, current);
+        } else if (c instanceof Command.Accessory a) {
+            String refusal = grippers.command(r, a, current);
+            if (refusal != null) {
+                messages.error(r.name, refusal);
+            }
         } else {
             throw new IllegalStateException("no handler for the command group of " + c);
         }
@@ -401,7 +415,7 @@ public final class Simulation {
     public RobotState state(String name) {
         SimRobot r = robot(name);
         readIfUnread(indexes.get(name));
-        return r.state(step, timeMs(), messages.delivered(name), messages.errors(name));
+        return grippers.withGripper(r, r.state(step, timeMs(), messages.delivered(name), messages.errors(name)));
     }
 
     /**
@@ -446,12 +460,13 @@ public final class Simulation {
     /** @return the moving parts of the world now, for viewers */
     public Snapshot snapshot() {
         readUnread();
-        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said());
+        return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said())
+                .withObjects(pucks.views(grippers::lifted));
     }
 
     /** @return the static world, with every robot in it now, for viewers */
     public WorldDescription description() {
-        return Views.description(world, order);
+        return Views.description(world, order).withObjects(Views.objects(world));
     }
 
     /**

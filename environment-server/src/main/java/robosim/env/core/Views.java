@@ -47,4 +47,13 @@ final class Views {
         return new WorldDescription(world.name(), world.width(), world.height(), world.stepMs(), obs, infos, heat,
                 world.minX(), world.minY(), zones);
     }
+
+    /** @return the world's movable objects where they start */
+    static List<WorldDescription.WorldObject> objects(World world) {
+        List<WorldDescription.WorldObject> objects = new ArrayList<>();
+        for (robosim.env.world.WorldObject o : world.objects()) {
+            objects.add(new WorldDescription.WorldObject(o.type(), o.x(), o.y(), o.radius(), o.color()));
+        }
+        return objects;
+    }
 }

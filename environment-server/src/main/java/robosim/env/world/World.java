@@ -29,11 +29,12 @@ import robosim.comms.CommsSettings;
  * @param zones     the forbidden lines and areas of a map: kept for robot programs and viewers,
  *                  not solid
  * @param rules     who may join the run and when it ends ({@link RunRules#DEFAULT} by default)
+ * @param objects   the movable objects (pucks) where they start, in file order
  */
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
                     CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones,
-                    RunRules rules) {
+                    RunRules rules, List<WorldObject> objects) {
     /** The widest and highest world a world file may describe, mm (100 km). */
     public static final double MAX_SIZE = 100_000_000;
 
@@ -50,7 +51,7 @@ public record World(String name, Path source, double width, double height, int s
                     + " has places for 1 to " + robots.size());
         }
         return new World(name, source, width, height, stepMs, obstacles, robots.subList(0, count), heat, noise,
-                comms, gold, minX, minY, zones, rules);
+                comms, gold, minX, minY, zones, rules, objects);
     }
 
     /**
@@ -61,7 +62,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withRobots(List<RobotSpec> others) {
         return new World(name, source, width, height, stepMs, obstacles, others, heat, noise, comms, gold, minX, minY,
-                zones, rules);
+                zones, rules, objects);
     }
 
     /**
@@ -72,7 +73,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withRules(RunRules other) {
         return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
-                zones, other);
+                zones, other, objects);
     }
 
     /** @return the world's extent */
@@ -86,8 +87,45 @@ public record World(String name, Path source, double width, double height, int s
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
         zones = List.copyOf(zones);
+        objects = objects == null ? List.of() : List.copyOf(objects);
         Objects.requireNonNull(comms, "comms");
         Objects.requireNonNull(rules, "rules");
+    }
+
+    /**
+     * A world without movable objects.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the sensor and odometry noise
+     * @param comms     how messages travel between robots
+     * @param gold      the gold, or null
+     * @param minX      the world's left edge, mm
+     * @param minY      the world's bottom edge, mm
+     * @param zones     the forbidden lines and areas of a map
+     * @param rules     who may join the run and when it ends
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
+                 CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones,
+                 RunRules rules) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY, zones,
+                rules, List.of());
+    }
+
+    /**
+     * @param others the movable objects, already placed and checked
+     * @return the same world with those objects
+     */
+    public World withObjects(List<WorldObject> others) {
+        return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
+                zones, rules, others);
     }
 
     /**

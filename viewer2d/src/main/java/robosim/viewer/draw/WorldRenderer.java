@@ -22,6 +22,7 @@ import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
  * Draws one snapshot of the world: background, optional grid, heat sources, obstacles, border,
+ * the movable objects (pucks) where the snapshot puts them,
  * robots, optional laser scans, sonar rays, odometry ghosts and names; and under the world a key
  * with the step and the simulated time, a scale bar and a legend. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
  * renderer may serve several threads, and the window, recorder and replay views can share it.
@@ -136,6 +137,7 @@ public final class WorldRenderer {
                     out[1] = view.py(y);
                 });
             }
+            ObjectPainter.draw(g, view, world, snapshot);
             if (snapshot != null) {
                 drawRobots(g, view, world, snapshot, options);
             }

@@ -77,6 +77,11 @@ final class WorldElement extends Element {
         children.add(spawn);
     }
 
+    @JsonSetter("object")
+    void addObject(ObjectElement object) {
+        children.add(object);
+    }
+
     @Override
     String tag() {
         return "world";

@@ -13,6 +13,7 @@ import robosim.env.world.Obstacle;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.env.world.RobotSpec;
+import robosim.env.world.WorldObject;
 
 /**
  * Reads a world file (see {@code docs/WORLD-FORMAT.md}) into a {@link World}, checking every
@@ -139,8 +140,16 @@ public final class WorldReader {
         List<Pose2D> homes = map != null ? map.homes()
                 : List.of(new Pose2D(bounds.minX() + width / 2, bounds.minY() + height / 2, 0));
         robots.addAll(MapWorlds.place(placer, requests, homes));
+        ObjectPlacer objectPlacer = new ObjectPlacer(attributes, bounds, obstacles, obstacleNames, robots);
+        List<WorldObject> objects = new ArrayList<>();
+        for (Element child : root.children) {
+            if (child instanceof ObjectElement object) {
+                objects.add(objectPlacer.place(object));
+            }
+        }
         return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, bounds.minX(),
-                bounds.minY(), map == null ? List.of() : map.zones(), RunRulesReader.read(attributes, root, bounds, gold));
+                bounds.minY(), map == null ? List.of() : map.zones(), RunRulesReader.read(attributes, root, bounds, gold),
+                objects);
     }
 
     /** @return the world's {@code <map>}, or null; a world has at most one */
