@@ -331,7 +331,11 @@ class MessageCodecTest {
                 + "{\"cmd\":\"driveLimit\",\"limit\":\"TRANS_DECEL\",\"value\":400.0},"
                 + "{\"cmd\":\"truePose\",\"x\":-1500.0,\"y\":2500.0,\"th\":90.0},"
                 + "{\"cmd\":\"resetToStart\"},"
-                + "{\"cmd\":\"reportTruePose\",\"on\":true}]}", json);
+                + "{\"cmd\":\"reportTruePose\",\"on\":true},"
+                + "{\"cmd\":\"ptz\",\"model\":\"SONY\",\"mountHeight\":420.0},"
+                + "{\"cmd\":\"aimPtz\",\"pan\":-12.5,\"tilt\":4.0,\"zoom\":300},"
+                + "{\"cmd\":\"trackColors\",\"on\":true},"
+                + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"}]}", json);
     }
 
     @Test

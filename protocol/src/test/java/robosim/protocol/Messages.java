@@ -81,7 +81,11 @@ final class Messages {
                 new Command.SetDriveLimit(Command.DriveLimit.TRANS_DECEL, 400),
                 new Command.SetTruePose(-1500, 2500, 90),
                 new Command.ResetToStart(),
-                new Command.ReportTruePose(true)));
+                new Command.ReportTruePose(true),
+                new Command.ConfigurePtz(PtzModel.SONY, 420),
+                new Command.AimPtz(-12.5, 4, 300),
+                new Command.TrackColors(true),
+                new Command.BindChannel(3, "#00ff7f")));
     }
 
     static ViewerHello viewerHello() {

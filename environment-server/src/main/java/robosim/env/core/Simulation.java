@@ -58,6 +58,7 @@ public final class Simulation {
     private final MessageRouter messages;
     private final RunEvents events;
     private long step;
+    private final CameraScene cameraScene;
 
     /**
      * A simulation with seed 1.
@@ -92,6 +93,7 @@ public final class Simulation {
             obstacles.add(o.polygon());
         }
         geometry = new GeometryClient(obstacles);
+        cameraScene = new CameraScene(world.obstacles());
         placement = new Placement(geometry);
         SplittableRandom streams = new SplittableRandom(seed);
         for (RobotSpec spec : world.robots()) {
@@ -245,6 +247,7 @@ public final class Simulation {
     private void readIfUnread(int i) {
         if (unread[i]) {
             order.get(i).readSensors(geometry, world.heat());
+            CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry));
             unread[i] = false;
         }
     }
@@ -354,6 +357,9 @@ public final class Simulation {
 
     private void readSensors() {
         parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat()));
+        List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry);
+        double dt = world.stepMs() / 1000.0;
+        parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
     }
 
     /**
