@@ -7,7 +7,7 @@ import java.util.List;
  * colours, the blobs of each bound channel in its {@value #IMAGE_WIDTH} × {@value #IMAGE_HEIGHT} image.
  *
  * @param model the camera
- * @param pan   degrees, positive to the left, where the camera is now (it moves at its own speed)
+ * @param pan   degrees, positive to the right as in ARIA's ArPTZ.h, where the camera is now (it moves at its own speed)
  * @param tilt  degrees, positive up
  * @param zoom  the camera's zoom units
  * @param blobs the blobs by channel, then largest first, at most {@value #MAX_BLOBS} per channel;

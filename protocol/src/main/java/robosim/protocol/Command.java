@@ -403,7 +403,7 @@ public sealed interface Command {
      *
      * Its constructor throws IllegalArgumentException if pan or tilt is not finite.
      *
-     * @param pan  degrees, positive to the left
+     * @param pan  degrees, positive to the right (ARIA's ArPTZ.h: "- is to the left, + to the right")
      * @param tilt degrees, positive up
      * @param zoom the camera's zoom units
      */

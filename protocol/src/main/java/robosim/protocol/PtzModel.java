@@ -2,7 +2,7 @@ package robosim.protocol;
 
 /**
  * The pan-tilt-zoom cameras a robot may carry, with the limits, fields of view and speeds ARIA
- * gives them. Angles in degrees (pan positive to the left, tilt positive up), zoom in the
+ * gives them. Angles in degrees (pan positive to the right as ARIA's ArPTZ.h has it, tilt positive up), zoom in the
  * device's own units from {@link #minZoom()} (widest) to {@link #maxZoom()} (narrowest).
  */
 public enum PtzModel {
@@ -44,12 +44,12 @@ public enum PtzModel {
         this.tiltSpeed = tiltSpeed;
     }
 
-    /** @return the farthest pan to the left, degrees */
+    /** @return the farthest pan to the right, degrees */
     public double maxPosPan() {
         return maxPosPan;
     }
 
-    /** @return the farthest pan to the right, degrees (negative) */
+    /** @return the farthest pan to the left, degrees (negative) */
     public double maxNegPan() {
         return maxNegPan;
     }

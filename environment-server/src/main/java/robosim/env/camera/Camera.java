@@ -89,7 +89,7 @@ public final class Camera {
      *
      * @param x       the robot's x, mm
      * @param y       the robot's y, mm
-     * @param thDeg   the robot's heading, degrees
+     * @param thDeg   the robot's heading, degrees; the camera looks at the heading minus its pan
      * @param dt      seconds the camera moves for (0 for a reading before the first step)
      * @param shapes  what there is to see
      * @param ownBody the robot's own body, which its camera does not see
@@ -102,7 +102,7 @@ public final class Camera {
         List<robosim.protocol.ColorBlob> blobs = List.of();
         if (tracking) {
             double fov = Math.toRadians(ptz.model().fieldOfView(ptz.zoom()));
-            int[] image = CameraImage.render(x, y, mountHeight, Math.toRadians(thDeg + ptz.pan()),
+            int[] image = CameraImage.render(x, y, mountHeight, Math.toRadians(thDeg - ptz.pan()),
                     Math.toRadians(ptz.tilt()), fov, shapes, ownBody);
             blobs = BlobFinder.find(image, channels);
         }

@@ -57,7 +57,7 @@ public final class PtzMotion {
         return model;
     }
 
-    /** @return degrees, positive to the left */
+    /** @return degrees, positive to the right */
     public double pan() {
         return pan;
     }

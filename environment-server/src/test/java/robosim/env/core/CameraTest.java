@@ -107,16 +107,16 @@ class CameraTest {
     }
 
     @Test
-    void panningLeftMovesTheBlobRightAtTheCamerasSpeed() {
+    void panningRightMovesTheBlobLeftAtTheCamerasSpeed() {
         Simulation sim = sim(List.of(redBox()), PtzModel.VCC4);
         CameraView first = aimAndWait(sim, 20, 0, 0, 1);
         assertEquals(PtzModel.VCC4.panSpeed() * 0.1, first.pan(), 1e-9, "one 100 ms step at 90 deg/s");
         CameraView view = aimAndWait(sim, 20, 0, 0, 3);
         assertEquals(20, view.pan(), 1e-9);
         ColorBlob b = channel(view, 1).get(0);
-        assertTrue(b.xcg() > 80 + 20, "the box is now right of centre: " + b);
-        CameraView right = aimAndWait(sim, -15, 0, 0, 5);
-        assertTrue(channel(right, 1).get(0).xcg() < 80 - 20, "panning right moves it left");
+        assertTrue(b.xcg() < 80 - 20, "ARIA's + pans right, so the box is now left of centre: " + b);
+        CameraView left = aimAndWait(sim, -15, 0, 0, 5);
+        assertTrue(channel(left, 1).get(0).xcg() > 80 + 20, "panning left moves it right");
     }
 
     @Test
@@ -143,7 +143,7 @@ class CameraTest {
     @Test
     void aimsBeyondTheLimitsAreClampedAsAriaClampsThem() {
         CameraView vcc4 = aimAndWait(sim(List.of(), PtzModel.VCC4), 500, -500, 99999, 20);
-        assertEquals(98, vcc4.pan());
+        assertEquals(98, vcc4.pan(), "ArVCC4.h's MAX_PAN");
         assertEquals(-30, vcc4.tilt());
         assertEquals(1960, vcc4.zoom());
         CameraView vcc4Low = aimAndWait(sim(List.of(), PtzModel.VCC4), -500, 500, -7, 20);
