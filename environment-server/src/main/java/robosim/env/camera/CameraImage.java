@@ -42,7 +42,7 @@ public final class CameraImage {
                                double fieldOfView, List<ColoredShape> shapes, int ownBody) {
         List<ColoredShape> near = new ArrayList<>();
         for (ColoredShape s : shapes) {
-            if (s.owner() != ownBody && s.near(x, y, MAX_RANGE)) {
+            if ((ownBody < 0 || s.owner() != ownBody) && s.near(x, y, MAX_RANGE)) {
                 near.add(s);
             }
         }
@@ -51,25 +51,26 @@ public final class CameraImage {
         double halfWidth = Math.tan(fieldOfView / 2);
         double halfHeight = halfWidth * H / W;
         double[] dist = new double[near.size()];
-        Integer[] order = new Integer[near.size()];
+        Integer[] hits = new Integer[near.size()];
         for (int u = 0; u < W; u++) {
             double offset = -Math.atan(columnCentre(u) * halfWidth);
             double dx = Math.cos(direction + offset);
             double dy = Math.sin(direction + offset);
+            int count = 0;
             for (int k = 0; k < near.size(); k++) {
                 dist[k] = near.get(k).hit(x, y, dx, dy);
-                order[k] = k;
+                if (dist[k] <= MAX_RANGE) {
+                    hits[count++] = k;
+                }
             }
-            java.util.Arrays.sort(order, (a, b) -> a.equals(b) ? 0
-                    : dist[a] != dist[b] ? Double.compare(dist[a], dist[b]) : Integer.compare(a, b));
+            // nearest first; equal distances in the order the shapes were given, so runs repeat exactly
+            java.util.Arrays.sort(hits, 0, count, (a, b) -> dist[a] != dist[b] ? Double.compare(dist[a], dist[b])
+                    : Integer.compare(a, b));
             boolean[] painted = new boolean[H];
             int left = H;
-            for (int k = 0; k < order.length && left > 0; k++) {
-                double d = dist[order[k]];
-                if (d > MAX_RANGE) {
-                    break;
-                }
-                ColoredShape s = near.get(order[k]);
+            for (int k = 0; k < count && left > 0; k++) {
+                double d = dist[hits[k]];
+                ColoredShape s = near.get(hits[k]);
                 double[] span = verticalSpan(d * Math.cos(offset), -height, s.height() - height, tilt);
                 if (span == null) {
                     continue;
