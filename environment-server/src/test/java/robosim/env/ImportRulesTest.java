@@ -26,6 +26,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class ImportRulesTest {
     private static final String CORE = "src/main/java/robosim/env/core";
+    /** The camera's rendering, which the core calls while it reads the sensors. */
+    private static final String CAMERA = "src/main/java/robosim/env/camera";
     private static final String GEOMETRY = "../geometry-client/src/main";
 
     static Stream<Arguments> geometryRules() {
@@ -66,6 +68,14 @@ class ImportRulesTest {
     @MethodSource("rules")
     void theCoreDoesNotUse(String what, String regex) throws IOException {
         assertEquals(List.of(), offences(sources(CORE), Pattern.compile(regex)), "robosim.env.core must not use " + what);
+    }
+
+    @ParameterizedTest(name = "the camera does not use {0}")
+    @MethodSource("rules")
+    void theCameraDoesNotUse(String what, String regex) throws IOException {
+        List<Path> camera = sources(CAMERA);
+        assertTrue(camera.stream().anyMatch(f -> f.endsWith("CameraImage.java")), "scanned " + camera);
+        assertEquals(List.of(), offences(camera, Pattern.compile(regex)), "robosim.env.camera must not use " + what);
     }
 
     @Test

@@ -15,7 +15,8 @@ import robosim.protocol.Command;
  * Turns the robot's {@link Command}s into the Pioneer commands ARIA would send for them: VEL, RVEL,
  * VEL2 (in units of the Vel2Divisor), MOVE, HEAD, DHEAD, STOP, SETV, SETRV, SETA and SETRA, SONAR,
  * the simulated laser's commands, GRIPPER and GRIPPERVAL, SIM_MESSAGE, SIM_SET_POSE, SIM_RESET and SIM_STAT. A command the
- * protocol cannot carry (messages between robots, a find report, the heat sensor, wheel moves) is
+ * protocol cannot carry (messages between robots, a find report, the heat sensor, wheel moves, the
+ * pan-tilt-zoom camera and ACTS, which a real robot drives over its AUX serial port) is
  * answered with an error in the robot's next state, once for each kind, instead of being dropped in
  * silence. No sockets: the link sends what it returns.
  */
@@ -90,6 +91,12 @@ final class CommandToPackets {
         }
         if (c instanceof Command.ReportFound) {
             return refuse("report of a find to the Environment", "ReportFound");
+        }
+        if (c instanceof Command.ConfigurePtz || c instanceof Command.AimPtz || c instanceof Command.TrackColors
+                || c instanceof Command.BindChannel) {
+            // a real camera hangs on the AUX serial port, which RoboSim's Pioneer server does not simulate
+            return refuse("pan-tilt-zoom camera or ACTS colour tracking (a real camera is driven through the"
+                    + " AUX serial port, which this server does not simulate)", c.getClass().getSimpleName());
         }
         return refuse("messages between robots", c.getClass().getSimpleName());
     }

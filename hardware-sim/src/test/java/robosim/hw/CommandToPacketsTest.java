@@ -84,4 +84,14 @@ class CommandToPacketsTest {
         to.packets(new Command.ConfigureHeatSensor(true, 90, 3000));
         assertTrue(to.takeErrors().get(0).contains("no heat sensor"));
     }
+
+    @Test
+    void theCameraIsRefusedNamingTheAuxPort() {
+        assertTrue(to.packets(new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300)).isEmpty());
+        assertTrue(to.packets(new Command.AimPtz(10, 0, 0)).isEmpty());
+        List<String> errors = to.takeErrors();
+        assertEquals(2, errors.size(), errors.toString());
+        assertTrue(errors.get(0).startsWith("ConfigurePtz was not carried out"), errors.get(0));
+        assertTrue(errors.get(1).contains("AUX serial port"), errors.get(1));
+    }
 }

@@ -38,6 +38,10 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.ResetToStart.class, name = "resetToStart"),
         @JsonSubTypes.Type(value = Command.ReportTruePose.class, name = "reportTruePose"),
         @JsonSubTypes.Type(value = Command.Gripper.class, name = "gripper"),
+        @JsonSubTypes.Type(value = Command.ConfigurePtz.class, name = "ptz"),
+        @JsonSubTypes.Type(value = Command.AimPtz.class, name = "aimPtz"),
+        @JsonSubTypes.Type(value = Command.TrackColors.class, name = "trackColors"),
+        @JsonSubTypes.Type(value = Command.BindChannel.class, name = "bindChannel"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -436,6 +440,71 @@ public sealed interface Command {
          */
         public Gripper(int op) {
             this(op, 0);
+        }
+    }
+
+    /**
+     * Switches on the robot's pan-tilt-zoom camera (ARIA's {@code ArPTZ::init}): it starts at pan 0,
+     * tilt 0 and its widest zoom, at the robot's centre and this height.
+     *
+     * Its constructor throws IllegalArgumentException if the model is missing or the height is not
+     * a finite number greater than 0.
+     *
+     * @param model       the camera, which gives its limits, field of view and speed
+     * @param mountHeight the lens's height above the floor, mm
+     */
+    record ConfigurePtz(PtzModel model, double mountHeight) implements SensorSetting {
+        public ConfigurePtz {
+            named(model == null ? null : model.name(), "a camera needs its model");
+            positive("camera mountHeight", mountHeight);
+        }
+    }
+
+    /**
+     * Points the camera (ARIA's {@code panTilt} and {@code zoom}): it moves there at its own speed,
+     * the values clamped into its limits as ARIA clamps them.
+     *
+     * Its constructor throws IllegalArgumentException if pan or tilt is not finite.
+     *
+     * @param pan  degrees, positive to the right (ARIA's ArPTZ.h: "- is to the left, + to the right")
+     * @param tilt degrees, positive up
+     * @param zoom the camera's zoom units
+     */
+    record AimPtz(double pan, double tilt, int zoom) implements SensorSetting {
+        public AimPtz {
+            finite("pan", pan);
+            finite("tilt", tilt);
+        }
+    }
+
+    /**
+     * Starts or stops ACTS's colour tracking on the camera's image (ARIA's
+     * {@code ArACTS_1_2::openPort} and {@code closePort}). A robot that has not switched its
+     * pan-tilt-zoom camera on tracks through a VC-C4 at its defaults, pointing straight ahead.
+     *
+     * @param on whether the blobs are computed and reported each step
+     */
+    record TrackColors(boolean on) implements SensorSetting { }
+
+    /**
+     * Binds an ACTS channel to a colour, or frees it: a pixel belongs to the channel when its colour
+     * is the channel's.
+     *
+     * Its constructor throws IllegalArgumentException if the channel is not from 1 to
+     * {@value CameraView#CHANNELS} or the colour is neither a name of {@link Colors} nor {@code #rrggbb}.
+     *
+     * @param channel 1 to {@value CameraView#CHANNELS}
+     * @param color   a colour's name or {@code #rrggbb}; null frees the channel
+     */
+    record BindChannel(int channel, String color) implements SensorSetting {
+        public BindChannel {
+            if (channel < 1 || channel > CameraView.CHANNELS) {
+                throw new IllegalArgumentException(channel + " was supplied for an ACTS channel: channels are 1 to "
+                        + CameraView.CHANNELS);
+            }
+            if (color != null) {
+                color = Colors.format(Colors.parse(color));
+            }
         }
     }
 

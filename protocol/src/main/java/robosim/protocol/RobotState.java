@@ -30,15 +30,18 @@ import java.util.List;
  * @param truePose   the robot's true pose (x mm, y mm, th degrees) when it asked for it with
  *                   {@link Command.ReportTruePose}; null otherwise
  * @param gripper    the state of the robot's gripper, or null when its parameters give it none
+ * @param camera     the pan-tilt-zoom camera's position and ACTS blobs once the robot switched its camera
+ *                   on ({@link Command.ConfigurePtz} or {@link Command.TrackColors}); null otherwise
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
                          int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
                          int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper) {
+                         @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) CameraView camera) {
 
     /**
-     * A state without a gripper.
+     * A state without a gripper or a camera.
      *
      * @param step       the step these values are the result of
      * @param timeMs     simulated time at the end of that step
@@ -64,7 +67,7 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
                       int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
                       int bumpers, double[] truePose) {
         this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, bumpers, truePose, null);
+                messages, errors, bumpers, truePose, null, null);
     }
 
     /**

@@ -332,7 +332,11 @@ class MessageCodecTest {
                 + "{\"cmd\":\"truePose\",\"x\":-1500.0,\"y\":2500.0,\"th\":90.0},"
                 + "{\"cmd\":\"resetToStart\"},"
                 + "{\"cmd\":\"reportTruePose\",\"on\":true},"
-                + "{\"cmd\":\"gripper\",\"op\":17,\"value\":-25}]}", json);
+                + "{\"cmd\":\"gripper\",\"op\":17,\"value\":-25},"
+                + "{\"cmd\":\"ptz\",\"model\":\"SONY\",\"mountHeight\":420.0},"
+                + "{\"cmd\":\"aimPtz\",\"pan\":-12.5,\"tilt\":4.0,\"zoom\":300},"
+                + "{\"cmd\":\"trackColors\",\"on\":true},"
+                + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"}]}", json);
     }
 
     @Test

@@ -82,7 +82,11 @@ final class Messages {
                 new Command.SetTruePose(-1500, 2500, 90),
                 new Command.ResetToStart(),
                 new Command.ReportTruePose(true),
-                new Command.Gripper(Command.Gripper.LIFT_CARRY, -25)));
+                new Command.Gripper(Command.Gripper.LIFT_CARRY, -25),
+                new Command.ConfigurePtz(PtzModel.SONY, 420),
+                new Command.AimPtz(-12.5, 4, 300),
+                new Command.TrackColors(true),
+                new Command.BindChannel(3, "#00ff7f")));
     }
 
     static ViewerHello viewerHello() {

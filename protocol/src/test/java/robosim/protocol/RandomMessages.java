@@ -103,7 +103,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(23)) {
+        return switch (random.nextInt(27)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -131,6 +131,11 @@ public final class RandomMessages {
             case 19 -> new Command.SetTruePose(finite(), finite(), finite());
             case 20 -> new Command.ResetToStart();
             case 21 -> new Command.ReportTruePose(random.nextBoolean());
+            case 23 -> new Command.ConfigurePtz(PtzModel.values()[random.nextInt(2)], positive());
+            case 24 -> new Command.AimPtz(finite(), finite(), (int) anyLong());
+            case 25 -> new Command.TrackColors(random.nextBoolean());
+            case 26 -> new Command.BindChannel(1 + random.nextInt(CameraView.CHANNELS),
+                    random.nextBoolean() ? null : Colors.format(random.nextInt(0x1000000)));
             default -> new Command.SetAccel(positive(), positive());
         };
     }

@@ -1,7 +1,6 @@
 package robosim.env.core;
 
 import java.util.HashMap;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.geometry.BodyShape;
@@ -36,7 +35,7 @@ final class Grippers {
 
     private final Pucks pucks;
     private final GeometryClient geometry;
-    private final Map<String, GripperModel> models = new ConcurrentHashMap<>();
+    private final Map<String, GripperModel> models = new HashMap<>();
     /** How far ahead of its holder's centre each held puck is, mm. */
     private final Map<String, Double> heldAt = new HashMap<>();
 
@@ -45,8 +44,8 @@ final class Grippers {
         this.geometry = geometry;
     }
 
-    /** @return the robot's gripper, or null when its parameters give it none */
-    private GripperModel model(SimRobot r) {
+    /** @return the robot's gripper, or null when its parameters give it none (states may be built in parallel) */
+    private synchronized GripperModel model(SimRobot r) {
         return r.params.hasGripper() ? models.computeIfAbsent(r.name, n -> new GripperModel()) : null;
     }
 
@@ -172,7 +171,7 @@ final class Grippers {
     }
 
     /** @return whether the robot holds something off the floor */
-    boolean lifted(String robot) {
+    synchronized boolean lifted(String robot) {
         GripperModel m = models.get(robot);
         return m != null && !m.down();
     }
@@ -185,6 +184,6 @@ final class Grippers {
         }
         return new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.leftVel(),
                 s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(), s.heat(), s.messages(), s.errors(),
-                s.bumpers(), s.truePose(), g);
+                s.bumpers(), s.truePose(), g, s.camera());
     }
 }

@@ -2,6 +2,7 @@ package robosim.env.core;
 
 import java.util.List;
 import java.util.random.RandomGenerator;
+import robosim.env.camera.Camera;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.geometry.GeometryClient;
@@ -49,6 +50,14 @@ final class Sensors {
         this.laserMaxRange = params.laserMaxRange();
     }
 
+    /** The pan-tilt-zoom camera and its ACTS colour tracking, read apart as it sees other robots. */
+    private final Camera camera = new Camera();
+
+    /** @return the pan-tilt-zoom camera */
+    Camera camera() {
+        return camera;
+    }
+
     /** Whether the ground-truth sensor is on: each state carries the true pose. */
     private boolean truePoseOn;
 
@@ -73,6 +82,8 @@ final class Sensors {
             heat = null;
         } else if (c instanceof Command.ReportTruePose t) {
             truePoseOn = t.on();
+        } else if (Camera.handles(c)) {
+            camera.configure(c);
         } else {
             throw new IllegalStateException("the sensors have no rule for " + c);
         }

@@ -174,7 +174,8 @@ final class SimRobot {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null);
+                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, null,
+                sensors.camera().view());
     }
 
     double x() {

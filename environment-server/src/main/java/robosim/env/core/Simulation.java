@@ -61,6 +61,7 @@ public final class Simulation {
     /** The world's movable objects, and the robots' grippers that hold them. */
     private final Pucks pucks;
     private final Grippers grippers;
+    private final CameraScene cameraScene;
 
     /**
      * A simulation with seed 1.
@@ -95,6 +96,7 @@ public final class Simulation {
             obstacles.add(o.polygon());
         }
         geometry = new GeometryClient(obstacles);
+        cameraScene = new CameraScene(world.obstacles());
         placement = new Placement(geometry);
         pucks = new Pucks(world.objects());
         grippers = new Grippers(pucks, geometry);
@@ -253,6 +255,7 @@ public final class Simulation {
     private void readIfUnread(int i) {
         if (unread[i]) {
             order.get(i).readSensors(geometry, world.heat());
+            CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry));
             unread[i] = false;
         }
     }
@@ -368,6 +371,9 @@ public final class Simulation {
 
     private void readSensors() {
         parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat()));
+        List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry);
+        double dt = world.stepMs() / 1000.0;
+        parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
     }
 
     /**

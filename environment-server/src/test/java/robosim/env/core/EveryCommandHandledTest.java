@@ -31,7 +31,9 @@ class EveryCommandHandledTest {
             new Command.Say("hello"), new Command.ReportFound("gold"),
             new Command.SetDriveLimit(Command.DriveLimit.ROT_DECEL, 50), new Command.ReportTruePose(true),
             new Command.SetTruePose(5000, 6000, 90), new Command.ResetToStart(),
-            new Command.Gripper(Command.Gripper.GRIP_CLOSE));
+            new Command.Gripper(Command.Gripper.GRIP_CLOSE),
+            new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300), new Command.AimPtz(10, 5, 100),
+            new Command.TrackColors(true), new Command.BindChannel(9, "#123456"));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {

@@ -9,6 +9,7 @@ import org.locationtech.jts.operation.valid.TopologyValidationError;
 import robosim.geometry.GeometryClient;
 import robosim.env.world.Obstacle;
 import robosim.env.world.World;
+import robosim.protocol.Colors;
 
 /**
  * Turns {@code <wall>} and {@code <polygon>} elements into {@link Obstacle}s, checking their
@@ -40,7 +41,7 @@ final class ObstacleFactory {
             throw attributes.error(e, "wall from (" + Attributes.format(x1) + ", " + Attributes.format(y1)
                     + ") to (" + Attributes.format(x2) + ", " + Attributes.format(y2) + ") has zero length");
         }
-        return new Obstacle(rectangle(x1, y1, x2, y2, thickness), height, e.line());
+        return new Obstacle(rectangle(x1, y1, x2, y2, thickness), height, e.line(), color(e, e.color));
     }
 
     /**
@@ -63,7 +64,20 @@ final class ObstacleFactory {
             xy[i] += dx;
             xy[i + 1] += dy;
         }
-        return new Obstacle(xy, o.height(), o.line());
+        return new Obstacle(xy, o.height(), o.line(), o.color());
+    }
+
+    /** @return the {@code color} attribute as {@code #rrggbb}, or null when absent */
+    private String color(Element e, String value) {
+        if (value == null) {
+            return null;
+        }
+        try {
+            return Colors.format(Colors.parse(value));
+        } catch (IllegalArgumentException bad) {
+            throw attributes.error(e, "attribute color on <" + e.tag() + "> is '" + value.trim()
+                    + "', not a colour: give #rrggbb or one of " + String.join(", ", new java.util.TreeSet<>(Colors.NAMES.keySet())));
+        }
     }
 
     private static double[] rectangle(double x1, double y1, double x2, double y2, double thickness) {
@@ -97,7 +111,7 @@ final class ObstacleFactory {
                     : "invalid (" + what + ")") + " at (" + Attributes.format(at.x) + ", "
                     + Attributes.format(at.y) + ")");
         }
-        return new Obstacle(signedArea(xy) < 0 ? reversed(xy) : xy, height, e.line());
+        return new Obstacle(signedArea(xy) < 0 ? reversed(xy) : xy, height, e.line(), color(e, e.color));
     }
 
     private double[] points(PolygonElement e, String text) {

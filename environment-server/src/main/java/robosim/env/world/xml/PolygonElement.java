@@ -8,6 +8,8 @@ final class PolygonElement extends Element {
     String points;
     @JacksonXmlProperty(isAttribute = true)
     String height;
+    @JacksonXmlProperty(isAttribute = true)
+    String color;
 
     @Override
     String tag() {

@@ -16,6 +16,8 @@ final class WallElement extends Element {
     String thickness;
     @JacksonXmlProperty(isAttribute = true)
     String height;
+    @JacksonXmlProperty(isAttribute = true)
+    String color;
 
     @Override
     String tag() {
