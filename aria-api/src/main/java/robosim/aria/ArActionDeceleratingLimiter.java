@@ -71,6 +71,11 @@ public class ArActionDeceleratingLimiter extends ArAction {
         this("limitAndDecel", LimiterType.FORWARDS);
     }
 
+    /** @param name the action's name; a forwards limiter with ARIA's default parameters */
+    public ArActionDeceleratingLimiter(String name) {
+        this(name, LimiterType.FORWARDS);
+    }
+
     /**
      * @param name the action's name
      * @param type which way it guards; ARIA's default parameters (see {@link #setParameters()})

@@ -32,6 +32,11 @@ public class ArActionDriveDistance extends ArAction {
         this("driveDistance", DEFAULT_SPEED, DEFAULT_DECELERATION);
     }
 
+    /** @param name the action's name; ARIA's defaults */
+    public ArActionDriveDistance(String name) {
+        this(name, DEFAULT_SPEED, DEFAULT_DECELERATION);
+    }
+
     /**
      * @param name         the action's name
      * @param speed        the fastest it drives, mm/s

@@ -51,6 +51,14 @@ public class ArActionGoto extends ArAction {
     }
 
     /**
+     * @param name the action's name
+     * @param goal where to go; ARIA's other defaults
+     */
+    public ArActionGoto(String name, ArPose goal) {
+        this(name, goal, DEFAULT_CLOSE_DIST, DEFAULT_SPEED, DEFAULT_SPEED_TO_TURN_AT, DEFAULT_TURN_AMOUNT);
+    }
+
+    /**
      * @param name          the action's name
      * @param goal          where to go (ARIA's goto starts going at once)
      * @param closeDist     how close to the goal counts as there, mm

@@ -44,6 +44,11 @@ public class ArActionGotoStraight extends ArAction {
         this("goto", DEFAULT_SPEED);
     }
 
+    /** @param name the action's name; ARIA's default speed */
+    public ArActionGotoStraight(String name) {
+        this(name, DEFAULT_SPEED);
+    }
+
     /**
      * @param name  the action's name
      * @param speed the fastest it drives, mm/s

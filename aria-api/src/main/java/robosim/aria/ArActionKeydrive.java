@@ -38,6 +38,11 @@ public class ArActionKeydrive extends ArAction {
         this("keydrive", DEFAULT_TRANS_VEL_MAX, DEFAULT_TURN_AMOUNT_MAX, DEFAULT_VEL_INCREMENT, DEFAULT_TURN_INCREMENT);
     }
 
+    /** @param name the action's name; ARIA's speeds and increments */
+    public ArActionKeydrive(String name) {
+        this(name, DEFAULT_TRANS_VEL_MAX, DEFAULT_TURN_AMOUNT_MAX, DEFAULT_VEL_INCREMENT, DEFAULT_TURN_INCREMENT);
+    }
+
     /**
      * @param name          the action's name
      * @param transVelMax   the top speed either way, mm/s

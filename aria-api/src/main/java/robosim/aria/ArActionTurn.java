@@ -30,6 +30,11 @@ public class ArActionTurn extends ArAction {
         this("turn", DEFAULT_SPEED_START_TURN, DEFAULT_SPEED_FULL_TURN, DEFAULT_TURN_AMOUNT);
     }
 
+    /** @param name the action's name; ARIA's defaults */
+    public ArActionTurn(String name) {
+        this(name, DEFAULT_SPEED_START_TURN, DEFAULT_SPEED_FULL_TURN, DEFAULT_TURN_AMOUNT);
+    }
+
     /**
      * @param name           the action's name
      * @param speedStartTurn at or below this speed it starts turning, mm/s

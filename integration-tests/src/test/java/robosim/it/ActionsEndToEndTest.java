@@ -147,7 +147,7 @@ class ActionsEndToEndTest {
                 """.formatted(x, y, th, LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 7, ServerOptions.loopback())) {
             CompletableFuture<Seen> seen = Background.supply("robot r1", () -> {
-                ArRobot robot = connect(env);
+                ArRobot robot = ActionPrograms.connect(env, "r1");
                 try {
                     return program.apply(robot);
                 } finally {
@@ -158,15 +158,6 @@ class ActionsEndToEndTest {
             RunReport report = env.await(60);
             return new Outcome(s, report.robots().get(0));
         }
-    }
-
-    /** Connects r1 and readies it for actions: every test's robot program starts here. */
-    private static ArRobot connect(LocalEnvironment env) {
-        ArRobot robot = new ArRobot("r1", "127.0.0.1", env.robotPort(), "p3dx.xml");
-        if (!robot.blockingConnect()) {
-            throw new IllegalStateException(robot.getConnectionError());
-        }
-        return robot;
     }
 
     /** Waits in simulated time, a cycle at a time, for a condition; false after {@link #PATIENCE_MS}. */

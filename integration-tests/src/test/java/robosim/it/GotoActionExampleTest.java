@@ -40,10 +40,7 @@ class GotoActionExampleTest {
                 """.formatted(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 7, ServerOptions.loopback())) {
             CompletableFuture<Seen> seen = Background.supply("robot r1", () -> {
-                ArRobot robot = new ArRobot("r1", "127.0.0.1", env.robotPort(), "p3dx.xml");
-                if (!robot.blockingConnect()) {
-                    throw new IllegalStateException(robot.getConnectionError());
-                }
+                ArRobot robot = ActionPrograms.connect(env, "r1");
                 ByteArrayOutputStream bytes = new ByteArrayOutputStream();
                 int achieved = GotoActionExample.drive(robot, 2500, 40_000,
                         new PrintStream(bytes, true, StandardCharsets.UTF_8));
