@@ -44,6 +44,11 @@ public final class RemoteControl {
         this.rotVel = limits.rotVel();
     }
 
+    /** @return whether the arrow keys feed the robot's keydrive action rather than drive while held */
+    public boolean keydrive() {
+        return target.keydrive();
+    }
+
     /** @return the sliders' bounds and starts */
     public SpeedLimits limits() {
         return limits;

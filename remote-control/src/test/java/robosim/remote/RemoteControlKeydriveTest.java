@@ -30,6 +30,7 @@ class RemoteControlKeydriveTest {
 
     @Test
     void eachPressIncludingAutoRepeatGoesToTheKeydriveAction() {
+        assertEquals(true, control.keydrive());
         assertEquals("sent: keydrive forward", control.keyPressed(KeyDrive.Key.FORWARD, 0));
         assertEquals("sent: keydrive forward", control.keyPressed(KeyDrive.Key.FORWARD, 30));
         assertEquals("sent: keydrive left", control.keyPressed(KeyDrive.Key.LEFT, 60));
