@@ -36,7 +36,6 @@ public class ArActionGoto extends ArAction {
     private double speed;
     private final double speedToTurnAt;
     private final double turnAmount;
-    private final double directionToTurn = 1;
     private double curTurnDir = 1;
     private State state;
 
@@ -94,7 +93,7 @@ public class ArActionGoto extends ArAction {
     public synchronized void setGoal(ArPose goal) {
         this.goal = ActionArgs.pose(getName(), "goal", goal);
         state = State.GOING_TO_GOAL;
-        curTurnDir = directionToTurn;
+        curTurnDir = 1;
     }
 
     /** @return the goal (a copy) */

@@ -61,6 +61,15 @@ class ArActionGotoTest {
     }
 
     @Test
+    void aGoalMoreThan120DegreesOffFlipsTheSideItTurnsTo() {
+        go.setGoal(new ArPose(-2000, 0, 0));
+        f.at(0, 0, 0, 100);
+        ArActionDesired slowed = new ArActionDesired();
+        slowed.setMaxVel(100);
+        assertEquals(-7, go.fire(slowed).getDeltaHeading());
+    }
+
+    @Test
     void aCancelledGoalAsksForNothing() {
         go.cancelGoal();
         f.at(0, 0, 0, 0);
