@@ -63,7 +63,7 @@ class ActionsEndToEndTest {
                 """.formatted(ROOM_WIDTH, x, y, th, LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 3, ServerOptions.loopback())) {
             CompletableFuture<List<Sample>> samples = Background.supply("robot r1", () -> {
-                ArRobot robot = ActionRobots.connect("r1", env.robotPort());
+                ArRobot robot = ActionPrograms.connect(env, "r1");
                 List<Sample> seen = new ArrayList<>();
                 robot.addUserTask("sample", 50, () -> seen.add(new Sample(robot.getSimTimeMs(), robot.getX(),
                         robot.getY(), robot.getTh(), robot.getVel(), robot.isStalled())));

@@ -76,6 +76,11 @@ final class RemoteCommand implements Callable<Integer> {
             + "; the Environment's, on HOST, for the view following the robot; default ${DEFAULT-VALUE}")
     int viewerPort;
 
+    @Option(names = "--keydrive", description = "the arrow keys feed ARIA's ArActionKeydrive (each press: 25 mm/s"
+            + " faster or slower up to 400, or a turn of 8 degrees), as ARIA's key handler does, instead of driving"
+            + " while held; a Pioneer only")
+    boolean keydrive;
+
     @Option(names = "--no-view", description = "show no view of the world (the viewer port is not reached)")
     boolean noView;
 
@@ -95,6 +100,9 @@ final class RemoteCommand implements Callable<Integer> {
         if (!isScout && !"pioneer".equals(type.toLowerCase(Locale.ROOT))) {
             throw bad("'" + type + "' was supplied for --type: it is pioneer or scout");
         }
+        if (isScout && keydrive) {
+            throw bad("--keydrive was given for a Scout: the keydrive action is ARIA's, a Pioneer's");
+        }
         requirePort("PORT", port);
         requirePort("--viewer-port", viewerPort);
         String file = params != null ? params : isScout ? Scout.DEFAULT_PARAMETERS : "p3dx";
@@ -109,7 +117,7 @@ final class RemoteCommand implements Callable<Integer> {
             return 1;
         }
         Supplier<RemoteRobot> connect = isScout ? () -> ScoutRemote.connect(name, host, port, parameters)
-                : () -> PioneerRemote.connect(name, host, port, parameters);
+                : () -> PioneerRemote.connect(name, host, port, parameters, keydrive);
         ViewerOptions view = noView ? null : ViewerOptions.of(host, viewerPort);
         RemoteSession session;
         try {

@@ -38,6 +38,22 @@ class RemoteCommandTest {
     }
 
     @Test
+    void keydriveIsRead() {
+        CommandLine cl = Main.commandLine();
+        cl.parseArgs("remote", "--keydrive", "r1", "localhost", "4000");
+        RemoteCommand remote = cl.getSubcommands().get("remote").getCommand();
+        assertTrue(remote.keydrive);
+    }
+
+    @Test
+    void keydriveForAScoutIsRefused() {
+        Run run = Run.execute("remote", "--scout", "--keydrive", "s1", "localhost", "4000");
+        assertEquals(2, run.exit());
+        assertEquals("robosim remote: --keydrive was given for a Scout: the keydrive action is ARIA's, a Pioneer's",
+                run.firstLine());
+    }
+
+    @Test
     void aPortOutOfRangeIsRefused() {
         Run run = Run.execute("remote", "r1", "localhost", "70000");
         assertEquals(2, run.exit());

@@ -48,4 +48,21 @@ public interface DriveTarget {
 
     /** @param message a checked message to send */
     void send(MessageDraft message);
+
+    /**
+     * @return whether the arrow keys step an ARIA keydrive action ({@code ArActionKeydrive}: each
+     *         press changes the speed or turns a little) rather than drive while held
+     */
+    default boolean keydrive() {
+        return false;
+    }
+
+    /**
+     * One arrow-key press for the robot's keydrive action; only called when {@link #keydrive()}.
+     *
+     * @param key the key pressed (again, when auto-repeat presses it)
+     */
+    default void keydrive(KeyDrive.Key key) {
+        throw new UnsupportedOperationException("robot " + name() + " has no keydrive action");
+    }
 }

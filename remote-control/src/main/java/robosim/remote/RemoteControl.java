@@ -9,7 +9,9 @@ import java.util.Locale;
  * {@link IllegalArgumentException} naming a bad field. Used from one thread, the window's.
  *
  * <p>The buttons latch (forward drives until stop or another button); the keys drive only while
- * held, as ARIA's keyboard teleop does.
+ * held, as ARIA's keyboard teleop does. When the target drives by an ARIA keydrive action
+ * ({@link DriveTarget#keydrive()}, {@code robosim remote --keydrive}), each key press goes to that
+ * action instead, as ARIA's key handler feeds {@code ArActionKeydrive}.
  */
 public final class RemoteControl {
     /** The drive buttons. */
@@ -40,6 +42,11 @@ public final class RemoteControl {
         this.limits = SpeedLimits.of(target.parameters());
         this.vel = limits.vel();
         this.rotVel = limits.rotVel();
+    }
+
+    /** @return whether the arrow keys feed the robot's keydrive action rather than drive while held */
+    public boolean keydrive() {
+        return target.keydrive();
     }
 
     /** @return the sliders' bounds and starts */
@@ -84,6 +91,11 @@ public final class RemoteControl {
      */
     public String keyPressed(KeyDrive.Key key, long nowMs) {
         latched = null;
+        if (target.keydrive()) {
+            keys.clear();
+            target.keydrive(key);
+            return "sent: keydrive " + key.name().toLowerCase(Locale.ROOT);
+        }
         return keys.press(key, nowMs) ? driveKeys() : null;
     }
 

@@ -18,7 +18,7 @@ final class Fixtures {
     }
 
     /** A target that writes each call as a line. */
-    static final class Recorder implements DriveTarget {
+    static class Recorder implements DriveTarget {
         final List<String> calls = new ArrayList<>();
         private final RobotParameters parameters;
 

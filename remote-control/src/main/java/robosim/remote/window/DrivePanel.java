@@ -64,8 +64,9 @@ final class DrivePanel extends JPanel {
         grid.add(new JLabel());
         grid.add(button("Back", "back", RemoteControl.Button.BACK));
         grid.add(new JLabel());
-        grid.add(new JLabel("or hold the"));
-        grid.add(new JLabel("arrow keys;"));
+        // with keydrive each press steps ARIA's keydrive action; else the keys drive while held
+        grid.add(new JLabel(control.keydrive() ? "or press the" : "or hold the"));
+        grid.add(new JLabel(control.keydrive() ? "keys (keydrive);" : "arrow keys;"));
         grid.add(new JLabel("space stops"));
         grid.setBorder(BorderFactory.createTitledBorder("drive"));
         return grid;
