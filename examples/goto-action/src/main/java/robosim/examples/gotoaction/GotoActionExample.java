@@ -2,9 +2,9 @@ package robosim.examples.gotoaction;
 
 import java.io.PrintStream;
 import java.util.Locale;
-import robosim.aria.ArActionDeceleratingLimiter;
 import robosim.aria.ArActionGotoStraight;
-import robosim.aria.ArActionInput;
+import robosim.aria.ArActionLimiterForwards;
+import robosim.aria.ArActionStop;
 import robosim.aria.ArPose;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSonarDevice;
@@ -16,9 +16,9 @@ import robosim.aria.ArSonarDevice;
  * its time it cancels the goal, waits 3 s while the stopping action stops it, and leaves.
  *
  * <p>The corners are taken in the frame of the robot's start pose, as ARIA's are in odometry that
- * starts at (0, 0, 0). ARIA's program limits with two {@code ArActionLimiterForwards} and a table
- * limiter and stops with {@code ArActionStop}; this one guards with an
- * {@link ArActionDeceleratingLimiter} and stops with an {@link ArActionInput} asking for no motion.
+ * starts at (0, 0, 0). Its actions are ARIA's: two {@link ArActionLimiterForwards} (near and far)
+ * above the goto and an {@link ArActionStop} below it; ARIA's table-sensor limiter is left out, as
+ * RoboSim's robots have no table-sensing IR.
  * Time is the simulation's: the duration is in simulated seconds.
  *
  * <p>Run it as {@code bin/robosim robot robosim.examples.gotoaction.GotoActionExample NAME HOST PORT
@@ -75,15 +75,11 @@ public final class GotoActionExample {
      */
     public static int drive(ArRobot robot, double side, long durationMs, PrintStream out) {
         robot.addRangeDevice(new ArSonarDevice());
-        ArActionDeceleratingLimiter limiter = new ArActionDeceleratingLimiter("speed limiter",
-                ArActionDeceleratingLimiter.LimiterType.FORWARDS);
-        robot.addAction(limiter, 95);
+        robot.addAction(new ArActionLimiterForwards("speed limiter near", 300, 600, 250, 1), 95);
+        robot.addAction(new ArActionLimiterForwards("speed limiter far", 300, 1100, 400, 1), 90);
         ArActionGotoStraight gotoPose = new ArActionGotoStraight("gotostraight", 400);
         robot.addAction(gotoPose, 50);
-        ArActionInput stop = new ArActionInput("stop");
-        stop.setVel(0);
-        stop.setRotVel(0);
-        robot.addAction(stop, 40);
+        robot.addAction(new ArActionStop("stop"), 40);
 
         ArPose start = robot.getPose();
         ArPose[] corners = {corner(start, side, 0), corner(start, side, side), corner(start, 0, side), corner(start, 0, 0)};
