@@ -37,6 +37,8 @@ public final class ArACTS_1_2 {
 
     private volatile ArRobot robot;
     private volatile boolean inverted;
+    private volatile int width = WIDTH;
+    private volatile int height = HEIGHT;
 
     /**
      * Starts tracking colours on a robot's camera (ARIA's {@code openPort}; the host and port of
@@ -93,8 +95,25 @@ public final class ArACTS_1_2 {
         r.send(bind);
     }
 
-    /** Flips the image's stats, for a camera mounted upside down (ARIA's {@code invert}). */
+    /**
+     * Flips the image's stats for a camera mounted upside down, as ARIA's ArACTS.cpp does: each x
+     * becomes the width minus x and each y the height minus y, the left and right (top and bottom)
+     * borders each flipped in place.
+     */
     public void invert() {
+        invert(WIDTH, HEIGHT);
+    }
+
+    /**
+     * {@link #invert()} for an image of another size (ARIA's {@code invert(width, height)}; ARIA's
+     * own sets both to 1 by a slip, RoboSim uses the values given).
+     *
+     * @param width  the image's width, pixels
+     * @param height the image's height, pixels
+     */
+    public void invert(int width, int height) {
+        this.width = width;
+        this.height = height;
         inverted = true;
     }
 
@@ -130,19 +149,19 @@ public final class ArACTS_1_2 {
         blob.setArea(b.area());
         blob.setXCG(x(b.xcg()));
         blob.setYCG(y(b.ycg()));
-        blob.setLeft(inverted ? x(b.right()) : b.left());
-        blob.setRight(inverted ? x(b.left()) : b.right());
-        blob.setTop(inverted ? y(b.bottom()) : b.top());
-        blob.setBottom(inverted ? y(b.top()) : b.bottom());
+        blob.setLeft(x(b.left()));
+        blob.setRight(x(b.right()));
+        blob.setTop(y(b.top()));
+        blob.setBottom(y(b.bottom()));
         return true;
     }
 
     private int x(int column) {
-        return inverted ? WIDTH - 1 - column : column;
+        return inverted ? width - column : column;
     }
 
     private int y(int row) {
-        return inverted ? HEIGHT - 1 - row : row;
+        return inverted ? height - row : row;
     }
 
     private List<ColorBlob> blobs(int channel) {

@@ -94,9 +94,10 @@ class ArPTZTest {
         assertEquals(20, blob.getArea(), "a refused call fills nothing in");
         acts.invert();
         assertTrue(acts.getBlob(3, 1, blob));
-        assertEquals(159 - 150, blob.getXCG());
-        assertEquals(119 - 100, blob.getYCG());
-        assertEquals(159 - 151, blob.getLeft());
+        assertEquals(160 - 150, blob.getXCG(), "ArACTS.cpp's invertX: width minus x");
+        assertEquals(120 - 100, blob.getYCG());
+        assertEquals(160 - 149, blob.getLeft(), "each border flipped in place, as ARIA does");
+        assertEquals(160 - 151, blob.getRight());
     }
 
     @Test

@@ -62,7 +62,10 @@ class SerialParallelTest {
         return ParameterFileReader.read(root().resolve("testLoadFiles/robots/" + file));
     }
 
-    /** 300 robots on a 20 × 15 grid of 3 m cells, a pillar in each cell, heat sources, noise, lossy messages. */
+    /**
+     * 300 robots on a 20 × 15 grid of 3 m cells, a pillar in each cell (every fourth red, for the
+     * cameras), heat sources, noise, lossy messages.
+     */
     static World crowd() {
         RobotParameters p3dx = params("p3dx.p");
         RobotParameters scout = params("scout.p");
@@ -80,7 +83,8 @@ class SerialParallelTest {
             double cy = (k / COLUMNS) * CELL + CELL / 2;
             double px = cx + 900 + rnd.nextInt(300);
             double py = cy + 900 + rnd.nextInt(300);
-            obstacles.add(box(px - 250, py - 250, px + 250, py + 250, k + 2));
+            Obstacle pillar = box(px - 250, py - 250, px + 250, py + 250, k + 2);
+            obstacles.add(k % 4 == 0 ? new Obstacle(pillar.xy(), 500, k + 2, "#ff0000") : pillar);
             RobotParameters p = k % 7 == 3 ? scout : p3dx;
             robots.add(new RobotSpec("r" + k, k % 7 == 3 ? "scout" : "pioneer", cx + rnd.nextInt(400) - 200,
                     cy + rnd.nextInt(400) - 200, (37 * k) % 360, Path.of("robot.p"), p, k + 2));
@@ -108,6 +112,10 @@ class SerialParallelTest {
             }
             if (step == 1 && k % 6 == 1) {
                 cs.add(new Command.ConfigureHeatSensor(true, 120, 30000));
+            }
+            if (step == 1 && k % 50 == 4) {
+                cs.add(new Command.TrackColors(true));
+                cs.add(new Command.AimPtz(k % 100 == 4 ? 30 : -30, -5, 200));
             }
             if (step == 1 && k % 5 == 2) {
                 cs.add(new Command.JoinGroup("g" + (k % 3)));

@@ -97,10 +97,39 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @param laserIncrement degrees between laser readings (1 or 0.5)
      * @param vel       translational velocity, mm/s
      * @param rotVel    rotational velocity, deg/s
+     * @param camera    its pan-tilt-zoom camera while on: {pan, horizontal field of view}, degrees
+     *                  (pan positive to the right, as ARIA's); null while off
      */
     public record RobotView(String name, double x, double y, double th, boolean stalled,
                             boolean connected, int[] sonar, double odoX, double odoY, double odoTh,
-                            int[] laser, double laserIncrement, double vel, double rotVel) {
+                            int[] laser, double laserIncrement, double vel, double rotVel,
+                            @com.fasterxml.jackson.annotation.JsonInclude(
+                                    com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL) double[] camera) {
+
+        /**
+         * A view without a camera.
+         *
+         * @param name           the robot's name
+         * @param x              true x, mm
+         * @param y              true y, mm
+         * @param th             true heading, degrees
+         * @param stalled        whether stalled
+         * @param connected      whether connected
+         * @param sonar          sonar ranges, mm
+         * @param odoX           odometry x, mm
+         * @param odoY           odometry y, mm
+         * @param odoTh          odometry heading, degrees
+         * @param laser          laser scan, mm
+         * @param laserIncrement degrees between laser readings
+         * @param vel            mm/s
+         * @param rotVel         deg/s
+         */
+        public RobotView(String name, double x, double y, double th, boolean stalled, boolean connected, int[] sonar,
+                         double odoX, double odoY, double odoTh, int[] laser, double laserIncrement, double vel,
+                         double rotVel) {
+            this(name, x, y, th, stalled, connected, sonar, odoX, odoY, odoTh, laser, laserIncrement, vel, rotVel,
+                    null);
+        }
 
         /**
          * A view without velocities.

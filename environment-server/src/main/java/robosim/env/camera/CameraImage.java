@@ -42,7 +42,8 @@ public final class CameraImage {
                                double fieldOfView, List<ColoredShape> shapes, int ownBody) {
         List<ColoredShape> near = new ArrayList<>();
         for (ColoredShape s : shapes) {
-            if ((ownBody < 0 || s.owner() != ownBody) && s.near(x, y, MAX_RANGE)) {
+            if ((ownBody < 0 || s.owner() != ownBody) && s.near(x, y, MAX_RANGE)
+                    && s.mayBeWithin(x, y, direction, fieldOfView / 2)) {
                 near.add(s);
             }
         }

@@ -74,6 +74,33 @@ public final class ColoredShape {
     }
 
     /**
+     * Whether some of the shape's bounding box may lie within a wedge from (x, y): a cheap test
+     * that lets a camera skip what is outside its field of view. It errs towards yes.
+     *
+     * @param direction the wedge's axis, radians
+     * @param half      its half angle, radians, below π/2
+     */
+    boolean mayBeWithin(double x, double y, double direction, double half) {
+        if (x >= minX && x <= maxX && y >= minY && y <= maxY) {
+            return true;
+        }
+        double low = Double.POSITIVE_INFINITY;
+        double high = Double.NEGATIVE_INFINITY;
+        double[] cx = {minX, maxX, maxX, minX};
+        double[] cy = {minY, minY, maxY, maxY};
+        for (int i = 0; i < 4; i++) {
+            double a = Math.IEEEremainder(Math.atan2(cy[i] - y, cx[i] - x) - direction, 2 * Math.PI);
+            low = Math.min(low, a);
+            high = Math.max(high, a);
+        }
+        // a box seen from outside spans less than π; a wider spread means it wraps round behind the camera
+        if (high - low > Math.PI) {
+            return true;
+        }
+        return high >= -half && low <= half;
+    }
+
+    /**
      * @return the distance along the ray from (x, y) in direction (dx, dy), a unit vector, to where
      *         it first crosses the outline; infinity if it does not
      */

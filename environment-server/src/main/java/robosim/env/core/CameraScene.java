@@ -55,4 +55,10 @@ final class CameraScene {
     static void read(SimRobot r, double dt, List<ColoredShape> shapes) {
         r.sensors().camera().read(r.x(), r.y(), r.th(), dt, shapes, r.bodyId);
     }
+
+    /** @return a robot's camera as viewers draw it, {pan, field of view} in degrees; null while off */
+    static double[] drawn(SimRobot r) {
+        robosim.protocol.CameraView v = r.sensors().camera().view();
+        return v == null ? null : new double[] {v.pan(), v.model().fieldOfView(v.zoom())};
+    }
 }

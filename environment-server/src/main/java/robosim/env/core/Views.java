@@ -21,7 +21,7 @@ final class Views {
             Odometry o = r.odometry();
             views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
                     r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
-                    r.vel(), r.rotVel()));
+                    r.vel(), r.rotVel(), CameraScene.drawn(r)));
         }
         return views;
     }

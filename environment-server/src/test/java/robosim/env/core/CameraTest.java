@@ -130,6 +130,7 @@ class CameraTest {
         ColorBlob b = channel(zoomed, 1).get(0);
         assertEquals(expectedFace(fov)[0], b.area());
         assertTrue(b.area() > wideArea, b.area() + " > " + wideArea);
+        assertEquals(fov, sim.snapshot().robots().get(0).camera()[1], 1e-12, "viewers draw the narrower view");
     }
 
     @Test
@@ -170,6 +171,7 @@ class CameraTest {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(redBox()), Worlds.robot("r", 1000, 5000, 0)));
         sim.step(Map.of());
         assertNull(sim.state("r").camera());
+        assertNull(sim.snapshot().robots().get(0).camera(), "nothing for viewers to draw");
     }
 
     private static List<ColorBlob> channel(CameraView view, int channel) {

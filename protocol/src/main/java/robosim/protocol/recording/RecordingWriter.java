@@ -148,13 +148,14 @@ public final class RecordingWriter implements SnapshotListener {
 
     /**
      * @param snapshot a snapshot
-     * @return the snapshot with every robot's sonar and laser readings left out
+     * @return the snapshot with every robot's sonar and laser readings left out (its camera's two
+     *         numbers, pan and field of view, stay)
      */
     static Snapshot withoutSensors(Snapshot snapshot) {
         List<RobotView> robots = new ArrayList<>(snapshot.robots().size());
         for (RobotView r : snapshot.robots()) {
             robots.add(new RobotView(r.name(), r.x(), r.y(), r.th(), r.stalled(), r.connected(), NONE,
-                    r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel()));
+                    r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel(), r.camera()));
         }
         return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said(),
                 snapshot.events());

@@ -50,6 +50,7 @@ public final class WorldRenderer {
 
     private final RobotPainter robots = new RobotPainter();
     private final LaserPainter lasers = new LaserPainter();
+    private final CameraPainter cameras = new CameraPainter();
     private final HeatPainter heat = new HeatPainter();
 
     /** A renderer; it holds no state, so one can be shared. */
@@ -290,6 +291,9 @@ public final class WorldRenderer {
             for (int i = 0; i < views.size(); i++) {
                 lasers.drawScan(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]));
             }
+        }
+        for (int i = 0; i < views.size(); i++) {
+            cameras.drawFieldOfView(g, view, views.get(i), robotColour(views.get(i), colourIndex[i]));
         }
         if (options.showSonar()) {
             for (int i = 0; i < views.size(); i++) {

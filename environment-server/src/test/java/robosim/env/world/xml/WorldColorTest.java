@@ -50,4 +50,12 @@ class WorldColorTest {
                 </world>
                 """, 3, "attribute color on <wall> is '#12345'");
     }
+
+    @Test
+    void theShippedColourRoomHasARedAndABlueBox() {
+        World w = WorldReader.read(WorldFixtures.root().resolve("testLoadFiles/environment/color-room.xml"));
+        java.util.List<String> colors = w.obstacles().stream().map(robosim.env.world.Obstacle::color)
+                .filter(java.util.Objects::nonNull).toList();
+        assertEquals(java.util.List.of("#ff0000", "#0000ff"), colors);
+    }
 }
