@@ -1,7 +1,6 @@
 package robosim.env.core;
 
 import java.util.HashMap;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.geometry.BodyShape;
@@ -36,7 +35,7 @@ final class Grippers {
 
     private final Pucks pucks;
     private final GeometryClient geometry;
-    private final Map<String, GripperModel> models = new ConcurrentHashMap<>();
+    private final Map<String, GripperModel> models = new HashMap<>();
     /** How far ahead of its holder's centre each held puck is, mm. */
     private final Map<String, Double> heldAt = new HashMap<>();
 
@@ -45,9 +44,21 @@ final class Grippers {
         this.geometry = geometry;
     }
 
-    /** @return the robot's gripper, or null when its parameters give it none */
+    /** @return the robot's gripper, made when first used, or null when its parameters give it none */
     private GripperModel model(SimRobot r) {
         return r.params.hasGripper() ? models.computeIfAbsent(r.name, n -> new GripperModel()) : null;
+    }
+
+    /**
+     * @return the robot's gripper as it is, without making one (readers of the state do not change
+     *         the simulation): one not used yet is as it starts; null when the robot has none
+     */
+    private GripperModel current(SimRobot r) {
+        if (!r.params.hasGripper()) {
+            return null;
+        }
+        GripperModel m = models.get(r.name);
+        return m != null ? m : new GripperModel();
     }
 
     /**
@@ -167,7 +178,7 @@ final class Grippers {
 
     /** @return the robot's gripper as its switches report it, or null when it has none */
     GripperState state(SimRobot r) {
-        GripperModel m = model(r);
+        GripperModel m = current(r);
         return m == null ? null : m.state(beams(r, m), pucks.heldBy(r.name));
     }
 
