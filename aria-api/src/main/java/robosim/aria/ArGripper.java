@@ -132,12 +132,14 @@ public class ArGripper {
 
     /** @return true if the paddles are moving */
     public boolean isGripMoving() {
-        return (switches() & GripperState.PADDLES_MOVING) != 0;
+        int d = switches();
+        return d >= 0 && (d & GripperState.PADDLES_MOVING) != 0;
     }
 
     /** @return true if the lift is moving */
     public boolean isLiftMoving() {
-        return (switches() & GripperState.LIFT_MOVING) != 0;
+        int d = switches();
+        return d >= 0 && (d & GripperState.LIFT_MOVING) != 0;
     }
 
     /**
