@@ -157,6 +157,6 @@ public final class RecordingWriter implements SnapshotListener {
                     r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel()));
         }
         return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said(),
-                snapshot.events());
+                snapshot.events(), snapshot.objects());
     }
 }
