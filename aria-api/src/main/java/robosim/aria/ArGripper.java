@@ -132,12 +132,14 @@ public class ArGripper {
 
     /** @return true if the paddles are moving */
     public boolean isGripMoving() {
-        return (switches() & GripperState.PADDLES_MOVING) != 0;
+        int d = switches();
+        return d >= 0 && (d & GripperState.PADDLES_MOVING) != 0;
     }
 
     /** @return true if the lift is moving */
     public boolean isLiftMoving() {
-        return (switches() & GripperState.LIFT_MOVING) != 0;
+        int d = switches();
+        return d >= 0 && (d & GripperState.LIFT_MOVING) != 0;
     }
 
     /**
@@ -209,30 +211,37 @@ public class ArGripper {
 
     /** @return the gripper's state as ARIA's {@code logState} words it, also logged at INFO */
     public String logState() {
-        String text;
-        Type t = getType();
-        if (t == Type.NOGRIPPER) {
-            text = "There is no gripper.";
-        } else if (t == Type.QUERYTYPE) {
-            text = "Querying gripper type.";
-        } else {
-            boolean moving = isLiftMoving();
-            String lift = (isLiftMaxed() ? "maxed" : "between") + (moving ? "_moving" : "");
-            String grip = switch (getGripState()) {
-                case 1 -> "open";
-                case 2 -> "closed";
-                default -> "between";
-            } + (isGripMoving() ? "_moving" : "");
-            String beams = switch (getBreakBeamState()) {
-                case 1 -> "inner";
-                case 2 -> "outter";
-                case 3 -> "both";
-                default -> "none";
-            };
-            text = String.format("Lift: %15s  Grip: %15s  BreakBeam: %10s", lift, grip, beams);
-        }
+        String text = stateLine();
         LOG.info(text);
         return text;
+    }
+
+    /**
+     * @return the line {@link #logState} logs, for example
+     *         {@code "Lift:           maxed  Grip:          closed  BreakBeam:      inner"}, without logging it
+     */
+    public String stateLine() {
+        Type t = getType();
+        if (t == Type.NOGRIPPER) {
+            return "There is no gripper.";
+        }
+        if (t == Type.QUERYTYPE) {
+            return "Querying gripper type.";
+        }
+        boolean moving = isLiftMoving();
+        String lift = (isLiftMaxed() ? "maxed" : "between") + (moving ? "_moving" : "");
+        String grip = switch (getGripState()) {
+            case 1 -> "open";
+            case 2 -> "closed";
+            default -> "between";
+        } + (isGripMoving() ? "_moving" : "");
+        String beams = switch (getBreakBeamState()) {
+            case 1 -> "inner";
+            case 2 -> "outter";
+            case 3 -> "both";
+            default -> "none";
+        };
+        return String.format("Lift: %15s  Grip: %15s  BreakBeam: %10s", lift, grip, beams);
     }
 
     /** @return the robot's gripper state, or null when it has none or the type says not to read it */

@@ -1,6 +1,7 @@
 package robosim.protocol;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
+import com.fasterxml.jackson.annotation.JsonInclude;
 import com.fasterxml.jackson.annotation.JsonSetter;
 import com.fasterxml.jackson.annotation.Nulls;
 import java.util.List;
@@ -34,7 +35,7 @@ import java.util.List;
  * @param shape            the body: {@value #RECTANGLE} (length front and rear, width) or
  *                         {@value #ROUND} (a disc of {@code robotRadius}, as the Nomadic Scout)
  * @param hasGripper       whether a Pioneer 2-DOF gripper is mounted at the front (the parameter
- *                         file's {@code HasGripper}; absent reads as none)
+ *                         file's {@code HasGripper}; left off the wire when false, and absent reads as none)
  */
 public record RobotParameters(
         String robotClass,
@@ -57,7 +58,7 @@ public record RobotParameters(
         double laserTh,
         double laserMaxRange,
         String shape,
-        @JsonSetter(nulls = Nulls.AS_EMPTY) boolean hasGripper) {
+        @JsonSetter(nulls = Nulls.AS_EMPTY) @JsonInclude(JsonInclude.Include.NON_DEFAULT) boolean hasGripper) {
 
     /** A body given by its length front and rear and its width. */
     public static final String RECTANGLE = "rectangle";

@@ -87,12 +87,15 @@ class GripperMessagesTest {
     }
 
     @Test
-    void parametersFromBeforeGrippersReadAsNone() throws FrameException {
+    void parametersWithoutAGripperLeaveItOffTheWireAndWithOneCarryIt() throws FrameException {
         MessageCodec json = new MessageCodec(Format.JSON);
-        String hello = new String(json.encode(Messages.robotHello()), StandardCharsets.UTF_8)
-                .replace(",\"hasGripper\":false", "");
-        assertFalse(hello.contains("hasGripper"));
-        RobotHello decoded = (RobotHello) json.decode(hello.getBytes(StandardCharsets.UTF_8));
-        assertFalse(decoded.parameters().hasGripper());
+        RobotHello plain = Messages.robotHello();
+        String text = new String(json.encode(plain), StandardCharsets.UTF_8);
+        assertFalse(text.contains("hasGripper"), text);
+        assertFalse(((RobotHello) json.decode(text.getBytes(StandardCharsets.UTF_8))).parameters().hasGripper());
+        RobotHello gripper = new RobotHello(plain.name(), plain.robotType(), plain.parameters().withGripper(true),
+                plain.token());
+        assertEquals(gripper, roundTrip(Format.JSON, gripper));
+        assertEquals(gripper, roundTrip(Format.SMILE, gripper));
     }
 }

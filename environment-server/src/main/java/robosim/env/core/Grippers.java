@@ -50,6 +50,18 @@ final class Grippers {
     }
 
     /**
+     * @return the robot's gripper as it is, without making one (readers of the state do not change
+     *         the simulation): one not used yet is as it starts; null when the robot has none
+     */
+    private GripperModel current(SimRobot r) {
+        if (!r.params.hasGripper()) {
+            return null;
+        }
+        GripperModel m = models.get(r.name);
+        return m != null ? m : new GripperModel();
+    }
+
+    /**
      * Hands a gripper command to the robot's gripper.
      *
      * @return why it cannot be carried out (the robot has no gripper), or null
@@ -166,7 +178,7 @@ final class Grippers {
 
     /** @return the robot's gripper as its switches report it, or null when it has none */
     GripperState state(SimRobot r) {
-        GripperModel m = model(r);
+        GripperModel m = current(r);
         return m == null ? null : m.state(beams(r, m), pucks.heldBy(r.name));
     }
 

@@ -162,4 +162,29 @@ class GripperTest {
         assertEquals(1, s.errors().size());
         assertTrue(s.errors().get(0).contains("has no gripper"), s.errors().get(0));
     }
+
+    @Test
+    void aHeldPuckCannotPassThroughAWall() {
+        // the puck 50 mm ahead of the body; a wall 600 mm ahead of the robot's centre
+        Simulation sim = new Simulation(world(1000 + FRONT + 50, GRIPPER, Worlds.box(1600, 0, 1700, 4000)));
+        send(sim, new Command.Gripper(Command.Gripper.GRIP_CLOSE));
+        until(sim, 50, s -> s.gripper().holding() == 0);
+        send(sim, new Command.SetVel(200));
+        for (int i = 0; i < 60; i++) {
+            sim.step(Map.of());
+        }
+        Snapshot.ObjectView p = puck(sim);
+        assertEquals("r", p.heldBy());
+        assertTrue(p.x() + R <= 1600 + 0.5, "the puck's edge " + (p.x() + R) + " stays out of the wall at 1600");
+        assertTrue(sim.summary("r").stalled(), "the robot stopped at the wall, the puck before it");
+    }
+
+    @Test
+    void theLaserSeesAPuck() {
+        Simulation sim = new Simulation(world(2000, Worlds.p3dx()));
+        send(sim, new Command.ConfigureLaser(true, 1, 8000));
+        int[] scan = sim.state("r").laser();
+        // the middle beam, straight ahead from the laser 18 mm ahead of the centre, meets the puck's near side
+        assertEquals(1000 - 18 - R, scan[90], 1);
+    }
 }
