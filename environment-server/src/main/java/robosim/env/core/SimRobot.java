@@ -124,8 +124,8 @@ final class SimRobot {
         return current + delta;
     }
 
-    void readSensors(GeometryClient geometry, List<HeatSource> heat) {
-        sensors.read(geometry, pose(), body.radius(), bodyId, heat);
+    void readSensors(GeometryClient geometry, List<HeatSource> heat, long timeMs) {
+        sensors.read(geometry, pose(), body.radius(), bodyId, heat, timeMs);
     }
 
     /**
@@ -172,7 +172,7 @@ final class SimRobot {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null);
+                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, sensors.sonarNew());
     }
 
     double x() {

@@ -244,7 +244,7 @@ public final class Simulation {
     /** Before step 1: reads robot {@code i}'s sensors if they have not been read. */
     private void readIfUnread(int i) {
         if (unread[i]) {
-            order.get(i).readSensors(geometry, world.heat());
+            order.get(i).readSensors(geometry, world.heat(), timeMs());
             unread[i] = false;
         }
     }
@@ -353,7 +353,8 @@ public final class Simulation {
     }
 
     private void readSensors() {
-        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat()));
+        long now = timeMs();
+        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now));
     }
 
     /**
