@@ -32,6 +32,7 @@ Vel2Divisor           20       ; VEL2 wheel speed divisor
 
 Section Sonar parameters
 SonarNum 16                   ; number of sonar
+SonarCycle 40                 ; ms between firings, one transducer of each bank of 8 (RoboSim key)
 ;SonarUnit <Number> <x position, mm> <y position, mm> <heading of disc, degrees>
 SonarUnit 0 147 136 90
 SonarUnit 1 193 119 50

@@ -35,6 +35,7 @@ RotDecel 0
 
 Section Sonar parameters
 SonarNum 16            ; transducers
+SonarCycle 40                 ; ms between firings, one transducer of each bank of 8 (RoboSim key)
 ; SonarUnit <number> <x mm forward> <y mm left> <heading deg>
 SonarUnit 0 69 136 90
 SonarUnit 1 114 119 50

@@ -61,6 +61,21 @@ final class ArRangeBuffer {
         readings.removeIf(r -> r.distanceTo(x, y) < dist);
     }
 
+    /** @return whether a reading lies strictly closer than {@code dist} to (x, y) */
+    boolean anyCloserThan(double x, double y, double dist) {
+        for (ArPoseWithTime r : readings) {
+            if (r.distanceTo(x, y) < dist) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Removes the readings a rule picks. */
+    void removeIf(java.util.function.Predicate<ArPoseWithTime> rule) {
+        readings.removeIf(rule);
+    }
+
     /** Removes the readings taken more than {@code maxAgeMs} before {@code nowMs}. */
     void removeOlderThan(long nowMs, long maxAgeMs) {
         readings.removeIf(r -> nowMs - r.timeMs() > maxAgeMs);

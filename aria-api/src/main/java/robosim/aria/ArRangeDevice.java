@@ -195,6 +195,26 @@ public class ArRangeDevice {
         current.add(new ArPoseWithTime(x, y, timeMs, pose));
     }
 
+    /**
+     * Replaces the current buffer with one scan's readings, as ARIA's laser redoes its current
+     * buffer with each scan; the last of the list becomes the newest.
+     *
+     * @param xy     the readings' global positions, each {x, y}, mm
+     * @param pose   the robot's pose when the scan was taken
+     * @param timeMs the scan's simulated time
+     */
+    synchronized void replaceCurrent(List<double[]> xy, ArPose pose, long timeMs) {
+        current.clear();
+        for (double[] p : xy) {
+            current.add(new ArPoseWithTime(p[0], p[1], timeMs, pose));
+        }
+    }
+
+    /** @return the cumulative buffer, for devices of this package with rules of their own */
+    ArRangeBuffer cumulativeBuffer() {
+        return cumulative;
+    }
+
     /** @return the current readings' positions, newest first, pruned first */
     public synchronized List<ArPose> getCurrentBuffer() {
         prune();

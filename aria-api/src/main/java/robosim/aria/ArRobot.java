@@ -61,6 +61,7 @@ public class ArRobot extends AbstractRobot {
     private volatile ArTransform encoderTransform = new ArTransform();
     private volatile BumperParameters bumpers = BumperParameters.ARIA_DEFAULTS;
     private volatile boolean cycleStopped;
+    private volatile int sonarCycleMs;
 
     /**
      * @param name      the robot's name in the world
@@ -71,6 +72,7 @@ public class ArRobot extends AbstractRobot {
     public ArRobot(String name, String host, int port, String paramFile) {
         this(name, host, port, RobotParameterFiles.load(paramFile));
         this.bumpers = RobotParameterFiles.bumpers(paramFile);
+        this.sonarCycleMs = RobotParameterFiles.sonarCycle(paramFile);
     }
 
     /**
@@ -116,12 +118,13 @@ public class ArRobot extends AbstractRobot {
         lock.lock();
         try {
             super.responded(response);
+            SimulatedClock.stateArrived(response.state().timeMs());
             if (cycleStopped) {
                 return;
             }
             counter++;
             RobotState s = response.state();
-            sonar.update(s.sonar(), getPose(), counter, s.timeMs());
+            sonar.update(s.sonar(), s.sonarNew(), getPose(), counter, s.timeMs());
             odometer.update(s);
             sensorInterpTasks.runAll(getName());
             actions.cycle(s.timeMs());
@@ -1086,6 +1089,27 @@ public class ArRobot extends AbstractRobot {
         if (doDisconnect) {
             disconnect();
         }
+    }
+
+    /**
+     * Asks the Environment to fire the sonar ring in sequence when the parameter file gives a
+     * {@code SonarCycle} (see {@link #getSonarCycle()}).
+     */
+    @Override
+    protected void welcomed(RobotState initial) {
+        if (sonarCycleMs > 0) {
+            request(new Command.SetSonarCycle(sonarCycleMs));
+        }
+    }
+
+    /**
+     * @return the simulated ms between firings of the sonar ring, from the parameter file's
+     *         {@code SonarCycle} (what ARIA reads from a Pioneer's config packet): each firing reads
+     *         one transducer of each bank of eight, in index order, and only those are new in that
+     *         cycle ({@link #isSonarNew}); 0 when every transducer fires every step
+     */
+    public int getSonarCycle() {
+        return sonarCycleMs;
     }
 
     // ---- sonar ----

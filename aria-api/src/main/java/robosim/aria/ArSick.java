@@ -12,7 +12,15 @@ import robosim.protocol.RobotParameters;
  * 180°, from 90° right to 90° left of its mounting heading, at 1° (181 readings) or 0.5° (361)
  * steps, up to 8000 mm. Each cycle the robot's latest scan becomes the raw readings
  * ({@link #getRawReadings()}), and the readings below the maximum range (the ones that hit
- * something) go into the buffers. The mounting pose is the parameter file's
+ * something) become the current buffer, which holds the latest scan only, as ARIA's
+ * {@code ArLaser.cpp} redoes it with each scan (a cycle without a scan leaves it as it is). The
+ * cumulative buffer follows ARIA's laser rules ({@code ArLaser.cpp}) with the defaults of ARIA's
+ * LMS200 driver ({@code ArLMS2xx.cpp}): readings enter within {@value #DEFAULT_MAX_INSERT_DIST_CUMULATIVE}
+ * mm of the laser and not within {@value #DEFAULT_MIN_DIST_BETWEEN_CUMULATIVE} mm of a kept reading;
+ * they are kept {@value #DEFAULT_MAX_SECONDS_TO_KEEP_CUMULATIVE} s and within
+ * {@value #DEFAULT_MAX_DIST_TO_KEEP_LASER_CUMULATIVE} mm of the robot; and every
+ * {@value #DEFAULT_CUMULATIVE_CLEAN_INTERVAL_MS} ms the beams clear the kept readings they pass within
+ * {@value #DEFAULT_CUMULATIVE_CLEAN_DIST} mm of. The mounting pose is the parameter file's
  * {@code LaserX/LaserY/LaserTh}.
  *
  * <pre>{@code
@@ -32,6 +40,20 @@ public class ArSick extends ArRangeDevice {
     /** One whole scan at 0.5°. */
     private static final int SCAN_READINGS = 361;
     private static final int CUMULATIVE_READINGS = 200;
+    /** ARIA's LMS200 default: readings farther than this from the laser do not enter the cumulative buffer, mm. */
+    public static final double DEFAULT_MAX_INSERT_DIST_CUMULATIVE = LaserCumulative.DEFAULT_MAX_INSERT_DIST;
+    /** ARIA's LMS200 default: a reading closer than this to a cumulative one does not enter, mm. */
+    public static final double DEFAULT_MIN_DIST_BETWEEN_CUMULATIVE = 200;
+    /** ARIA's LMS200 default: how long cumulative readings are kept, s. */
+    public static final int DEFAULT_MAX_SECONDS_TO_KEEP_CUMULATIVE = 30;
+    /** ARIA's LMS200 default: how far from the robot cumulative readings are kept, mm. */
+    public static final double DEFAULT_MAX_DIST_TO_KEEP_LASER_CUMULATIVE = 6000;
+    /** ARIA's LMS200 default: how close to a beam a cumulative reading is cleared, mm. */
+    public static final double DEFAULT_CUMULATIVE_CLEAN_DIST = LaserCumulative.DEFAULT_CLEAN_DIST;
+    /** ARIA's LMS200 default: how often the beams clear the cumulative buffer, ms. */
+    public static final long DEFAULT_CUMULATIVE_CLEAN_INTERVAL_MS = LaserCumulative.DEFAULT_CLEAN_INTERVAL_MS;
+
+    private final LaserCumulative cumulativeRules = new LaserCumulative();
 
     private volatile double increment = 1.0;
     private volatile boolean maxRangeChosen;
@@ -50,6 +72,41 @@ public class ArSick extends ArRangeDevice {
      */
     public ArSick(int currentBufferSize, int cumulativeBufferSize) {
         super("laser", DEFAULT_MAX_RANGE, currentBufferSize, cumulativeBufferSize);
+        // ARIA's ArLaser keeps current readings until the next scan replaces them
+        setMaxSecondsToKeepCurrent(0);
+        setMaxSecondsToKeepCumulative(DEFAULT_MAX_SECONDS_TO_KEEP_CUMULATIVE);
+        setMaxDistToKeepCumulative(DEFAULT_MAX_DIST_TO_KEEP_LASER_CUMULATIVE);
+        setMinDistBetweenCumulative(DEFAULT_MIN_DIST_BETWEEN_CUMULATIVE);
+    }
+
+    /** @return how far from the laser a reading may be to enter the cumulative buffer, mm; 1 or less: any */
+    public synchronized double getMaxInsertDistCumulative() {
+        return cumulativeRules.maxInsertDist;
+    }
+
+    /** @param mm how far from the laser a reading may be to enter the cumulative buffer; 1 or less: any */
+    public synchronized void setMaxInsertDistCumulative(double mm) {
+        cumulativeRules.maxInsertDist = mm;
+    }
+
+    /** @return how close to a beam a cumulative reading is cleared, mm; below 1: never */
+    public synchronized double getCumulativeCleanDist() {
+        return cumulativeRules.cleanDist;
+    }
+
+    /** @param mm how close to a beam a cumulative reading is cleared; below 1: never */
+    public synchronized void setCumulativeCleanDist(double mm) {
+        cumulativeRules.cleanDist = mm;
+    }
+
+    /** @return how often the beams clear the cumulative buffer, simulated ms; 0 or less: every scan */
+    public synchronized long getCumulativeCleanInterval() {
+        return cumulativeRules.cleanIntervalMs;
+    }
+
+    /** @param ms how often the beams clear the cumulative buffer, simulated ms; 0 or less: every scan */
+    public synchronized void setCumulativeCleanInterval(long ms) {
+        cumulativeRules.cleanIntervalMs = ms;
     }
 
     /**
@@ -159,7 +216,10 @@ public class ArSick extends ArRangeDevice {
         return rawScan.clone();
     }
 
-    /** Turns the robot's latest scan into raw readings and adds those below the maximum range. */
+    /**
+     * Turns the robot's latest scan into raw readings; those below the maximum range become the
+     * current buffer, and the scan is taken into the cumulative buffer by ARIA's laser rules.
+     */
     @Override
     protected void processReadings() {
         ArRobot robot = getRobot();
@@ -175,15 +235,20 @@ public class ArSick extends ArRangeDevice {
         double step = scan.length > 1 ? 180.0 / (scan.length - 1) : 0;
         double max = getMaxRange();
         List<ArSensorReading> readings = new ArrayList<>(scan.length);
+        List<double[]> hits = new ArrayList<>(scan.length);
         for (int i = 0; i < scan.length; i++) {
             ArSensorReading r = new ArSensorReading(p.laserX(), p.laserY(), p.laserTh() - 90 + i * step, (int) max);
             r.newData(scan[i], pose, robot.getCounter(), s.timeMs());
             readings.add(r);
             if (scan[i] < max) {
-                addReading(r.getX(), r.getY(), pose, s.timeMs());
+                hits.add(new double[] {r.getX(), r.getY()});
             }
         }
         rawScan = scan;
         setRawReadings(readings);
+        if (scan.length > 0) {
+            replaceCurrent(hits, pose, s.timeMs());
+            cumulativeRules.take(cumulativeBuffer(), readings, max, getMinDistBetweenCumulative(), pose, s.timeMs());
+        }
     }
 }

@@ -23,11 +23,19 @@ final class SonarRing {
         return readings.length;
     }
 
-    /** Takes a cycle's ranges; a cycle without sonar readings (the sonars are off) changes nothing. */
-    void update(int[] ranges, ArPose pose, long counter, long timeMs) {
+    /**
+     * Takes a cycle's ranges: only the transducers that fired in it get new data, so the others keep
+     * their counter and are not new ({@link ArRobot#isSonarNew}); a cycle without sonar readings (the
+     * sonars are off) changes nothing.
+     *
+     * @param fired the state's {@code sonarNew}: bit i for transducer i; null when all fired
+     */
+    void update(int[] ranges, Long fired, ArPose pose, long counter, long timeMs) {
         if (ranges.length == readings.length) {
             for (int i = 0; i < ranges.length; i++) {
-                readings[i].newData(ranges[i], pose, counter, timeMs);
+                if (fired == null || i < Long.SIZE && (fired >> i & 1) != 0) {
+                    readings[i].newData(ranges[i], pose, counter, timeMs);
+                }
             }
         }
     }

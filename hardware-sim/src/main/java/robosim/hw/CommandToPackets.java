@@ -70,6 +70,10 @@ final class CommandToPackets {
         if (c instanceof Command.ConfigureLaser l) {
             return laser(l);
         }
+        if (c instanceof Command.SetSonarCycle) {
+            // a Pioneer's firmware fires its ring in its own sequence: nothing to send
+            return List.of();
+        }
         if (c instanceof Command.Say s) {
             return List.of(Commands.comStr(Commands.SIM_MESSAGE, latin1(s.text())));
         }

@@ -42,6 +42,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.AimPtz.class, name = "aimPtz"),
         @JsonSubTypes.Type(value = Command.TrackColors.class, name = "trackColors"),
         @JsonSubTypes.Type(value = Command.BindChannel.class, name = "bindChannel"),
+        @JsonSubTypes.Type(value = Command.SetSonarCycle.class, name = "sonarCycle"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -504,6 +505,26 @@ public sealed interface Command {
             }
             if (color != null) {
                 color = Colors.format(Colors.parse(color));
+            }
+        }
+    }
+
+    /**
+     * Sets how the sonar ring fires: 0, every transducer every step; otherwise one firing every
+     * {@code msPerFiring} ms of simulated time, each firing one transducer of each bank of eight in
+     * index order, as a Pioneer's firmware sequences its ring (its {@code SonarCycle}).
+     *
+     * @param msPerFiring simulated ms between firings, 0 to {@value #MAX_SONAR_CYCLE_MS}
+     */
+    record SetSonarCycle(int msPerFiring) implements SensorSetting {
+        /** The longest time between firings, ms. */
+        public static final int MAX_SONAR_CYCLE_MS = 10_000;
+
+        /** @throws IllegalArgumentException if out of range */
+        public SetSonarCycle {
+            if (msPerFiring < 0 || msPerFiring > MAX_SONAR_CYCLE_MS) {
+                throw new IllegalArgumentException(msPerFiring + " was supplied for msPerFiring: it is 0 (every step)"
+                        + " to " + MAX_SONAR_CYCLE_MS + " ms");
             }
         }
     }

@@ -32,16 +32,20 @@ import java.util.List;
  * @param gripper    the state of the robot's gripper, or null when its parameters give it none
  * @param camera     the pan-tilt-zoom camera's position and ACTS blobs once the robot switched its camera
  *                   on ({@link Command.ConfigurePtz} or {@link Command.TrackColors}); null otherwise
+ * @param sonarNew   which sonar readings are new in this state when the ring fires in sequence
+ *                   ({@link Command.SetSonarCycle}): bit i set when transducer i fired; null when
+ *                   every transducer fired (the ring fires every step, or the sonars are off)
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
                          int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
                          int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
                          @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) CameraView camera) {
+                         @JsonInclude(JsonInclude.Include.NON_NULL) CameraView camera,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) Long sonarNew) {
 
     /**
-     * A state without a gripper or a camera.
+     * A state without a gripper or a camera, whose sonar readings are all new.
      *
      * @param step       the step these values are the result of
      * @param timeMs     simulated time at the end of that step
@@ -67,7 +71,15 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
                       int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
                       int bumpers, double[] truePose) {
         this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, bumpers, truePose, null, null);
+                messages, errors, bumpers, truePose, null, null, null);
+    }
+
+    /**
+     * @param i a transducer's index
+     * @return whether its reading is new in this state ({@link #sonarNew()} null means all are)
+     */
+    public boolean isSonarNew(int i) {
+        return sonarNew == null || i >= 0 && i < Long.SIZE && (sonarNew >> i & 1) != 0;
     }
 
     /**

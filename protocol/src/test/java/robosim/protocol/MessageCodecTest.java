@@ -336,7 +336,8 @@ class MessageCodecTest {
                 + "{\"cmd\":\"ptz\",\"model\":\"SONY\",\"mountHeight\":420.0},"
                 + "{\"cmd\":\"aimPtz\",\"pan\":-12.5,\"tilt\":4.0,\"zoom\":300},"
                 + "{\"cmd\":\"trackColors\",\"on\":true},"
-                + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"}]}", json);
+                + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"},"
+                + "{\"cmd\":\"sonarCycle\",\"msPerFiring\":40}]}", json);
     }
 
     @Test

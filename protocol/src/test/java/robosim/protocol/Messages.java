@@ -86,7 +86,8 @@ final class Messages {
                 new Command.ConfigurePtz(PtzModel.SONY, 420),
                 new Command.AimPtz(-12.5, 4, 300),
                 new Command.TrackColors(true),
-                new Command.BindChannel(3, "#00ff7f")));
+                new Command.BindChannel(3, "#00ff7f"),
+                new Command.SetSonarCycle(40)));
     }
 
     static ViewerHello viewerHello() {

@@ -88,7 +88,7 @@ public final class RandomMessages {
         return new RobotState(anyLong(), anyLong(), anyDouble(), anyDouble(), anyDouble(), anyDouble(), anyDouble(),
                 anyDouble(), anyDouble(), random.nextBoolean(), ints(32), (int) anyLong(), ints(400),
                 nullOr(() -> new HeatReading(anyDouble(), anyDouble(), anyDouble())), list(this::delivery, 3),
-                list(() -> text(80), 2), (int) anyLong());
+                list(() -> text(80), 2), (int) anyLong(), null, null, null, nullOr(random::nextLong));
     }
 
     private MessageDelivery delivery() {
@@ -103,7 +103,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(27)) {
+        return switch (random.nextInt(28)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -136,6 +136,7 @@ public final class RandomMessages {
             case 25 -> new Command.TrackColors(random.nextBoolean());
             case 26 -> new Command.BindChannel(1 + random.nextInt(CameraView.CHANNELS),
                     random.nextBoolean() ? null : Colors.format(random.nextInt(0x1000000)));
+            case 27 -> new Command.SetSonarCycle(random.nextInt(Command.SetSonarCycle.MAX_SONAR_CYCLE_MS + 1));
             default -> new Command.SetAccel(positive(), positive());
         };
     }

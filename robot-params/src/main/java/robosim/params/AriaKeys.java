@@ -23,6 +23,8 @@ final class AriaKeys {
             "tablesensingir", "newtablesensingir", "frontbumpers", "numfrontbumpers", "rearbumpers",
             "numrearbumpers", "irnum", "irunit", "gpspx", "gpspy", "gpstype", "gpsport", "gpsbaud",
             "compasstype", "compassport",
+            // RoboSim's sonar firing period, read by ParameterFileReader.sonarCycle, not by the record
+            "sonarcycle",
             // Sonar boards
             "sonarautoconnect", "sonarboardtype", "sonarboardporttype", "sonarboardport", "sonarboardpoweroutput",
             "sonarbaud", "sonardelay", "sonargain", "sonardetectionthreshold", "sonarnoisedelta",

@@ -41,6 +41,9 @@ public final class ParameterFileReader {
     private static final Pattern LATER_LASER =
             Pattern.compile("laser\\s+([2-9]|\\d{2,})\\s+parameters", Pattern.CASE_INSENSITIVE);
 
+    /** The longest {@code SonarCycle}, ms (the Environment's bound). */
+    public static final int MAX_SONAR_CYCLE_MS = 10_000;
+
     private ParameterFileReader() {
     }
 
@@ -82,6 +85,40 @@ public final class ParameterFileReader {
      */
     public static BumperParameters bumpers(Path file) {
         return BumperParameters.read(file, lines(file));
+    }
+
+    /**
+     * Reads RoboSim's {@code SonarCycle} key: the simulated ms between firings of the sonar ring,
+     * which then fires in sequence, one transducer of each bank of eight at a time, as a Pioneer's
+     * firmware fires it (ARIA reads the firmware's {@code SonarCycle} from the robot's config packet,
+     * {@code ArRobotConfigPacketReader.cpp}; ARIA's parameter files do not carry it). Absent or 0:
+     * every transducer fires every step.
+     *
+     * @param file the {@code .p} file
+     * @return the ms between firings, 0 to 10000
+     * @throws ParameterFileException naming the file, the line and the rule for a bad value
+     * @throws UncheckedIOException   when the file cannot be read
+     */
+    public static int sonarCycle(Path file) {
+        List<String> lines = lines(file);
+        int cycle = 0;
+        for (int i = 0; i < lines.size(); i++) {
+            String[] words = stripComment(lines.get(i)).trim().split("\\s+");
+            if (!words[0].equalsIgnoreCase("sonarcycle")) {
+                continue;
+            }
+            String v = value(file, i + 1, words);
+            try {
+                cycle = Integer.parseInt(v);
+            } catch (NumberFormatException e) {
+                throw new ParameterFileException(file, i + 1, words[0] + " '" + v + "' is not a whole number of ms");
+            }
+            if (cycle < 0 || cycle > MAX_SONAR_CYCLE_MS) {
+                throw new ParameterFileException(file, i + 1, words[0] + " is " + v
+                        + " but must be 0 (every step) to " + MAX_SONAR_CYCLE_MS + " ms");
+            }
+        }
+        return cycle;
     }
 
     private static List<String> lines(Path file) {

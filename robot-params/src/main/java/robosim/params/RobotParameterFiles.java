@@ -83,6 +83,24 @@ public final class RobotParameterFiles {
     }
 
     /**
+     * Finds a parameter file as {@link #load} does and reads its {@code SonarCycle}
+     * ({@link ParameterFileReader#sonarCycle}); 0 (every step) for the XML forms.
+     *
+     * @param file a path, or a shipped name such as {@code p3dx}
+     * @return simulated ms between sonar firings, 0 for every step
+     * @throws IllegalArgumentException if no such file is found
+     * @throws robosim.params.ParameterFileException if the value breaks the rule
+     */
+    public static int sonarCycle(String file) {
+        Path path = resolve(file);
+        Path name = path.getFileName();
+        if (name != null && name.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".p")) {
+            return ParameterFileReader.sonarCycle(path);
+        }
+        return 0;
+    }
+
+    /**
      * @return the RoboSim root: system property {@code robosim.root}, else the working directory
      */
     public static Path root() {

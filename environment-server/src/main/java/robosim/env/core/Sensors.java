@@ -40,6 +40,10 @@ final class Sensors {
     private double heatFieldOfView;
     private double heatMaxRange;
     private HeatReading heat;
+    /** The ring's firing order, or null when every transducer fires every step. */
+    private SonarSequence sonarSequence;
+    /** The transducers that fired in the latest reading, or null when all did. */
+    private Long sonarNew;
 
     Sensors(RobotParameters params, Noise noise, RandomGenerator random) {
         this.params = params;
@@ -70,6 +74,10 @@ final class Sensors {
     void configure(Command.SensorSetting c) {
         if (c instanceof Command.SetSonar s) {
             sonarOn = s.on();
+        } else if (c instanceof Command.SetSonarCycle cycle) {
+            sonarSequence = cycle.msPerFiring() == 0 ? null
+                    : new SonarSequence(cycle.msPerFiring(), params.sonarUnits().size());
+            sonarNew = null;
         } else if (c instanceof Command.ConfigureLaser l) {
             laserOn = l.on();
             laserIncrement = l.increment();
@@ -89,13 +97,18 @@ final class Sensors {
         }
     }
 
-    /** Takes every switched-on sensor's reading at the robot's true pose. */
-    void read(GeometryClient geometry, Pose2D pose, double bodyRadius, int bodyId, List<HeatSource> sources) {
+    /**
+     * Takes every switched-on sensor's reading at the robot's true pose; a sonar ring that fires in
+     * sequence reads only the transducers whose turn came since the previous reading.
+     */
+    void read(GeometryClient geometry, Pose2D pose, double bodyRadius, int bodyId, List<HeatSource> sources,
+              long timeMs) {
         double radius = gatherRadius(bodyRadius);
         if (radius > 0) {
             Surroundings near = geometry.around(pose.x(), pose.y(), radius, bodyId);
             if (sonarOn) {
-                readSonar(near, pose);
+                sonarNew = sonarSequence == null ? null : sonarSequence.fire(timeMs);
+                readSonar(near, pose, sonarNew == null ? -1L : sonarNew);
             }
             if (laserOn) {
                 readLaser(near, pose);
@@ -120,9 +133,12 @@ final class Sensors {
         return Math.max(sonarOn ? params.sonarMaxRange() : 0, laserOn ? laserMaxRange : 0);
     }
 
-    private void readSonar(Surroundings near, Pose2D p) {
+    private void readSonar(Surroundings near, Pose2D p, long firing) {
         double max = params.sonarMaxRange();
         for (SonarUnit s : params.sonarUnits()) {
+            if ((firing >> s.index() & 1) == 0) {
+                continue;
+            }
             double r = near.cone(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
                     p.th() + Math.toRadians(s.th()), SONAR_HALF_ANGLE, max);
             r = noisy(r, noise.sonarSigma());
@@ -173,6 +189,11 @@ final class Sensors {
 
     int[] sonar() {
         return sonarOn ? sonar.clone() : new int[0];
+    }
+
+    /** @return the transducers that fired in the latest reading, bit i for transducer i; null if all did */
+    Long sonarNew() {
+        return sonarOn ? sonarNew : null;
     }
 
     int[] laser() {

@@ -126,8 +126,8 @@ final class SimRobot {
         return current + delta;
     }
 
-    void readSensors(GeometryClient geometry, List<HeatSource> heat) {
-        sensors.read(geometry, pose(), body.radius(), bodyId, heat);
+    void readSensors(GeometryClient geometry, List<HeatSource> heat, long timeMs) {
+        sensors.read(geometry, pose(), body.radius(), bodyId, heat, timeMs);
     }
 
     /**
@@ -175,7 +175,7 @@ final class SimRobot {
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
                 messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, null,
-                sensors.camera().view());
+                sensors.camera().view(), sensors.sonarNew());
     }
 
     double x() {

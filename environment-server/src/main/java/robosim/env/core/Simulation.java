@@ -254,7 +254,7 @@ public final class Simulation {
     /** Before step 1: reads robot {@code i}'s sensors if they have not been read. */
     private void readIfUnread(int i) {
         if (unread[i]) {
-            order.get(i).readSensors(geometry, world.heat());
+            order.get(i).readSensors(geometry, world.heat(), timeMs());
             CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry));
             unread[i] = false;
         }
@@ -370,7 +370,8 @@ public final class Simulation {
     }
 
     private void readSensors() {
-        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat()));
+        long now = timeMs();
+        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now));
         List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry);
         double dt = world.stepMs() / 1000.0;
         parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));

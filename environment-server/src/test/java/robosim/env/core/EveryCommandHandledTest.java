@@ -33,7 +33,8 @@ class EveryCommandHandledTest {
             new Command.SetTruePose(5000, 6000, 90), new Command.ResetToStart(),
             new Command.Gripper(Command.Gripper.GRIP_CLOSE),
             new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300), new Command.AimPtz(10, 5, 100),
-            new Command.TrackColors(true), new Command.BindChannel(9, "#123456"));
+            new Command.TrackColors(true), new Command.BindChannel(9, "#123456"),
+            new Command.SetSonarCycle(40));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {

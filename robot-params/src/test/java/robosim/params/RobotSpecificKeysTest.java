@@ -11,8 +11,8 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The bumper keys of ARIA's {@code .p} form (ArRobotParams.cpp). */
-class BumperParametersTest {
+/** The bumper keys of ARIA's {@code .p} form (ArRobotParams.cpp) and RoboSim's SonarCycle. */
+class RobotSpecificKeysTest {
     @TempDir
     Path dir;
 
@@ -63,5 +63,15 @@ class BumperParametersTest {
         }
         assertEquals(new BumperParameters(true, 5, true, 5),
                 ParameterFileReader.bumpers(root.resolve("testLoadFiles/robots/p3dx.p")));
+    }
+
+    @Test
+    void sonarCycleIsReadAndCheckedWithItsLine() throws IOException {
+        assertEquals(40, ParameterFileReader.sonarCycle(write("ConfigVersion 2.0\nSonarCycle 40 ; ms\n")));
+        assertEquals(0, ParameterFileReader.sonarCycle(write("ConfigVersion 2.0\n")));
+        Path bad = write("ConfigVersion 2.0\n\nSonarCycle -5\n");
+        ParameterFileException e = assertThrows(ParameterFileException.class, () -> ParameterFileReader.sonarCycle(bad));
+        assertTrue(e.getMessage().contains("3"), e.getMessage());
+        assertTrue(e.getMessage().contains("SonarCycle is -5 but must be 0 (every step) to 10000 ms"), e.getMessage());
     }
 }
