@@ -37,6 +37,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.SetTruePose.class, name = "truePose"),
         @JsonSubTypes.Type(value = Command.ResetToStart.class, name = "resetToStart"),
         @JsonSubTypes.Type(value = Command.ReportTruePose.class, name = "reportTruePose"),
+        @JsonSubTypes.Type(value = Command.SetMotors.class, name = "motors"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -375,6 +376,16 @@ public sealed interface Command {
      * @param on whether to report it
      */
     record ReportTruePose(boolean on) implements SensorSetting { }
+
+    /**
+     * Enables or disables a Pioneer's motors, as ARIA's {@code enableMotors} and {@code disableMotors}
+     * send ENABLE 1 and ENABLE 0 (ArRobot.cpp). While they are disabled the velocity, move, heading and
+     * wheel commands are ignored (the robot is told once); disabling stops the robot. A Scout's motors
+     * are always on: it ignores this command.
+     *
+     * @param on whether the motors are enabled
+     */
+    record SetMotors(boolean on) implements Motion { }
 
     private static void finite(String name, double v) {
         if (!Double.isFinite(v)) {

@@ -29,11 +29,44 @@ import java.util.List;
  *                   of {@value #BUMPER_SECTORS}, sector 0 centred dead ahead, counting counter-clockwise
  * @param truePose   the robot's true pose (x mm, y mm, th degrees) when it asked for it with
  *                   {@link Command.ReportTruePose}; null otherwise
+ * @param motorsEnabled whether the robot's motors are enabled (see {@link Command.SetMotors}); null when
+ *                   whoever made the state does not know
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
                          int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose) {
+                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) Boolean motorsEnabled) {
+
+    /**
+     * A state that does not say whether the motors are enabled.
+     *
+     * @param step       the step
+     * @param timeMs     simulated time, ms
+     * @param x          odometry x, mm
+     * @param y          odometry y, mm
+     * @param th         odometry heading, degrees
+     * @param vel        mm/s
+     * @param rotVel     deg/s
+     * @param leftVel    mm/s
+     * @param rightVel   mm/s
+     * @param stalled    whether stalled
+     * @param sonar      sonar ranges, mm
+     * @param collisions collisions so far
+     * @param laser      laser scan, mm
+     * @param heat       heat reading or null
+     * @param messages   messages delivered
+     * @param errors     request errors
+     * @param bumpers    bumper contacts
+     * @param truePose   the true pose or null
+     */
+    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
+                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
+                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
+                      int bumpers, double[] truePose) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
+                messages, errors, bumpers, truePose, null);
+    }
 
     /**
      * A state without the true pose.

@@ -331,7 +331,8 @@ class MessageCodecTest {
                 + "{\"cmd\":\"driveLimit\",\"limit\":\"TRANS_DECEL\",\"value\":400.0},"
                 + "{\"cmd\":\"truePose\",\"x\":-1500.0,\"y\":2500.0,\"th\":90.0},"
                 + "{\"cmd\":\"resetToStart\"},"
-                + "{\"cmd\":\"reportTruePose\",\"on\":true}]}", json);
+                + "{\"cmd\":\"reportTruePose\",\"on\":true},"
+                + "{\"cmd\":\"motors\",\"on\":true}]}", json);
     }
 
     @Test

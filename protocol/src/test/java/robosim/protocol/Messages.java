@@ -81,7 +81,8 @@ final class Messages {
                 new Command.SetDriveLimit(Command.DriveLimit.TRANS_DECEL, 400),
                 new Command.SetTruePose(-1500, 2500, 90),
                 new Command.ResetToStart(),
-                new Command.ReportTruePose(true)));
+                new Command.ReportTruePose(true),
+                new Command.SetMotors(true)));
     }
 
     static ViewerHello viewerHello() {

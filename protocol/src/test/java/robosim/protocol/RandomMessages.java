@@ -103,7 +103,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(23)) {
+        return switch (random.nextInt(24)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -131,6 +131,7 @@ public final class RandomMessages {
             case 19 -> new Command.SetTruePose(finite(), finite(), finite());
             case 20 -> new Command.ResetToStart();
             case 21 -> new Command.ReportTruePose(random.nextBoolean());
+            case 22 -> new Command.SetMotors(random.nextBoolean());
             default -> new Command.SetAccel(positive(), positive());
         };
     }

@@ -39,9 +39,10 @@ final class SimRobot {
     private final Sensors sensors;
     private final Odometry odometry;
     boolean connected;
+    private final Motors motors;
 
     SimRobot(String name, String type, RobotParameters params, BodyShape body, int bodyId,
-             double x, double y, double th, Noise noise, RandomGenerator random) {
+             double x, double y, double th, Noise noise, RandomGenerator random, boolean motorsEnabled) {
         this.name = name;
         this.type = type;
         this.params = params;
@@ -54,11 +55,49 @@ final class SimRobot {
         this.th = Angles.fix(th);
         this.sensors = new Sensors(params, noise, random);
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
+        this.motors = new Motors(!"scout".equals(type), motorsEnabled);
     }
 
     /** Hands a motion command to the drive controller, which steers by odometry. */
     void drive(Command.Motion command) {
         drive.apply(command, odometry.x(), odometry.y(), odometry.th());
+    }
+
+    /**
+     * Carries out a motion command of the robot's program: a motor switch, or a command for the
+     * drive controller unless the motors are disabled.
+     *
+     * @param command the command
+     * @return null when carried out; otherwise why not, to tell the robot ("" when it was told already)
+     */
+    String command(Command.Motion command) {
+        if (command instanceof Command.SetMotors m) {
+            if (motors.set(m.on())) {
+                drive(new Command.Stop()); // as ENABLE 0 stops a Pioneer
+            }
+            return null;
+        }
+        String refusal = motors.refusal(command);
+        if (refusal == null) {
+            drive(command);
+        }
+        return refusal;
+    }
+
+    /**
+     * A program has connected: the motors are as the world says a program finds them.
+     *
+     * @param enabled whether they are enabled
+     */
+    void motorsAtConnect(boolean enabled) {
+        if (motors.set(enabled)) {
+            drive(new Command.Stop());
+        }
+    }
+
+    /** @return whether the motors are enabled (always, for a robot without a motor switch) */
+    boolean motorsEnabled() {
+        return motors.enabled();
     }
 
     /** Advances the robot one step of {@code dt} seconds, stopping at contact. */
@@ -172,7 +211,7 @@ final class SimRobot {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null);
+                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, motors.enabled());
     }
 
     double x() {

@@ -30,7 +30,8 @@ class EveryCommandHandledTest {
             new Command.JoinGroup("team"), new Command.LeaveGroup("team"),
             new Command.Say("hello"), new Command.ReportFound("gold"),
             new Command.SetDriveLimit(Command.DriveLimit.ROT_DECEL, 50), new Command.ReportTruePose(true),
-            new Command.SetTruePose(5000, 6000, 90), new Command.ResetToStart());
+            new Command.SetTruePose(5000, 6000, 90), new Command.ResetToStart(),
+            new Command.SetMotors(true));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {
