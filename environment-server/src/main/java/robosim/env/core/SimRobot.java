@@ -107,24 +107,30 @@ final class SimRobot {
             rotVel = 0;
         }
         // the controller steers by odometry, as a robot's firmware does
-        double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt);
-        double wantW = drive.wantedRotVel(odometry.th(), dt);
-        vel = approach(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
-        rotVel = approach(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
-        if (vel == 0 && rotVel == 0) {
+        double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt, vel);
+        double wantW = drive.wantedRotVel(odometry.th(), dt, rotVel);
+        // the way covered is the integral of each speed's ramp this step, not the end speed times dt
+        SpeedProfile trans = SpeedProfile.step(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
+        SpeedProfile rot = SpeedProfile.step(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
+        vel = trans.speed();
+        rotVel = rot.speed();
+        if (trans.distance() == 0 && rot.distance() == 0) {
             bumpers = bumpers(geometry);
             return;
         }
-        SweepResult r = geometry.sweep(bodyId, vel * dt, Math.toRadians(rotVel) * dt);
+        double turn = Math.toRadians(rot.distance());
+        SweepResult r = geometry.sweep(bodyId, trans.distance(), turn);
+        double covered = trans.distance() * r.fraction();
+        double turned = turn * r.fraction();
         Pose2D p = r.pose();
-        distance += Math.abs(vel * dt) * r.fraction();
+        distance += Math.abs(covered);
         x = p.x();
         y = p.y();
         th = Angles.fix(Math.toDegrees(p.th()));
         geometry.moveBody(bodyId, pose());
-        odometry.travel(vel * dt * r.fraction(), Math.toRadians(rotVel) * dt * r.fraction(), x, y, th);
-        double half = Math.toRadians(rotVel) / params.diffConvFactor() * dt * r.fraction();
-        drive.travelled(vel * dt * r.fraction() - half, vel * dt * r.fraction() + half);
+        odometry.travel(covered, turned, x, y, th);
+        double half = turned / params.diffConvFactor();
+        drive.travelled(covered - half, covered + half);
         if (r.blocked()) {
             if (!stalled) {
                 collisions++;
@@ -150,17 +156,6 @@ final class SimRobot {
             bits |= 1 << sector;
         }
         return bits;
-    }
-
-    /**
-     * Moves {@code current} towards {@code target} by at most the acceleration (speeding up) or the
-     * deceleration (slowing down) over {@code dt}.
-     */
-    static double approach(double current, double target, double accel, double decel, double dt) {
-        boolean slowing = Math.abs(target) < Math.abs(current) || Math.signum(target) * Math.signum(current) < 0;
-        double limit = (slowing ? decel : accel) * dt;
-        double delta = Math.max(-limit, Math.min(limit, target - current));
-        return current + delta;
     }
 
     void readSensors(GeometryClient geometry, List<HeatSource> heat) {
