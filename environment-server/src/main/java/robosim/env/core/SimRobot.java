@@ -95,11 +95,6 @@ final class SimRobot {
         }
     }
 
-    /** @return whether the motors are enabled (always, for a robot without a motor switch) */
-    boolean motorsEnabled() {
-        return motors.enabled();
-    }
-
     /** Advances the robot one step of {@code dt} seconds, stopping at contact. */
     void move(GeometryClient geometry, double dt) {
         if (drive.takeStop()) {
