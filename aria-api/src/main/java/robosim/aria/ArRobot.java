@@ -21,6 +21,7 @@ import robosim.protocol.RobotParameters;
  * <pre>{@code
  * ArRobot robot = new ArRobot(name, host, port, "p3dx");
  * if (!robot.blockingConnect()) return;
+ * robot.enableMotors();
  * robot.move(1000);
  * while (!robot.isMoveDone()) ArUtil.sleep(100);
  * robot.disconnect();
@@ -1110,6 +1111,37 @@ public class ArRobot extends AbstractRobot {
      */
     public int getSonarCycle() {
         return sonarCycleMs;
+    }
+
+    // ---- the motors ----
+
+    /**
+     * Enables the motors, as ARIA's {@code enableMotors} sends ENABLE 1 (ArRobot.cpp). A Pioneer's
+     * motors are disabled when its program connects (unless the world says {@code motors="enabled"}):
+     * until this call the velocity, move and heading commands are ignored, and the robot is told
+     * once in its state's errors. {@link #areMotorsEnabled()} says so from the next cycle on.
+     */
+    public void enableMotors() {
+        request(new Command.SetMotors(true));
+    }
+
+    /**
+     * Disables the motors, as ARIA's {@code disableMotors} sends ENABLE 0: the robot stops at once
+     * and ignores motion commands until {@link #enableMotors()}.
+     */
+    public void disableMotors() {
+        request(new Command.SetMotors(false));
+    }
+
+    /**
+     * Whether the motors are enabled, as the latest state says: like ARIA's, which reads the flag of
+     * the latest SIP (ArRobot.h), it reflects {@link #enableMotors()} only after the next cycle.
+     *
+     * @return whether the robot reported its motors enabled; false before it has said
+     */
+    public boolean areMotorsEnabled() {
+        RobotState s = state();
+        return s != null && Boolean.TRUE.equals(s.motorsEnabled());
     }
 
     // ---- sonar ----

@@ -21,7 +21,7 @@ class SonarSequenceCycleTest {
         int[] sonar = new int[16];
         Arrays.fill(sonar, range);
         robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, 0, 0, 0,
-                0, 0, 0, 0, false, sonar, 0, NONE, null, List.of(), List.of(), 0, null, fired)));
+                0, 0, 0, 0, false, sonar, 0, NONE, null, List.of(), List.of(), 0, null, null, null, fired, null)));
     }
 
     @Test

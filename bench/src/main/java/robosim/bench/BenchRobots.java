@@ -191,6 +191,7 @@ public final class BenchRobots {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException(robot.getName() + ": " + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         if (laser != null && !laser.blockingConnect()) {
             throw new IllegalStateException(robot.getName() + "'s laser: " + laser.getConnectionError());
         }

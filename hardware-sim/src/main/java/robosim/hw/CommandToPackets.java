@@ -13,7 +13,7 @@ import robosim.protocol.Command;
 
 /**
  * Turns the robot's {@link Command}s into the Pioneer commands ARIA would send for them: VEL, RVEL,
- * VEL2 (in units of the Vel2Divisor), MOVE, HEAD, DHEAD, STOP, SETV, SETRV, SETA and SETRA, SONAR,
+ * VEL2 (in units of the Vel2Divisor), MOVE, HEAD, DHEAD, STOP, SETV, SETRV, SETA and SETRA, ENABLE, SONAR,
  * the simulated laser's commands, GRIPPER and GRIPPERVAL, SIM_MESSAGE, SIM_SET_POSE, SIM_RESET and SIM_STAT. A command the
  * protocol cannot carry (messages between robots, a find report, the heat sensor, wheel moves, the
  * pan-tilt-zoom camera and ACTS, which a real robot drives over its AUX serial port) is
@@ -149,6 +149,9 @@ final class CommandToPackets {
         }
         if (c instanceof Command.Stop) {
             return Commands.com(Commands.STOP);
+        }
+        if (c instanceof Command.SetMotors m) {
+            return Commands.comInt(Commands.ENABLE, m.on() ? 1 : 0);
         }
         throw new IllegalArgumentException("no Pioneer command carries " + c);
     }

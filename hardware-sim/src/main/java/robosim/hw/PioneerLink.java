@@ -22,8 +22,9 @@ import robosim.protocol.Welcome;
 /**
  * A robot's way to "the world" through a Pioneer robot server instead of the Environment: MobileSim,
  * a real Pioneer behind a serial-to-TCP bridge, or RoboSim's own Pioneer port. It connects as ARIA
- * does (SYNC0, SYNC1, SYNC2, OPEN, CONFIG), enables the motors (RoboSim's robot programs never call
- * {@code enableMotors}; ARIA too enables them as it connects), and keeps the link alive with PULSEs.
+ * does (SYNC0, SYNC1, SYNC2, OPEN, CONFIG) and keeps the link alive with PULSEs. It leaves the motors
+ * as the server has them: as in ARIA, the program enables them ({@code enableMotors()} sends ENABLE 1),
+ * and the SIP's flags say whether they are.
  * Each status packet (SIP) becomes one step, in real time, since the server keeps its own clock;
  * {@link SipToState} and {@link CommandToPackets} translate each way. A server silent for
  * {@link HardwareOptions#lostAfterMs()} is lost, as the Environment is on a {@link SocketLink}.
@@ -68,7 +69,6 @@ public final class PioneerLink extends ReleasedOnClose {
                     + ", status every " + config.sipCycle() + " ms, conversion factors " + factors);
             states = new SipToState(factors, hello.parameters().sonarUnits().size(), hello.parameters().sonarMaxRange());
             commands = new CommandToPackets(factors, environment());
-            c.send(Commands.comInt(Commands.ENABLE, 1));
             c.startPulses();
             Sip first = c.nextSip(options.connectTimeoutMs());
             if (first == null) {

@@ -15,7 +15,8 @@ import robosim.protocol.RobotState;
  * wrap, so a jump of more than 0x1000 units is a wrap); the heading times the AngleConvFactor;
  * the wheel velocities times the VelConvFactor; the sonar ranges times the RangeConvFactor, kept
  * in a full ring since one SIP carries only some of them. Laser packets are gathered into whole
- * scans, SIMSTAT packets give the true pose. The odometry is the server's own: (0, 0, 0) where a
+ * scans, SIMSTAT packets give the true pose; the SIP's flags bit 0 says whether the motors are enabled
+ * (ARIA's {@code areMotorsEnabled}). The odometry is the server's own: (0, 0, 0) where a
  * simulator put it at the connection, wherever a real Pioneer's counters stood. No sockets: the
  * link feeds it.
  */
@@ -87,7 +88,7 @@ final class SipToState {
         int[] ranges = (sip.flags() & Sip.FLAG_SONARS) != 0 ? sonar.clone() : NONE;
         return new RobotState(step, timeMs, x, y, th, (left + right) / 2, rotVel, left, right, stalled, ranges,
                 collisions, laser.clone(), null, List.of(), errors, bumpers(sip.stallBump()),
-                truePose == null ? null : truePose.clone());
+                truePose == null ? null : truePose.clone(), null, null, null, (sip.flags() & Sip.FLAG_MOTORS) != 0);
     }
 
     /**

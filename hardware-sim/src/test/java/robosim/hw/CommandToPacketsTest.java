@@ -47,6 +47,12 @@ class CommandToPacketsTest {
     }
 
     @Test
+    void theMotorSwitchIsEnableOneOrZeroAsAriasEnableMotorsSendsIt() {
+        assertEquals("fafb06043b0100053b", hex(new Command.SetMotors(true)));
+        assertEquals("fafb06043b0000043b", hex(new Command.SetMotors(false)));
+    }
+
+    @Test
     void stopIsStopWithoutArgument() {
         assertEquals("fafb031d001d", hex(new Command.Stop()));
     }

@@ -19,7 +19,7 @@ import robosim.pioneer.Sip;
 /**
  * A Pioneer robot server played by a test, on loopback: it answers the handshake and CONFIG as
  * MobileSim does (subclass {@code p3dx-sh}, a SIP cycle of 50 ms), sends a given number of SIPs
- * after ENABLE 1 and then falls silent, and keeps every command it receives. One client; closed by
+ * after CONFIG (its motors disabled, as a Pioneer's are when a client opens it) and then falls silent, and keeps every command it receives. One client; closed by
  * {@link #close()}.
  */
 final class FakePioneerServer implements AutoCloseable {
@@ -29,7 +29,7 @@ final class FakePioneerServer implements AutoCloseable {
     private final Thread thread;
     private volatile Socket socket;
 
-    /** @param sips the SIPs it sends after ENABLE 1 before it falls silent */
+    /** @param sips the SIPs it sends after CONFIG before it falls silent */
     FakePioneerServer(int sips) throws IOException {
         this.sips = sips;
         thread = new Thread(this::serve, "fake-pioneer");
@@ -81,9 +81,8 @@ final class FakePioneerServer implements AutoCloseable {
         if (p.id() == Commands.CONFIG) {
             out.write(new ConfigPacket("Pioneer", "p3dx-sh", "SIM", 500, 2200, 300, 300, "fake", 50, false, true, true,
                     2000, 500, 2200, 100, 100, 300, 300, 0, 0, "S.0").toPacket().encode());
-        } else if (p.id() == Commands.ENABLE && p.reader().intArgument("on") == 1) {
             for (int i = 0; i < sips; i++) {
-                out.write(new Sip(false, 10 * i, 0, 0, 0, 0, 130, 0, 0, Sip.FLAG_MOTORS | Sip.FLAG_SONARS, 0,
+                out.write(new Sip(false, 10 * i, 0, 0, 0, 0, 130, 0, 0, Sip.FLAG_SONARS, 0,
                         List.of(new Sip.SonarReading(3, 700)), 0xff, 0xff, 130, 0, 0, 0, 0, -127, 0).toPacket().encode());
                 Thread.sleep(50);
             }

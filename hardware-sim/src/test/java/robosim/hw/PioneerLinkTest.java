@@ -53,16 +53,19 @@ class PioneerLinkTest {
     }
 
     @Test
-    void itOpensEnablesTheMotorsAndMakesEachSipAStep() throws Exception {
+    void itOpensLeavesTheMotorsToTheProgramAndMakesEachSipAStep() throws Exception {
         try (FakePioneerServer server = new FakePioneerServer(5)) {
             PioneerLink link = EnvironmentLinks.pioneer("127.0.0.1:" + server.port(), HardwareOptions.defaults());
             Receiver receiver = new Receiver();
             Welcome w = link.open(HELLO, receiver);
             try {
                 assertEquals(50, w.stepMs(), "the CONFIG reply's SIP cycle");
-                assertEquals(List.of(Commands.OPEN, Commands.CONFIG, Commands.ENABLE), ids(server, 3));
+                assertEquals(List.of(Commands.OPEN, Commands.CONFIG), ids(server, 2));
                 RobotSensorResponse first = receiver.steps.poll(5, TimeUnit.SECONDS);
                 assertNotNull(first);
+                assertEquals(Boolean.FALSE, first.state().motorsEnabled(), "the SIP's flags bit 0 is clear");
+                link.send(1, List.of(new RobotRequest(new Command.SetMotors(true))));
+                assertEquals(List.of(Commands.ENABLE), ids(server, 1), "enableMotors() sends ENABLE, as ARIA's does");
                 assertEquals(1, first.step());
                 assertEquals(10, first.state().x(), 1e-9, "p3dx-sh has no parameter file: a DistConvFactor of 1");
                 assertEquals(700, first.state().sonar()[3]);
@@ -77,7 +80,7 @@ class PioneerLinkTest {
         try (FakePioneerServer server = new FakePioneerServer(1)) {
             PioneerLink link = EnvironmentLinks.pioneer("127.0.0.1:" + server.port(), HardwareOptions.defaults());
             link.open(HELLO, new Receiver());
-            ids(server, 3);
+            ids(server, 2);
             link.send(1, List.of(new RobotRequest(new Command.SetVel(100))));
             link.bye("done");
             assertEquals(List.of(Commands.VEL, Commands.ENABLE, Commands.CLOSE), ids(server, 3));

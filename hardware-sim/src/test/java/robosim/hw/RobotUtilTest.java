@@ -62,7 +62,7 @@ class RobotUtilTest {
         RobotState s = new RobotState(7, 700, 1234.5, -678.25, 179.5, 350, -12.5, 337.5, 362.5, true,
                 new int[] {5000, 742, 650}, 3, new int[] {8000, 1234, 20, 900}, new HeatReading(12.5, -30.25, 2200),
                 List.of(), List.of("message 3 is addressed to 'nobody'"), 0b100001, new double[] {1240, -670, 180},
-                null, null, 0b101L);
+                null, null, 0b101L, null);
         assertEquals("""
                 robot r1 at step 7, 0.700 s
                   pose       x 1234.5 mm, y -678.3 mm, th 179.5 deg

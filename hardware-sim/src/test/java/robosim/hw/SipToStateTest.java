@@ -58,6 +58,7 @@ class SipToStateTest {
         assertTrue(st.stalled(), "bit 0: the left wheel stalled");
         assertEquals(1, st.collisions());
         assertEquals(1, st.bumpers(), "front bumper bit 3: the sector ahead");
+        assertEquals(Boolean.TRUE, st.motorsEnabled(), "flags 0x1F: bit 0, the motors, is set");
         assertEquals(16, st.sonar().length);
         assertEquals(500, st.sonar()[0]);
         assertEquals(1000, st.sonar()[3]);

@@ -20,6 +20,7 @@ final class ActionPrograms {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + name + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors();
         return robot;
     }
 }

@@ -39,6 +39,7 @@ class AriaNamesEndToEndTest {
                 if (!robot.blocking_connect()) {
                     throw new IllegalStateException(robot.getConnectionError());
                 }
+                robot.enableMotors();
                 double x0 = robot.getX();
                 double y0 = robot.getY();
                 robot.setTransAccel(100);

@@ -44,6 +44,7 @@ class BadFrameTest {
             Thread r1 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             });
@@ -150,6 +151,7 @@ class BadFrameTest {
                 Thread t = new Thread(() -> {
                     ArRobot robot = new ArRobot(name, "127.0.0.1", h.server.robotPort(), "p3dx");
                     if (robot.blockingConnect()) {
+                        robot.enableMotors();
                         new Wander(robot).run();
                     }
                 });

@@ -118,6 +118,7 @@ class DependOnRoboSimTest {
                         if (!robot.blockingConnect()) {
                             throw new IllegalStateException(robot.getConnectionError());
                         }
+                        robot.enableMotors();
                         robot.move(1000);
                         while (!robot.isMoveDone()) {
                             ArUtil.sleep(100);

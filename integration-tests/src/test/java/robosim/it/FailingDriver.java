@@ -17,6 +17,7 @@ public final class FailingDriver {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors();
         robot.setVel(200);
         ArUtil.sleep(500);
         turnAtTheWall(robot);

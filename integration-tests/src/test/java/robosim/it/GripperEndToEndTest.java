@@ -51,6 +51,7 @@ class GripperEndToEndTest {
         if (!robot.blocking_connect()) {
             throw new IllegalStateException(robot.getConnectionError());
         }
+        robot.enableMotors();
         ArGripper gripper = new ArGripper(robot);
         robot.sleepSimulated(100);
         ArGripper.Type type = gripper.getType();

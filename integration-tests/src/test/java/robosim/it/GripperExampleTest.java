@@ -45,6 +45,7 @@ class GripperExampleTest {
     private static String run(int port, String params, String commands) {
         ArRobot robot = new ArRobot("r1", "127.0.0.1", port, params);
         assertTrue(robot.blockingConnect(), robot.getConnectionError());
+        robot.enableMotors();
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         GripperExample example = new GripperExample(robot, new ArGripper(robot),
                 new PrintStream(out, true, StandardCharsets.UTF_8));

@@ -105,6 +105,7 @@ final class LocalEnvironment implements AutoCloseable {
             Thread t = new Thread(() -> {
                 ArRobot robot = new ArRobot(name, "127.0.0.1", robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             }, "wander-" + name);

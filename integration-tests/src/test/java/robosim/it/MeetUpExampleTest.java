@@ -41,6 +41,7 @@ class MeetUpExampleTest {
     private static int meetUp(String name, String peer, int port) {
         ArRobot robot = new ArRobot(name, "127.0.0.1", port, "p3dx");
         assertTrue(robot.blockingConnect(), robot.getConnectionError());
+        robot.enableMotors();
         int heard = new MeetUp(robot, peer).run();
         robot.disconnect();
         return heard;

@@ -104,6 +104,7 @@ class PioneerLinkEndToEndTest {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException(robot.getConnectionError());
         }
+        robot.enableMotors();
         ArUtil.sleep(300);
         ArPose start = robot.getPose();
         robot.move(1000);

@@ -41,6 +41,7 @@ class ProgressEndToEndTest {
             Thread t = new Thread(() -> {
                 ArRobot robot = new ArRobot(name, "127.0.0.1", port, "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             }, "wander-" + name);

@@ -23,6 +23,7 @@ class RealtimeTest {
                 Thread t = new Thread(() -> {
                     ArRobot robot = new ArRobot(name, "127.0.0.1", h.server.robotPort(), "p3dx");
                     if (robot.blockingConnect()) {
+                        robot.enableMotors();
                         new Wander(robot).run();
                     }
                 });

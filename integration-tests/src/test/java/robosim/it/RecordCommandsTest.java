@@ -86,6 +86,7 @@ class RecordCommandsTest {
             Thread t = new Thread(() -> {
                 ArRobot robot = new ArRobot(name, "127.0.0.1", robotPort, "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             });

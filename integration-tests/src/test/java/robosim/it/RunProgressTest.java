@@ -30,6 +30,7 @@ class RunProgressTest {
         Thread t = new Thread(() -> {
             ArRobot robot = new ArRobot(name, "127.0.0.1", port, "p3dx");
             if (robot.blockingConnect()) {
+                robot.enableMotors();
                 new Wander(robot).run();
             }
         }, "wander-" + name);

@@ -100,6 +100,7 @@ class RunReportEndsTest {
             Thread r1 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", h.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             }, "robot-r1");

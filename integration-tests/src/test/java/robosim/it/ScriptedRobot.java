@@ -39,7 +39,9 @@ final class ScriptedRobot implements Callable<String> {
         if (!moving || step % 20 != 1) {
             return List.of();
         }
-        return List.of(new Command.SetVel(300), new Command.SetRotVel(step % 40 < 20 ? 15 : -10));
+        // a robot program enables a Pioneer's motors before it drives, as an ARIA program does
+        return List.of(new Command.SetMotors(true), new Command.SetVel(300),
+                new Command.SetRotVel(step % 40 < 20 ? 15 : -10));
     }
 
     @Override

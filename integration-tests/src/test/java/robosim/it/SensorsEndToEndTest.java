@@ -74,6 +74,7 @@ class SensorsEndToEndTest {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException(robot.getConnectionError());
         }
+        robot.enableMotors();
         AtomicInteger cycles = new AtomicInteger();
         robot.addUserTask("count", 0, cycles::incrementAndGet);
         laser.blockingConnect();

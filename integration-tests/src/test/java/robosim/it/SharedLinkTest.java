@@ -81,6 +81,7 @@ class SharedLinkTest {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException(name + ": " + robot.getConnectionError());
         }
+        robot.enableMotors();
         while (robot.isConnected()) {
             boolean blocked = robot.getClosestSonarRange(-45, 45) < 700;
             robot.setVel(blocked ? 0 : 350);
@@ -148,6 +149,7 @@ class SharedLinkTest {
                     if (!robot.blockingConnect()) {
                         return;
                     }
+                    robot.enableMotors();
                     while (robot.isConnected()) {
                         if (stuck.contains(name) && robot.getStep() >= 5) {
                             while (spinning.get() && robot.isConnected()) {

@@ -17,6 +17,7 @@ public final class SonarDriver {
             System.out.println("FAILED " + robot.getConnectionError());
             System.exit(3);
         }
+        robot.enableMotors();
         System.out.println("sonar before " + robot.getSonarRange(3));
         ArUtil.sleep(100);
         System.out.println("sonar first " + robot.getSonarRange(3) + " step " + robot.getStep());

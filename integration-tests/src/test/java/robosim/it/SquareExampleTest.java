@@ -48,6 +48,7 @@ class SquareExampleTest {
     private static String square(String name, int port) {
         ArRobot robot = new ArRobot(name, "127.0.0.1", port, "p3dx");
         assertTrue(robot.blockingConnect(), robot.getConnectionError());
+        robot.enableMotors();
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         ArPose[] corners = Square.drive(robot, new PrintStream(bytes, true, StandardCharsets.UTF_8));
         robot.disconnect();

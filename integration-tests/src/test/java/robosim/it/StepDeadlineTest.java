@@ -41,12 +41,14 @@ class StepDeadlineTest {
             r1 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", h.server.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     new Wander(robot).run();
                 }
             }, "robot-r1");
             r2 = new Thread(() -> {
                 ArRobot robot = new ArRobot("r2", "127.0.0.1", h.server.robotPort(), "p3dx");
                 if (robot.blockingConnect()) {
+                    robot.enableMotors();
                     r2Connected.set(true);
                     robot.setVel(200);
                     AtomicLong work = new AtomicLong();

@@ -16,6 +16,7 @@ public final class TaskDriver {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors();
         robot.addUserTask("ahead", 50, () -> robot.setVel(200));
         robot.runAsync();
     }

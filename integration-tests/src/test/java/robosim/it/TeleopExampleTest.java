@@ -60,6 +60,7 @@ class TeleopExampleTest {
             Future<String> teleop = run.robot(() -> {
                 ArRobot robot = new ArRobot("r1", "127.0.0.1", run.port(), "p3dx");
                 assertTrue(robot.blockingConnect(), robot.getConnectionError());
+                robot.enableMotors();
                 ByteArrayOutputStream out = new ByteArrayOutputStream();
                 new Teleop(robot, new PrintStream(out, true, StandardCharsets.UTF_8))
                         .run(new BufferedReader(new StringReader(commands)));

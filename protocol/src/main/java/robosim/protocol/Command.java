@@ -43,6 +43,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.TrackColors.class, name = "trackColors"),
         @JsonSubTypes.Type(value = Command.BindChannel.class, name = "bindChannel"),
         @JsonSubTypes.Type(value = Command.SetSonarCycle.class, name = "sonarCycle"),
+        @JsonSubTypes.Type(value = Command.SetMotors.class, name = "motors"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -528,6 +529,16 @@ public sealed interface Command {
             }
         }
     }
+
+    /**
+     * Enables or disables a Pioneer's motors, as ARIA's {@code enableMotors} and {@code disableMotors}
+     * send ENABLE 1 and ENABLE 0 (ArRobot.cpp). While they are disabled the velocity, move, heading and
+     * wheel commands are ignored (the robot is told once); disabling stops the robot. A Scout's motors
+     * are always on: it ignores this command.
+     *
+     * @param on whether the motors are enabled
+     */
+    record SetMotors(boolean on) implements Motion { }
 
     private static void finite(String name, double v) {
         if (!Double.isFinite(v)) {

@@ -35,6 +35,8 @@ import java.util.List;
  * @param sonarNew   which sonar readings are new in this state when the ring fires in sequence
  *                   ({@link Command.SetSonarCycle}): bit i set when transducer i fired; null when
  *                   every transducer fired (the ring fires every step, or the sonars are off)
+ * @param motorsEnabled whether the robot's motors are enabled (see {@link Command.SetMotors}); null when
+ *                   whoever made the state does not know
  */
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                          double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
@@ -42,10 +44,12 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
                          int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
                          @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper,
                          @JsonInclude(JsonInclude.Include.NON_NULL) CameraView camera,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) Long sonarNew) {
+                         @JsonInclude(JsonInclude.Include.NON_NULL) Long sonarNew,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) Boolean motorsEnabled) {
 
     /**
-     * A state without a gripper or a camera, whose sonar readings are all new.
+     * A state without a gripper or a camera, whose sonar readings are all new, that does not say whether
+     * the motors are enabled.
      *
      * @param step       the step these values are the result of
      * @param timeMs     simulated time at the end of that step
@@ -71,7 +75,7 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
                       int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
                       int bumpers, double[] truePose) {
         this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, bumpers, truePose, null, null, null);
+                messages, errors, bumpers, truePose, null, null, null, null);
     }
 
     /**

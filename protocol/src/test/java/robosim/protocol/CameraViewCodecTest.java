@@ -17,7 +17,7 @@ class CameraViewCodecTest {
         RobotState s = Messages.state();
         return new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.leftVel(),
                 s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(), s.heat(), s.messages(), s.errors(),
-                s.bumpers(), null, null, camera, null);
+                s.bumpers(), null, null, camera, null, null);
     }
 
     @ParameterizedTest

@@ -22,7 +22,7 @@ class GripperMessagesTest {
 
     private static RobotState state(GripperState g) {
         return new RobotState(3, 300, 1, 2, 3, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(),
-                List.of(), 0, null, g, null, null);
+                List.of(), 0, null, g, null, null, null);
     }
 
     @ParameterizedTest

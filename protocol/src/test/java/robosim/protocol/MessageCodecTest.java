@@ -337,7 +337,8 @@ class MessageCodecTest {
                 + "{\"cmd\":\"aimPtz\",\"pan\":-12.5,\"tilt\":4.0,\"zoom\":300},"
                 + "{\"cmd\":\"trackColors\",\"on\":true},"
                 + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"},"
-                + "{\"cmd\":\"sonarCycle\",\"msPerFiring\":40}]}", json);
+                + "{\"cmd\":\"sonarCycle\",\"msPerFiring\":40},"
+                + "{\"cmd\":\"motors\",\"on\":true}]}", json);
     }
 
     @Test

@@ -87,7 +87,8 @@ final class Messages {
                 new Command.AimPtz(-12.5, 4, 300),
                 new Command.TrackColors(true),
                 new Command.BindChannel(3, "#00ff7f"),
-                new Command.SetSonarCycle(40)));
+                new Command.SetSonarCycle(40),
+                new Command.SetMotors(true)));
     }
 
     static ViewerHello viewerHello() {

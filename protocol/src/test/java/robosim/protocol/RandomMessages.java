@@ -88,7 +88,7 @@ public final class RandomMessages {
         return new RobotState(anyLong(), anyLong(), anyDouble(), anyDouble(), anyDouble(), anyDouble(), anyDouble(),
                 anyDouble(), anyDouble(), random.nextBoolean(), ints(32), (int) anyLong(), ints(400),
                 nullOr(() -> new HeatReading(anyDouble(), anyDouble(), anyDouble())), list(this::delivery, 3),
-                list(() -> text(80), 2), (int) anyLong(), null, null, null, nullOr(random::nextLong));
+                list(() -> text(80), 2), (int) anyLong(), null, null, null, nullOr(random::nextLong), nullOr(random::nextBoolean));
     }
 
     private MessageDelivery delivery() {
@@ -103,7 +103,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(28)) {
+        return switch (random.nextInt(29)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -137,6 +137,7 @@ public final class RandomMessages {
             case 26 -> new Command.BindChannel(1 + random.nextInt(CameraView.CHANNELS),
                     random.nextBoolean() ? null : Colors.format(random.nextInt(0x1000000)));
             case 27 -> new Command.SetSonarCycle(random.nextInt(Command.SetSonarCycle.MAX_SONAR_CYCLE_MS + 1));
+            case 28 -> new Command.SetMotors(random.nextBoolean());
             default -> new Command.SetAccel(positive(), positive());
         };
     }

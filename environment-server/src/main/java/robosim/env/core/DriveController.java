@@ -149,8 +149,13 @@ final class DriveController {
         return s;
     }
 
-    /** The translational velocity wanted now, mm/s. */
-    double wantedVel(double x, double y, double dt) {
+    /**
+     * The translational velocity wanted now, mm/s.
+     *
+     * @param vel the velocity now, mm/s: a move asks for the speed after whose step it is still on its
+     *            braking profile
+     */
+    double wantedVel(double x, double y, double dt, double vel) {
         double v = switch (trans) {
             case VEL -> transVel;
             case VEL2 -> (left + right) / 2;
@@ -162,7 +167,8 @@ final class DriveController {
                     transVel = 0;
                     yield 0;
                 }
-                double speed = Math.min(Math.sqrt(2 * MOVE_PROFILE_DECEL * toGo), toGo / dt);
+                double speed = SpeedProfile.onProfile(toGo, Math.copySign(1, moveDistance) * vel, MOVE_PROFILE_DECEL,
+                        transAccel, transDecel, dt, maxVel);
                 yield Math.copySign(speed, moveDistance);
             }
         };
@@ -222,8 +228,13 @@ final class DriveController {
         return rotDecel;
     }
 
-    /** The rotational velocity wanted now, deg/s. */
-    double wantedRotVel(double th, double dt) {
+    /**
+     * The rotational velocity wanted now, deg/s.
+     *
+     * @param turning the rotational velocity now, deg/s: a heading asks for the speed after whose step
+     *                it is still on its braking profile
+     */
+    double wantedRotVel(double th, double dt, double turning) {
         double w = switch (rot) {
             case VEL -> rotVel;
             case WHEELS -> Math.toDegrees((right - left) / 2 * params.diffConvFactor());
@@ -232,7 +243,8 @@ final class DriveController {
                 if (Math.abs(err) < HEADING_DONE) {
                     yield 0;
                 }
-                double speed = Math.min(Math.sqrt(2 * rotDecel * Math.abs(err)), Math.abs(err) / dt);
+                double speed = SpeedProfile.onProfile(Math.abs(err), Math.signum(err) * turning, rotDecel, rotAccel,
+                        rotDecel, dt, maxRotVel);
                 yield Math.copySign(speed, err);
             }
         };

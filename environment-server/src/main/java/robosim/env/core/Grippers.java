@@ -196,6 +196,6 @@ final class Grippers {
         }
         return new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.leftVel(),
                 s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(), s.heat(), s.messages(), s.errors(),
-                s.bumpers(), s.truePose(), g, s.camera(), s.sonarNew());
+                s.bumpers(), s.truePose(), g, s.camera(), s.sonarNew(), s.motorsEnabled());
     }
 }

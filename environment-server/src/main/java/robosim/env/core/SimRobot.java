@@ -41,9 +41,10 @@ final class SimRobot {
     boolean connected;
     /** How its motion is swept: through the world's pucks, which it pushes. */
     Sweeper sweeper = Sweeper.PLAIN;
+    private final Motors motors;
 
     SimRobot(String name, String type, RobotParameters params, BodyShape body, int bodyId,
-             double x, double y, double th, Noise noise, RandomGenerator random) {
+             double x, double y, double th, Noise noise, RandomGenerator random, boolean motorsEnabled) {
         this.name = name;
         this.type = type;
         this.params = params;
@@ -56,11 +57,44 @@ final class SimRobot {
         this.th = Angles.fix(th);
         this.sensors = new Sensors(params, noise, random);
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
+        this.motors = new Motors(!"scout".equals(type), motorsEnabled);
     }
 
     /** Hands a motion command to the drive controller, which steers by odometry. */
     void drive(Command.Motion command) {
         drive.apply(command, odometry.x(), odometry.y(), odometry.th());
+    }
+
+    /**
+     * Carries out a motion command of the robot's program: a motor switch, or a command for the
+     * drive controller unless the motors are disabled.
+     *
+     * @param command the command
+     * @return null when carried out; otherwise why not, to tell the robot ("" when it was told already)
+     */
+    String command(Command.Motion command) {
+        if (command instanceof Command.SetMotors m) {
+            if (motors.set(m.on())) {
+                drive(new Command.Stop()); // as ENABLE 0 stops a Pioneer
+            }
+            return null;
+        }
+        String refusal = motors.refusal(command);
+        if (refusal == null) {
+            drive(command);
+        }
+        return refusal;
+    }
+
+    /**
+     * A program has connected: the motors are as the world says a program finds them.
+     *
+     * @param enabled whether they are enabled
+     */
+    void motorsAtConnect(boolean enabled) {
+        if (motors.set(enabled)) {
+            drive(new Command.Stop());
+        }
     }
 
     /** Advances the robot one step of {@code dt} seconds, stopping at contact. */
@@ -70,24 +104,30 @@ final class SimRobot {
             rotVel = 0;
         }
         // the controller steers by odometry, as a robot's firmware does
-        double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt);
-        double wantW = drive.wantedRotVel(odometry.th(), dt);
-        vel = approach(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
-        rotVel = approach(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
-        if (vel == 0 && rotVel == 0) {
+        double wantV = drive.wantedVel(odometry.x(), odometry.y(), dt, vel);
+        double wantW = drive.wantedRotVel(odometry.th(), dt, rotVel);
+        // the way covered is the integral of each speed's ramp this step, not the end speed times dt
+        SpeedProfile trans = SpeedProfile.step(vel, wantV, drive.transAccel(), drive.transDecel(), dt);
+        SpeedProfile rot = SpeedProfile.step(rotVel, wantW, drive.rotAccel(), drive.rotDecel(), dt);
+        vel = trans.speed();
+        rotVel = rot.speed();
+        if (trans.distance() == 0 && rot.distance() == 0) {
             bumpers = bumpers(geometry);
             return;
         }
-        SweepResult r = sweeper.sweep(geometry, bodyId, vel * dt, Math.toRadians(rotVel) * dt);
+        double turn = Math.toRadians(rot.distance());
+        SweepResult r = sweeper.sweep(geometry, bodyId, trans.distance(), turn);
+        double covered = trans.distance() * r.fraction();
+        double turned = turn * r.fraction();
         Pose2D p = r.pose();
-        distance += Math.abs(vel * dt) * r.fraction();
+        distance += Math.abs(covered);
         x = p.x();
         y = p.y();
         th = Angles.fix(Math.toDegrees(p.th()));
         geometry.moveBody(bodyId, pose());
-        odometry.travel(vel * dt * r.fraction(), Math.toRadians(rotVel) * dt * r.fraction(), x, y, th);
-        double half = Math.toRadians(rotVel) / params.diffConvFactor() * dt * r.fraction();
-        drive.travelled(vel * dt * r.fraction() - half, vel * dt * r.fraction() + half);
+        odometry.travel(covered, turned, x, y, th);
+        double half = turned / params.diffConvFactor();
+        drive.travelled(covered - half, covered + half);
         if (r.blocked()) {
             if (!stalled) {
                 collisions++;
@@ -113,17 +153,6 @@ final class SimRobot {
             bits |= 1 << sector;
         }
         return bits;
-    }
-
-    /**
-     * Moves {@code current} towards {@code target} by at most the acceleration (speeding up) or the
-     * deceleration (slowing down) over {@code dt}.
-     */
-    static double approach(double current, double target, double accel, double decel, double dt) {
-        boolean slowing = Math.abs(target) < Math.abs(current) || Math.signum(target) * Math.signum(current) < 0;
-        double limit = (slowing ? decel : accel) * dt;
-        double delta = Math.max(-limit, Math.min(limit, target - current));
-        return current + delta;
     }
 
     void readSensors(GeometryClient geometry, List<HeatSource> heat, long timeMs) {
@@ -175,7 +204,7 @@ final class SimRobot {
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
                 messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, null,
-                sensors.camera().view(), sensors.sonarNew());
+                sensors.camera().view(), sensors.sonarNew(), motors.enabled());
     }
 
     double x() {

@@ -121,7 +121,7 @@ public final class Simulation {
 
     private SimRobot newRobot(RobotSpec spec, RobotParameters p, BodyShape body, int bodyId, RandomGenerator random) {
         SimRobot r = new SimRobot(spec.name(), spec.type(), p, body, bodyId, spec.x(), spec.y(), spec.th(),
-                world.noise(), random);
+                world.noise(), random, world.rules().motorsEnabled());
         r.sweeper = pucks;
         return r;
     }
@@ -290,7 +290,10 @@ public final class Simulation {
     /** Hands a command to what carries out its group, in the order the robot sent it. */
     private void apply(SimRobot r, Command c, long current) {
         if (c instanceof Command.Motion m) {
-            r.drive(m);
+            String refusal = r.command(m);
+            if (refusal != null && !refusal.isEmpty()) {
+                messages.error(r.name, "step " + current + ": " + refusal);
+            }
         } else if (c instanceof Command.SensorSetting s) {
             r.sensors().configure(s);
         } else if (c instanceof Command.Messaging m) {
@@ -455,13 +458,18 @@ public final class Simulation {
     }
 
     /**
-     * Marks a robot's program as connected or not, for viewers.
+     * Marks a robot's program as connected or not, for viewers. A program that connects finds a
+     * Pioneer's motors as the world says ({@code <world motors=...>}, disabled by default).
      *
      * @param name      the robot
      * @param connected whether its program is connected
      */
     public void setConnected(String name, boolean connected) {
-        robot(name).connected = connected;
+        SimRobot r = robot(name);
+        r.connected = connected;
+        if (connected) {
+            r.motorsAtConnect(world.rules().motorsEnabled());
+        }
     }
 
     /** @return the moving parts of the world now, for viewers */

@@ -34,7 +34,7 @@ class EveryCommandHandledTest {
             new Command.Gripper(Command.Gripper.GRIP_CLOSE),
             new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300), new Command.AimPtz(10, 5, 100),
             new Command.TrackColors(true), new Command.BindChannel(9, "#123456"),
-            new Command.SetSonarCycle(40));
+            new Command.SetSonarCycle(40), new Command.SetMotors(true));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {

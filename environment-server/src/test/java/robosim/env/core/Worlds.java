@@ -60,14 +60,24 @@ final class Worlds {
         return new Obstacle(new double[] {x0, y0, x1, y0, x1, y1, x0, y1}, 500, 1);
     }
 
-    /** A world with heat sources and noise. */
+    /**
+     * A world with heat sources and noise. Its Pioneers' motors are enabled ({@code motors="enabled"}),
+     * as the tests of motion push their commands straight into the simulation.
+     */
     static World world(double w, double h, List<Obstacle> obstacles, List<robosim.env.world.HeatSource> heat,
                        robosim.env.world.Noise noise, RobotSpec... robots) {
-        return new World("test", Path.of("test.xml"), w, h, 100, new ArrayList<>(obstacles), List.of(robots), heat, noise);
+        return motorsOn(new World("test", Path.of("test.xml"), w, h, 100, new ArrayList<>(obstacles), List.of(robots),
+                heat, noise));
     }
 
-    /** A world of the given size with the given obstacles and robots. */
+    /** A world of the given size with the given obstacles and robots, its Pioneers' motors enabled. */
     static World world(double w, double h, List<Obstacle> obstacles, RobotSpec... robots) {
-        return new World("test", Path.of("test.xml"), w, h, 100, new ArrayList<>(obstacles), List.of(robots));
+        return motorsOn(new World("test", Path.of("test.xml"), w, h, 100, new ArrayList<>(obstacles),
+                List.of(robots)));
+    }
+
+    /** A world as the world file says, but with {@code motors="enabled"}. */
+    static World motorsOn(World w) {
+        return w.withRules(w.rules().withMotorsEnabled(true));
     }
 }

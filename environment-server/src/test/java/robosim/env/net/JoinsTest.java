@@ -80,7 +80,7 @@ class JoinsTest {
     private void runSteps(Peer r1, int last) throws IOException {
         for (long k = sim.stepCount() + 1; k <= last; k++) {
             rules.openStep(k);
-            r1.send(new RobotRequests(k, k == 1 ? List.of(new Command.SetVel(300)) : List.of()));
+            r1.send(new RobotRequests(k, k == 1 ? List.of(new Command.SetMotors(true), new Command.SetVel(300)) : List.of()));
             deliver(r1);
             sim.step(rules.closeStep());
         }
@@ -116,7 +116,7 @@ class JoinsTest {
         for (long k = 1; k <= 5; k++) {
             rules.openStep(k);
             r1.send(new RobotRequests(k, List.of()));
-            r2.send(new RobotRequests(k, k == 1 ? List.of(new Command.SetVel(300)) : List.of()));
+            r2.send(new RobotRequests(k, k == 1 ? List.of(new Command.SetMotors(true), new Command.SetVel(300)) : List.of()));
             deliver(r1);
             deliver(r2);
             sim.step(rules.closeStep());

@@ -35,6 +35,8 @@ final class BridgeRobot extends AbstractRobot {
     private volatile boolean resetAfterStep;
     private volatile int simStatMode;
     private volatile RobotState latest;
+    /** Whether the world has a program find the motors enabled as it connects ({@code <world motors=...>}). */
+    private volatile boolean motorsAtConnect;
     private long nextStepNanos;
 
     /** A client with its session and the robot's server state for it. */
@@ -81,6 +83,7 @@ final class BridgeRobot extends AbstractRobot {
             return;
         }
         latest = state();
+        motorsAtConnect = Boolean.TRUE.equals(latest.motorsEnabled());
         connected.complete(null);
         while (isConnected()) {
             Attached a = attached;
@@ -153,7 +156,7 @@ final class BridgeRobot extends AbstractRobot {
 
     private void report(Attached a, RobotState s) {
         PioneerSession session = a.session();
-        session.send(a.sips().build(s, a.frame(), a.handler().motorsEnabled(), a.handler().sonarOn()).toPacket());
+        session.send(a.sips().build(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()), a.handler().sonarOn()).toPacket());
         for (LaserPacket p : a.laser().packets(s.laser())) {
             session.send(p.toPacket());
         }
@@ -170,8 +173,8 @@ final class BridgeRobot extends AbstractRobot {
 
     /**
      * Attaches a client that has just connected: the odometry starts again at (0, 0, 0), the motors
-     * are disabled until it enables them, the sonar is on and the laser off, as on a Pioneer just
-     * connected to.
+     * are as the world has a program find them (disabled unless {@code <world motors="enabled">}, until
+     * the client's ENABLE 1), the sonar is on and the laser off, as on a Pioneer just connected to.
      *
      * @param session the client's session
      * @param simExit what SIM_EXIT does when it is allowed
@@ -187,6 +190,7 @@ final class BridgeRobot extends AbstractRobot {
                 new SessionEffects(session, simExit));
         Attached a = new Attached(session, handler, new SipBuilder(served.factors()), laser, frame);
         commands.add(new Command.Stop());
+        commands.add(new Command.SetMotors(motorsAtConnect));
         commands.add(new Command.SetSonar(true));
         commands.add(laser.command(served.parameters().laserMaxRange()));
         simStatMode = 0;

@@ -14,7 +14,8 @@ import robosim.protocol.RobotParameters;
 /**
  * Carries out an ARIA client's commands after the handshake, as a Pioneer (and MobileSim) does:
  * motion commands become the robot's requests, with headings in the robot's own odometry frame;
- * motion waits for ENABLE 1 and stops at ENABLE 0; the simulator commands move the robot, switch
+ * ENABLE switches the robot's motors in the Environment, which ignores motion while they are
+ * disabled and stops the robot at ENABLE 0 (the SIP's flag then comes from its state); the simulator commands move the robot, switch
  * the simulated laser and answer with status. A command the robot server does not carry out is
  * logged once and ignored; a packet whose data does not fit its command is dropped with a log line.
  */
@@ -64,7 +65,6 @@ final class CommandHandler {
     private final LaserScan laser;
     private final OdometryFrame frame;
     private final Set<Integer> loggedOnce = new HashSet<>();
-    private volatile boolean motorsEnabled;
     private volatile boolean sonarOn = true;
     private volatile int bumpStall;
     private int transVelMax;
@@ -117,11 +117,6 @@ final class CommandHandler {
                 rotAccel, rotDecel, transAccel, transDecel, 0, 0, FIRMWARE);
     }
 
-    /** @return whether the motors are enabled */
-    boolean motorsEnabled() {
-        return motorsEnabled;
-    }
-
     /** @return whether the sonar is on */
     boolean sonarOn() {
         return sonarOn;
@@ -150,12 +145,7 @@ final class CommandHandler {
         switch (id) {
             case Commands.PULSE, Commands.OPEN, Commands.BATTERYINFO, Commands.CONFIG -> { }
             case Commands.CLOSE -> effects.close("the client sent CLOSE");
-            case Commands.ENABLE -> {
-                motorsEnabled = d.intArgument("argument") != 0;
-                if (!motorsEnabled) {
-                    effects.request(new Command.Stop());
-                }
-            }
+            case Commands.ENABLE -> effects.request(new Command.SetMotors(d.intArgument("argument") != 0));
             case Commands.SONAR -> {
                 sonarOn = d.intArgument("argument") != 0;
                 effects.request(new Command.SetSonar(sonarOn));
@@ -216,13 +206,9 @@ final class CommandHandler {
         }
     }
 
+    /** The Environment ignores it while the motors are disabled, and says so once in the robot's state. */
     private void motion(Command c) {
-        if (motorsEnabled) {
-            effects.request(c);
-        } else {
-            once(-1, "robot " + robot + ": a motion command came while the motors are disabled; ignored until ENABLE 1"
-                    + " (said once)");
-        }
+        effects.request(c);
     }
 
     private void limit(int value, Command.DriveLimit accel, Command.DriveLimit decel) {

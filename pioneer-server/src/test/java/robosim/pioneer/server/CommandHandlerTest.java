@@ -62,19 +62,18 @@ class CommandHandlerTest {
             });
 
     @Test
-    void motionWaitsForTheMotorsToBeEnabled() {
+    void enableSwitchesTheRobotsMotorsAndMotionGoesToTheEnvironmentWhichDecides() {
         handler.handle(Commands.comInt(Commands.VEL, 300));
-        assertEquals(List.of(), requests);
         handler.handle(Commands.comInt(Commands.ENABLE, 1));
         handler.handle(Commands.comInt(Commands.VEL, -300));
-        assertEquals(List.of(new Command.SetVel(-300)), requests);
         handler.handle(Commands.comInt(Commands.ENABLE, 0));
-        assertEquals(new Command.Stop(), requests.get(1), "disabling the motors stops the robot");
+        assertEquals(List.of(new Command.SetVel(300), new Command.SetMotors(true), new Command.SetVel(-300),
+                new Command.SetMotors(false)), requests);
+        assertEquals(List.of(), log);
     }
 
     @Test
     void vel2IsInUnitsOfTheVel2Divisor() {
-        handler.handle(Commands.comInt(Commands.ENABLE, 1));
         handler.handle(Commands.com2Bytes(Commands.VEL2, -5, 10));
         assertEquals(List.of(new Command.SetVel2(-100, 200)), requests);
     }
@@ -82,7 +81,6 @@ class CommandHandlerTest {
     @Test
     void headIsInTheRobotsOwnFrame() {
         frame.resetAt(0, 0, 30);
-        handler.handle(Commands.comInt(Commands.ENABLE, 1));
         handler.handle(Commands.comInt(Commands.HEAD, 90));
         assertEquals(List.of(new Command.SetHeading(120)), requests);
     }

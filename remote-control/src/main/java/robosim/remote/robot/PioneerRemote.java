@@ -84,6 +84,7 @@ public final class PioneerRemote extends RemoteRobot {
             throw new IllegalStateException("robot " + name + " could not connect to " + host + ":" + port + ": "
                     + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         return new PioneerRemote(robot, keydrive);
     }
 

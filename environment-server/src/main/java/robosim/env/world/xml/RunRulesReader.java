@@ -9,8 +9,8 @@ import robosim.env.world.RunRules;
 import robosim.geometry.Pose2D;
 
 /**
- * Reads a world's {@code open} attribute, its {@code <spawn>} poses and its {@code <end>} into
- * {@link RunRules}, naming the line of the element that breaks a rule. A spawn pose must lie inside
+ * Reads a world's {@code open} and {@code motors} attributes, its {@code <spawn>} poses and its
+ * {@code <end>} into {@link RunRules}, naming the line of the element that breaks a rule. A spawn pose must lie inside
  * the world; whether a body fits there is decided when a robot joins (its body comes with it).
  */
 final class RunRulesReader {
@@ -44,7 +44,21 @@ final class RunRulesReader {
                 spawns.add(spawn(attributes, s, bounds));
             }
         }
-        return new RunRules(end == null ? EndRule.DEFAULT : end(attributes, end, gold), open, spawns);
+        return new RunRules(end == null ? EndRule.DEFAULT : end(attributes, end, gold), open, spawns,
+                motors(attributes, root));
+    }
+
+    /** {@code motors="enabled"} or {@code "disabled"}, the default: the motors as a Pioneer's program connects. */
+    private static boolean motors(Attributes attributes, WorldElement root) {
+        if (root.motors == null) {
+            return false;
+        }
+        String word = root.motors.trim();
+        if (!word.equals("enabled") && !word.equals("disabled")) {
+            throw attributes.error(root, "attribute motors on <world> is '" + word
+                    + "' but must be enabled or disabled (the motors as a Pioneer's program connects)");
+        }
+        return word.equals("enabled");
     }
 
     private static Pose2D spawn(Attributes attributes, SpawnElement s, Bounds bounds) {

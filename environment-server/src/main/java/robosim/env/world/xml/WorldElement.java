@@ -23,6 +23,8 @@ final class WorldElement extends Element {
     String boundary;
     @JacksonXmlProperty(isAttribute = true)
     String open;
+    @JacksonXmlProperty(isAttribute = true)
+    String motors;
 
     /** The child elements in file order. */
     final List<Element> children = new ArrayList<>();

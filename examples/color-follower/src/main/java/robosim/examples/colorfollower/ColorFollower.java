@@ -73,6 +73,7 @@ public final class ColorFollower {
             throw new IllegalStateException("robot " + robot.getName() + " could not connect: "
                     + robot.getConnectionError());
         }
+        robot.enableMotors();
         acts.openPort(robot);
         camera.init();
     }

@@ -87,8 +87,12 @@ public class Gold extends ArRobot {
         robot.disconnect();
     }
 
-    /** Searches until the gold is found (by anyone) or the run ends; then stands still until the end. */
+    /**
+     * Enables the motors (a Pioneer's are disabled when its program connects, as in ARIA), then
+     * searches until the gold is found (by anyone) or the run ends; then stands still until the end.
+     */
     public void search() {
+        enableMotors();
         laser.blockingConnect();
         heat.attach(this);
         cx = (int) Math.floor(getX() / cellSize);

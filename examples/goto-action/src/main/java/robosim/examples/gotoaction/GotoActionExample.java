@@ -48,6 +48,7 @@ public final class GotoActionExample {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors();
         drive(robot, side, seconds * 1000L, System.out);
         robot.disconnect();
     }

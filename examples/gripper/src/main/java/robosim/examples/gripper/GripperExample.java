@@ -69,6 +69,7 @@ public final class GripperExample {
             throw new IllegalStateException("gripperExample: could not connect to the robot: "
                     + robot.getConnectionError());
         }
+        robot.enableMotors();
         ArGripper gripper = new ArGripper(robot);
         GripperExample example = new GripperExample(robot, gripper, System.out);
         if (!example.start()) {

@@ -47,6 +47,7 @@ public final class MeetUp {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         int heard = new MeetUp(robot, args[3]).run();
         System.out.println(args[0] + " met " + args[3] + " after hearing from it " + heard + " times");
         robot.disconnect();

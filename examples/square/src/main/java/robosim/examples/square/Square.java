@@ -32,6 +32,7 @@ public final class Square {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         drive(robot, System.out);
         robot.disconnect();
     }

@@ -60,6 +60,7 @@ public final class Teleop {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         System.out.println("teleop " + args[0] + ": " + COMMANDS);
         new Teleop(robot, System.out).run(new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8)));
         robot.disconnect();

@@ -46,7 +46,8 @@ public final class WallFollower {
     }
 
     /**
-     * Connects the robot and switches its laser on.
+     * Connects the robot, enables its motors (a Pioneer's are disabled when its program connects, as
+     * in ARIA) and switches its laser on.
      *
      * @throws IllegalStateException if either fails, with the reason
      */
@@ -55,6 +56,7 @@ public final class WallFollower {
             throw new IllegalStateException("robot " + robot.getName() + " could not connect: "
                     + robot.getConnectionError());
         }
+        robot.enableMotors();
         if (!laser.blockingConnect()) {
             throw new IllegalStateException("the laser of robot " + robot.getName() + " could not connect: "
                     + laser.getConnectionError());

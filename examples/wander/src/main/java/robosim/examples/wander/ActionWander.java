@@ -46,6 +46,7 @@ public final class ActionWander {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors();
         addTo(robot);
         robot.run();
     }

@@ -37,6 +37,7 @@ public final class Wander {
         if (!robot.blockingConnect()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
         }
+        robot.enableMotors(); // a Pioneer's motors are disabled when its program connects, as in ARIA
         new Wander(robot).run();
         robot.disconnect();
     }
