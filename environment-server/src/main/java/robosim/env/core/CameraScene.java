@@ -27,10 +27,10 @@ final class CameraScene {
     }
 
     /**
-     * @return the scenery and every robot's body where it stands now; empty when no robot's camera
+     * @return the scenery, the pucks and every robot's body where they stand now; empty when no robot's camera
      *         is on, so a run without cameras builds nothing
      */
-    List<ColoredShape> now(List<SimRobot> robots, GeometryClient geometry) {
+    List<ColoredShape> now(List<SimRobot> robots, GeometryClient geometry, Pucks pucks) {
         boolean any = false;
         for (SimRobot r : robots) {
             any |= r.sensors().camera().isOn();
@@ -39,6 +39,7 @@ final class CameraScene {
             return List.of();
         }
         List<ColoredShape> shapes = new ArrayList<>(scenery);
+        pucks.addCameraShapes(shapes);
         for (SimRobot r : robots) {
             Coordinate[] ring = geometry.bodyPolygon(r.bodyId).getExteriorRing().getCoordinates();
             double[] xy = new double[2 * (ring.length - 1)];

@@ -5,11 +5,13 @@ import java.util.List;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.geom.Polygon;
+import robosim.env.camera.ColoredShape;
 import robosim.env.world.WorldObject;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.geometry.SweepResult;
+import robosim.protocol.Colors;
 import robosim.protocol.Snapshot;
 
 /**
@@ -159,6 +161,30 @@ final class Pucks implements Sweeper {
      * @param lifted whether each holder's lift is off the bottom, by holder name
      * @return each object where it is now, for viewers
      */
+    /** How high a puck stands, as the camera sees it, mm: a hockey puck is an inch thick. */
+    static final double CAMERA_HEIGHT = 25.4;
+
+    /**
+     * Adds each puck, as the camera sees it, to a scene: its outline (a polygon of {@value #SIDES}
+     * sides) standing {@value #CAMERA_HEIGHT} mm from the floor, in the world file's colour. A held puck
+     * is seen where it is carried, on the floor (the camera does not model the lift).
+     *
+     * @param shapes the scene
+     */
+    void addCameraShapes(List<ColoredShape> shapes) {
+        for (int i = 0; i < ids.length; i++) {
+            double r = radius(i);
+            double[] xy = new double[2 * SIDES];
+            for (int k = 0; k < SIDES; k++) {
+                double a = 2 * Math.PI * k / SIDES;
+                xy[2 * k] = x[i] + r * Math.cos(a);
+                xy[2 * k + 1] = y[i] + r * Math.sin(a);
+            }
+            String color = specs.get(i).color();
+            shapes.add(new ColoredShape(xy, CAMERA_HEIGHT, color == null ? ColoredShape.NO_COLOR : Colors.parse(color), -1));
+        }
+    }
+
     List<Snapshot.ObjectView> views(java.util.function.Predicate<String> lifted) {
         List<Snapshot.ObjectView> views = new ArrayList<>(ids.length);
         for (int i = 0; i < ids.length; i++) {

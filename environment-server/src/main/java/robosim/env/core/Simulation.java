@@ -255,7 +255,7 @@ public final class Simulation {
     private void readIfUnread(int i) {
         if (unread[i]) {
             order.get(i).readSensors(geometry, world.heat(), timeMs());
-            CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry));
+            CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry, pucks));
             unread[i] = false;
         }
     }
@@ -375,7 +375,7 @@ public final class Simulation {
     private void readSensors() {
         long now = timeMs();
         parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now));
-        List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry);
+        List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry, pucks);
         double dt = world.stepMs() / 1000.0;
         parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
     }
