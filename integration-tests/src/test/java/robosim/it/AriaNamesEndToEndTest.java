@@ -66,4 +66,53 @@ class AriaNamesEndToEndTest {
             assertFalse(s.second(), "the second found nothing to leave");
         }
     }
+
+    /** The odometers after a program drove a 1 m square. */
+    private record Square(double distance, double degrees, double tripDistance, double tripDegrees) { }
+
+    @Test
+    void afterAOneMetreSquareTheOdometerSaysFourMetresAndAFullTurnAndTheTripHalfThat() throws Exception {
+        Path world = dir.resolve("square.xml");
+        Files.writeString(world, """
+                <world name="square" width="8000" height="6000" boundary="true">
+                  <robot name="r1" type="pioneer" x="3000" y="2000" th="0" params="%s"/>
+                </world>
+                """.formatted(LocalEnvironment.root().resolve("testLoadFiles/robots/p3dx.xml")));
+        try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 7, ServerOptions.loopback())) {
+            CompletableFuture<Square> seen = Background.supply("robot r1", () -> {
+                ArRobot robot = ActionPrograms.connect(env, "r1");
+                double tripDistance = 0;
+                double tripDegrees = 0;
+                for (int side = 0; side < 4; side++) {
+                    if (side == 2) {
+                        robot.resetTripOdometer();
+                    }
+                    robot.move(1000);
+                    settle(robot);
+                    robot.setDeltaHeading(90);
+                    settle(robot);
+                }
+                tripDistance = robot.getTripOdometerDistance();
+                tripDegrees = robot.getTripOdometerDegrees();
+                Square s = new Square(robot.getOdometerDistance(), robot.getOdometerDegrees(), tripDistance, tripDegrees);
+                robot.disconnect();
+                return s;
+            });
+            Square s = seen.get(60, TimeUnit.SECONDS);
+            env.await(60);
+
+            // each move ends on its mark and each turn on its heading (no noise): 4 m and 360°
+            assertEquals(4000, s.distance(), 2);
+            assertEquals(360, s.degrees(), 1);
+            assertEquals(2000, s.tripDistance(), 2);
+            assertEquals(180, s.tripDegrees(), 1);
+        }
+    }
+
+    /** Waits until the last motion command is done and the robot has stopped. */
+    private static void settle(ArRobot robot) {
+        do {
+            robot.sleepSimulated(100);
+        } while (!(robot.isMoveDone(0.5) && robot.isHeadingDone(0.1) && robot.isStopped(0.5, 0.1)));
+    }
 }
