@@ -1,7 +1,6 @@
 package robosim.aria;
 
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
@@ -43,7 +42,7 @@ public class ArRobot extends AbstractRobot {
     private final ReentrantLock lock = new ReentrantLock();
     private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
     private final TaskList userTasks = new TaskList("user");
-    private final List<ArRangeDevice> rangeDevices = new CopyOnWriteArrayList<>();
+    private final RangeDevices rangeDevices = new RangeDevices();
     private volatile long counter;
     private volatile boolean sonarEnabled = true;
     private volatile boolean runningAsync;
@@ -350,25 +349,22 @@ public class ArRobot extends AbstractRobot {
 
     /** @param device a range device to attach; its robot becomes this one */
     public void addRangeDevice(ArRangeDevice device) {
-        device.setRobot(this);
-        rangeDevices.add(device);
+        rangeDevices.add(device, this);
     }
 
     /** @param device a range device to detach; its robot is cleared */
     public void remRangeDevice(ArRangeDevice device) {
-        if (rangeDevices.remove(device)) {
-            device.setRobot(null);
-        }
+        rangeDevices.remove(device);
     }
 
     /** @param name a device's name @return the first attached device of that name, or null */
     public ArRangeDevice findRangeDevice(String name) {
-        return rangeDevices.stream().filter(d -> d.getName().equals(name)).findFirst().orElse(null);
+        return rangeDevices.find(name);
     }
 
     /** @return the attached range devices */
     public List<ArRangeDevice> getRangeDeviceList() {
-        return List.copyOf(rangeDevices);
+        return rangeDevices.list();
     }
 
     /** @return the latest state, for the devices of this package */
@@ -861,9 +857,7 @@ public class ArRobot extends AbstractRobot {
             ArPose before = getPose();
             encoderTransform = newEncoderTransform;
             ArTransform moved = new ArTransform(before, getPose());
-            for (ArRangeDevice d : rangeDevices) {
-                d.applyTransform(moved, doCumulative);
-            }
+            rangeDevices.applyTransform(moved, doCumulative);
             sonar.applyTransform(moved);
         } finally {
             lock.unlock();
@@ -892,7 +886,7 @@ public class ArRobot extends AbstractRobot {
      * @return the distance, mm, or −1 if no device is attached
      */
     public double checkRangeDevicesCurrentPolar(double startAngle, double endAngle, double[] angleOut) {
-        return nearest(d -> d.currentReadingPolar(startAngle, endAngle, null),
+        return rangeDevices.nearest(d -> d.currentReadingPolar(startAngle, endAngle, null),
                 (d, out) -> d.currentReadingPolar(startAngle, endAngle, out), angleOut);
     }
 
@@ -918,30 +912,8 @@ public class ArRobot extends AbstractRobot {
      * @return the distance, mm, or −1 if no device is attached
      */
     public double checkRangeDevicesCumulativePolar(double startAngle, double endAngle, double[] angleOut) {
-        return nearest(d -> d.cumulativeReadingPolar(startAngle, endAngle, null),
+        return rangeDevices.nearest(d -> d.cumulativeReadingPolar(startAngle, endAngle, null),
                 (d, out) -> d.cumulativeReadingPolar(startAngle, endAngle, out), angleOut);
-    }
-
-    /** Picks the device with the smallest answer, then asks it again to fill the out-parameter. */
-    private <T> double nearest(java.util.function.ToDoubleFunction<ArRangeDevice> ask,
-                               java.util.function.ToDoubleBiFunction<ArRangeDevice, T> askFilling, T out) {
-        ArRangeDevice best = null;
-        double closest = 0;
-        for (ArRangeDevice d : rangeDevices) {
-            double dist = ask.applyAsDouble(d);
-            // ARIA keeps the first device on a tie
-            if (best == null || dist < closest) {
-                best = d;
-                closest = dist;
-            }
-        }
-        if (best == null) {
-            return -1;
-        }
-        if (out != null) {
-            askFilling.applyAsDouble(best, out);
-        }
-        return closest;
     }
 
     /**
@@ -971,7 +943,7 @@ public class ArRobot extends AbstractRobot {
      * @return the distance, mm, or −1 if no device is attached
      */
     public double checkRangeDevicesCurrentBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
-        return nearest(d -> d.currentReadingBox(x1, y1, x2, y2, null),
+        return rangeDevices.nearest(d -> d.currentReadingBox(x1, y1, x2, y2, null),
                 (d, out) -> d.currentReadingBox(x1, y1, x2, y2, out), readingPos);
     }
 
@@ -1002,7 +974,7 @@ public class ArRobot extends AbstractRobot {
      * @return the distance, mm, or −1 if no device is attached
      */
     public double checkRangeDevicesCumulativeBox(double x1, double y1, double x2, double y2, ArPose readingPos) {
-        return nearest(d -> d.cumulativeReadingBox(x1, y1, x2, y2, null),
+        return rangeDevices.nearest(d -> d.cumulativeReadingBox(x1, y1, x2, y2, null),
                 (d, out) -> d.cumulativeReadingBox(x1, y1, x2, y2, out), readingPos);
     }
 
