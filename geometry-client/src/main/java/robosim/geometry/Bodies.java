@@ -1,7 +1,9 @@
 package robosim.geometry;
 
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
+import java.util.Objects;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.GeometryFactory;
@@ -18,7 +20,7 @@ final class Bodies {
     private final double cellSize;
     private final List<Body> list = new ArrayList<>();
     /** The bodies left out of every query (a puck held in a gripper). */
-    private final java.util.BitSet hidden = new java.util.BitSet();
+    private final BitSet hidden = new BitSet();
     /** The area the grid covers; null until there is an obstacle or a body. */
     private Envelope extent;
     private CellGrid grid;
@@ -64,7 +66,7 @@ final class Bodies {
     }
 
     void setSolid(int id, boolean solid) {
-        get(id);
+        Objects.checkIndex(id, list.size());
         hidden.set(id, !solid);
     }
 

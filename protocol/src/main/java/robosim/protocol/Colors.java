@@ -2,6 +2,7 @@ package robosim.protocol;
 
 import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
 
 /**
  * Colours as world files and ACTS channel bindings name them: one of {@link #NAMES}, or
@@ -37,7 +38,7 @@ public final class Colors {
             return Integer.parseInt(t.substring(1), 16);
         }
         throw new IllegalArgumentException("'" + text + "' is not a colour: give #rrggbb or one of "
-                + String.join(", ", new java.util.TreeSet<>(NAMES.keySet())));
+                + String.join(", ", new TreeSet<>(NAMES.keySet())));
     }
 
     /**

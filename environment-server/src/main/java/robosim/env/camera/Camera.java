@@ -23,6 +23,8 @@ public final class Camera {
     public static final List<String> DEFAULT_CHANNELS =
             List.of("red", "green", "blue", "yellow", "cyan", "magenta", "orange", "purple");
 
+    private static final int[] DEFAULT_RGB = defaultRgb();
+
     private PtzMotion ptz;
     private double mountHeight = DEFAULT_MOUNT_HEIGHT;
     private boolean tracking;
@@ -31,10 +33,16 @@ public final class Camera {
 
     /** A camera switched off, its channels at their defaults. */
     public Camera() {
-        Arrays.fill(channels, ColoredShape.NO_COLOR);
+        System.arraycopy(DEFAULT_RGB, 0, channels, 0, channels.length);
+    }
+
+    private static int[] defaultRgb() {
+        int[] rgb = new int[CameraView.CHANNELS];
+        Arrays.fill(rgb, ColoredShape.NO_COLOR);
         for (int i = 0; i < DEFAULT_CHANNELS.size(); i++) {
-            channels[i] = Colors.parse(DEFAULT_CHANNELS.get(i));
+            rgb[i] = Colors.parse(DEFAULT_CHANNELS.get(i));
         }
+        return rgb;
     }
 
     /**

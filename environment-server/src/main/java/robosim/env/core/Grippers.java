@@ -7,7 +7,6 @@ import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.protocol.Command;
 import robosim.protocol.GripperState;
-import robosim.protocol.RobotState;
 
 /**
  * The grippers of the robots whose parameters give them one ({@code HasGripper}), and what they
@@ -186,16 +185,5 @@ final class Grippers {
     synchronized boolean lifted(String robot) {
         GripperModel m = models.get(robot);
         return m != null && !m.down();
-    }
-
-    /** @return the state with the robot's gripper in it */
-    RobotState withGripper(SimRobot r, RobotState s) {
-        GripperState g = state(r);
-        if (g == null) {
-            return s;
-        }
-        return new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.leftVel(),
-                s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(), s.heat(), s.messages(), s.errors(),
-                s.bumpers(), s.truePose(), g, s.camera(), s.sonarNew(), s.motorsEnabled());
     }
 }

@@ -10,6 +10,7 @@ import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
+import robosim.protocol.GripperState;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
@@ -199,11 +200,12 @@ final class SimRobot {
         return new Pose2D(x, y, Math.toRadians(th));
     }
 
-    RobotState state(long step, long timeMs, List<MessageDelivery> messages, List<String> errors) {
+    RobotState state(long step, long timeMs, List<MessageDelivery> messages, List<String> errors,
+                     GripperState gripper) {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
                 vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, null,
+                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, gripper,
                 sensors.camera().view(), sensors.sonarNew(), motors.enabled());
     }
 

@@ -254,8 +254,11 @@ public final class Simulation {
     /** Before step 1: reads robot {@code i}'s sensors if they have not been read. */
     private void readIfUnread(int i) {
         if (unread[i]) {
-            order.get(i).readSensors(geometry, world.heat(), timeMs());
-            CameraScene.read(order.get(i), 0, cameraScene.now(order, geometry, pucks));
+            SimRobot r = order.get(i);
+            r.readSensors(geometry, world.heat(), timeMs());
+            if (r.sensors().camera().isOn()) {
+                CameraScene.read(r, 0, cameraScene.now(order, geometry, pucks));
+            }
             unread[i] = false;
         }
     }
@@ -376,8 +379,11 @@ public final class Simulation {
         long now = timeMs();
         parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now));
         List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry, pucks);
-        double dt = world.stepMs() / 1000.0;
-        parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
+        if (!seen.isEmpty()) {
+            // some robot's camera is on; the others' read nothing
+            double dt = world.stepMs() / 1000.0;
+            parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
+        }
     }
 
     /**
@@ -425,7 +431,7 @@ public final class Simulation {
     public RobotState state(String name) {
         SimRobot r = robot(name);
         readIfUnread(indexes.get(name));
-        return grippers.withGripper(r, r.state(step, timeMs(), messages.delivered(name), messages.errors(name)));
+        return r.state(step, timeMs(), messages.delivered(name), messages.errors(name), grippers.state(r));
     }
 
     /**
