@@ -164,16 +164,16 @@ final class CommandHandler {
                     Command.DriveLimit.ROT_DECEL);
             case Commands.SETO -> effects.resetOdometry();
             case Commands.STOP, Commands.ESTOP -> effects.request(new Command.Stop());
-            case Commands.VEL -> motion(new Command.SetVel(d.intArgument("mm/s")));
-            case Commands.RVEL, Commands.ROTATE -> motion(new Command.SetRotVel(d.intArgument("deg/s")));
+            case Commands.VEL -> effects.request(new Command.SetVel(d.intArgument("mm/s")));
+            case Commands.RVEL, Commands.ROTATE -> effects.request(new Command.SetRotVel(d.intArgument("deg/s")));
             case Commands.VEL2 -> {
                 int v = d.intArgument("wheels");
                 double div = factors.vel2Divisor();
-                motion(new Command.SetVel2((byte) (v >> 8) * div, (byte) v * div));
+                effects.request(new Command.SetVel2((byte) (v >> 8) * div, (byte) v * div));
             }
-            case Commands.MOVE -> motion(new Command.Move(d.intArgument("mm")));
-            case Commands.HEAD -> motion(new Command.SetHeading(frame.toEnvironmentHeading(d.intArgument("degrees"))));
-            case Commands.DHEAD -> motion(new Command.SetDeltaHeading(d.intArgument("degrees")));
+            case Commands.MOVE -> effects.request(new Command.Move(d.intArgument("mm")));
+            case Commands.HEAD -> effects.request(new Command.SetHeading(frame.toEnvironmentHeading(d.intArgument("degrees"))));
+            case Commands.DHEAD -> effects.request(new Command.SetDeltaHeading(d.intArgument("degrees")));
             case Commands.BUMPSTALL -> {
                 bumpStall = d.intArgument("argument");
                 once(id, "robot " + robot + ": BUMPSTALL " + bumpStall + " noted; a RoboSim robot stalls on any"
@@ -204,11 +204,6 @@ final class CommandHandler {
                     ? "command " + id + " (" + Commands.name(id) + ") is not simulated; ignored"
                     : "unknown command " + id + "; ignored") + " (said once)");
         }
-    }
-
-    /** The Environment ignores it while the motors are disabled, and says so once in the robot's state. */
-    private void motion(Command c) {
-        effects.request(c);
     }
 
     private void limit(int value, Command.DriveLimit accel, Command.DriveLimit decel) {

@@ -12,6 +12,9 @@ import robosim.protocol.Snapshot.RobotView;
  * (positive to the right, as ARIA's). The {@link WorldRenderer}'s helper.
  */
 final class CameraPainter {
+    /** The dashed edges' stroke. */
+    private static final BasicStroke EDGE =
+            new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f);
     /** How far the edges reach, mm. */
     static final double REACH_MM = 1500;
     /** Opacity of the edges, 0 to 255. */
@@ -31,7 +34,7 @@ final class CameraPainter {
             edges.moveTo(ox, oy);
             edges.lineTo(view.px(robot.x() + REACH_MM * Math.cos(a)), view.py(robot.y() + REACH_MM * Math.sin(a)));
         }
-        g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        g.setStroke(EDGE);
         g.setColor(new Color(colour.getRed(), colour.getGreen(), colour.getBlue(), ALPHA));
         g.draw(edges);
     }

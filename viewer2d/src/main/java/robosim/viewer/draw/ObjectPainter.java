@@ -16,6 +16,8 @@ import robosim.protocol.WorldDescription;
  * object's colour with a dark rim; one held off the floor by a gripper gets a second, white rim.
  */
 final class ObjectPainter {
+    /** The stroke of a lifted object's rim. */
+    private static final BasicStroke RIM_STROKE = new BasicStroke(1f);
     /** An object's colour when its world file names none, or names one not listed here. */
     static final Color DEFAULT = new Color(230, 120, 20);
     /** The smallest disc drawn, px across, so that a puck stays visible in a large world. */
@@ -51,7 +53,7 @@ final class ObjectPainter {
             g.setColor(colour(o.color()));
             g.fill(disc);
             g.setColor(RIM);
-            g.setStroke(new BasicStroke(1f));
+            g.setStroke(RIM_STROKE);
             g.draw(disc);
             if (known && now.get(i).lifted()) {
                 g.setColor(Color.WHITE);
