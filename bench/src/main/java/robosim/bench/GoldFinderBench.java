@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import robosim.comms.CommsSettings;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
@@ -52,12 +53,14 @@ public final class GoldFinderBench {
      * @param maxSteps  the step limit of a run
      * @param dir       where the mazes are written
      * @param robotFile the p3dx parameter file
+     * @param loss      the chance that a message is lost on its way to each recipient, 0 to 1
+     * @param latency   steps a message takes, at least 1
      * @return one result per team size
      * @throws IOException          if a maze cannot be written
      * @throws InterruptedException if interrupted
      */
-    public static List<Result> run(List<Integer> teams, int mazes, int size, long maxSteps, Path dir, Path robotFile)
-            throws IOException, InterruptedException {
+    public static List<Result> run(List<Integer> teams, int mazes, int size, long maxSteps, Path dir, Path robotFile,
+                                   double loss, int latency) throws IOException, InterruptedException {
         Files.createDirectories(dir);
         int most = teams.stream().mapToInt(Integer::intValue).max().orElse(1);
         Result[] out = new Result[teams.size()];
@@ -70,14 +73,18 @@ public final class GoldFinderBench {
                     most, robotFile.toAbsolutePath().toString()), StandardCharsets.UTF_8);
             World world = WorldReader.read(file);
             for (int t = 0; t < teams.size(); t++) {
-                out[t].steps()[seed - 1] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps);
+                out[t].steps()[seed - 1] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps, loss, latency);
             }
         }
         return List.of(out);
     }
 
-    private static long steps(World world, long seed, long maxSteps) throws IOException, InterruptedException {
-        try (EnvironmentServer server = new EnvironmentServer(new Simulation(world, seed),
+    private static long steps(World world, long seed, long maxSteps, double loss, int latency)
+            throws IOException, InterruptedException {
+        Simulation sim = new Simulation(world, seed);
+        CommsSettings c = sim.commsSettings();
+        sim.setCommsSettings(new CommsSettings(c.maxRange(), c.wallsBlock(), latency, loss, c.maxMessageBytes()));
+        try (EnvironmentServer server = new EnvironmentServer(sim,
                 ServerOptions.loopback().withMaxSteps(maxSteps))) {
             server.bind();
             List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), world.robots().size(), 1500, seed);

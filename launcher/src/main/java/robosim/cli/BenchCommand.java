@@ -89,8 +89,28 @@ final class BenchCommand implements Callable<Integer> {
             + " holds only the Environment and its memory figures are the Environment's alone)")
     boolean skipCore;
 
-    @Option(names = "--goldfinder", description = "instead: steps to find the gold with 1, 2, 4 and 8 robots over --mazes generated 10x10 mazes")
+    @Option(names = "--goldfinder", description = "instead: steps to find the gold with teams of --teams robots over --mazes generated mazes")
     boolean goldfinder;
+
+    @Option(names = "--teams", split = ",", defaultValue = "1,2,4,8", paramLabel = "N",
+            description = "team sizes for --goldfinder, compared with the first; default ${DEFAULT-VALUE}")
+    List<Integer> teams;
+
+    @Option(names = "--maze-size", defaultValue = "10", paramLabel = "CELLS",
+            description = "cells across and up of --goldfinder's mazes; default ${DEFAULT-VALUE}")
+    int mazeSize;
+
+    @Option(names = "--loss", defaultValue = "0", paramLabel = "P",
+            description = "for --goldfinder: the chance, 0 to 1, that a message is lost on its way; default ${DEFAULT-VALUE}")
+    double loss;
+
+    @Option(names = "--latency", defaultValue = "1", paramLabel = "STEPS",
+            description = "for --goldfinder: steps a message takes, at least 1; default ${DEFAULT-VALUE}")
+    int latency;
+
+    @Option(names = "--step-limit", defaultValue = "60000", paramLabel = "N",
+            description = "for --goldfinder: the step limit of each run; default ${DEFAULT-VALUE}")
+    long stepLimit;
 
     @Option(names = "--mazes", defaultValue = "20", paramLabel = "N", description = "mazes for --goldfinder; default ${DEFAULT-VALUE}")
     int mazes;
@@ -200,8 +220,21 @@ final class BenchCommand implements Callable<Integer> {
             return 0;
         }
         if (goldfinder) {
-            long limit = 60_000;
-            GoldFinderBench.print(o, GoldFinderBench.run(List.of(1, 2, 4, 8), mazes, 10, limit, out.resolve("mazes"), p3dx), limit);
+            try {
+                ServerOptions.requireAtLeast("--maze-size", mazeSize, 2);
+                ServerOptions.requireAtLeast("--latency", latency, 1);
+                ServerOptions.requireAtLeast("--step-limit", stepLimit, 1);
+                for (int t : teams) {
+                    ServerOptions.requireAtLeast("--teams", t, 1);
+                }
+                if (!(loss >= 0 && loss <= 1)) {
+                    throw new IllegalArgumentException(loss + " was supplied for --loss: it must be from 0 to 1");
+                }
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), e.getMessage());
+            }
+            GoldFinderBench.print(o, GoldFinderBench.run(teams, mazes, mazeSize, stepLimit, out.resolve("mazes"), p3dx,
+                    loss, latency), stepLimit);
             return 0;
         }
         if (!skipCodec) {

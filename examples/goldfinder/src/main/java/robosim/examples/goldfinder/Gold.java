@@ -1,6 +1,10 @@
 package robosim.examples.goldfinder;
 
-import java.util.HashSet;
+import static robosim.examples.goldfinder.MazeKnowledge.NONE;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
 import robosim.aria.ArHeatSensor;
@@ -13,12 +17,16 @@ import robosim.hw.RobotMessage;
  * A Pioneer that searches a grid maze for gold by its sensors alone, with its team.
  *
  * <p>It explores cell by cell: standing at a cell's centre it tells the open sides from its laser
- * and rear sonars ({@link WallSensing}), tells its team what it found and where it goes next
- * ({@link MazeMessage}), then drives to an unexplored open neighbour that no teammate holds or has
- * claimed, or, if there is none, one step along the shortest known path to the nearest cell with
- * an unexplored open side (a frontier). Teammates' claims spread the team out. A robot waits for a
- * cell a teammate holds; when two wait on each other, the one with the higher number backs away
- * into a free neighbour, so the one with the lower number goes first.
+ * and rear sonars ({@link WallSensing}), then drives one cell towards the frontier it has claimed
+ * ({@link TeamPlan}): the nearest cell nobody has sensed that no nearer teammate has claimed. Every
+ * few steps it tells its team ({@link MazeMessage}) where it is, where it drives, what it claimed
+ * and which walls it sensed, so the team divides the maze: each branch taken by one robot is
+ * removed from everyone's search. Claims that are not repeated lapse, so lost messages and a
+ * teammate that fails leave no branch unexplored.
+ *
+ * <p>A robot never drives into a cell a teammate stands in or drives into. It steps aside for a
+ * teammate that waits for its cell when it has nothing better to do, or when both wait for each
+ * other and it has the higher number; it steps off the teammate's way to its target.
  *
  * <p>A heat sensor with a 360° view guides it: when the gold's heat is sensed through an open side,
  * that side is taken first. The robot has found the gold when its heat sensor places the gold
@@ -28,7 +36,12 @@ import robosim.hw.RobotMessage;
 public class Gold extends ArRobot {
     /** The gold is found when the heat sensor places it this near, mm. */
     public static final double FOUND_DISTANCE = 1000;
-    private static final int PATIENCE = 25;
+    /** Steps between the reports a robot repeats while nothing changes. */
+    static final int HEARTBEAT = 10;
+    /** How many of its sensed cells a report carries: the newest half, and old ones in turn. */
+    private static final int CELLS_PER_REPORT = 16;
+    /** Steps a robot waits for a cell before it tries another way out. */
+    private static final int PATIENCE = 60;
 
     private enum Phase { DECIDE, ANNOUNCE, TURN, MOVE, BACK, DONE }
 
@@ -38,12 +51,19 @@ public class Gold extends ArRobot {
     private final MazeKnowledge map = new MazeKnowledge();
     private final ArSick laser = new ArSick();
     private final ArHeatSensor heat;
+    /** The cells this robot sensed itself, in order: what its reports repeat. */
+    private final List<int[]> ownCells = new ArrayList<>();
+    private int repeatFrom;
+    private int reported;
     private Phase phase = Phase.DECIDE;
     private int cx;
     private int cy;
     private int dir = -1;
+    private TeamPlan.Plan plan = TeamPlan.Plan.NONE;
+    private long want = -1;
     private int waited;
     private int pause;
+    private long lastTold = Long.MIN_VALUE / 2;
     private double startX;
     private double startY;
     private String finder;
@@ -64,9 +84,16 @@ public class Gold extends ArRobot {
         addRangeDevice(laser);
     }
 
-    private static int rankOf(String name) {
+    /**
+     * @param name a robot's name
+     * @return its number: the digits in its name, or a number made from the name if it has none
+     */
+    static int rankOf(String name) {
         String digits = name.replaceAll("\\D", "");
-        return digits.isEmpty() ? Math.abs(name.hashCode() % 1000) : Integer.parseInt(digits);
+        if (digits.isEmpty() || digits.length() > 9) {
+            return Math.abs(name.hashCode() % 1000);
+        }
+        return Integer.parseInt(digits);
     }
 
     /**
@@ -125,7 +152,7 @@ public class Gold extends ArRobot {
             long foundStep = getStep();
             stop();
             reportFound("gold");
-            tell(-1, -1, true);
+            tell(NONE, NONE, true);
             say("found the gold at step " + foundStep);
             phase = Phase.DONE;
             return;
@@ -138,34 +165,78 @@ public class Gold extends ArRobot {
             case BACK -> back();
             default -> { }
         }
+        if (getStep() - lastTold >= HEARTBEAT) {
+            tellWhereIAm();
+        }
     }
 
     private void listen() {
         RobotMessage m;
         while ((m = poll()) != null) {
-            if (m.holds(MazeMessage.class)) {
-                MazeMessage mm = m.as(MazeMessage.class);
-                if (mm.sensed()) {
-                    map.sensed(mm.x(), mm.y(), mm.open());
+            if (!m.holds(MazeMessage.class)) {
+                continue;
+            }
+            MazeMessage mm;
+            try {
+                mm = m.as(MazeMessage.class);
+            } catch (RuntimeException e) {
+                continue; // a malformed report is ignored: the sender repeats its cells
+            }
+            int[] c = mm.cells();
+            for (int i = 0; i < c.length; i += 3) {
+                if (!map.isSensed(c[i], c[i + 1])) {
+                    map.sensed(c[i], c[i + 1], c[i + 2]);
                 }
-                map.mate(mm.robot(), new MazeKnowledge.Mate(mm.x(), mm.y(), mm.nextX(), mm.nextY()));
-                if (mm.gold() && finder == null) {
-                    finder = mm.robot();
-                }
+            }
+            if (!mm.robot().equals(getName())) {
+                map.mate(mm.robot(), new MazeKnowledge.Mate(mm.x(), mm.y(), mm.nextX(), mm.nextY(),
+                        mm.claim() ? mm.targetX() : NONE, mm.claim() ? mm.targetY() : NONE, getStep()));
+                wants.put(mm.robot(), mm.wantX() == NONE ? -1 : MazeKnowledge.key(mm.wantX(), mm.wantY()));
+                targets.put(mm.robot(), mm.targetX() == NONE ? -1 : MazeKnowledge.key(mm.targetX(), mm.targetY()));
+            }
+            if (mm.gold() && finder == null) {
+                finder = mm.robot();
             }
         }
     }
 
-    private void tell(int nextX, int nextY, boolean gold) {
-        broadcast(new MazeMessage(getName(), cx, cy, map.isSensed(cx, cy), openMask(cx, cy), nextX, nextY, gold));
+    /** The cell each teammate waits to enter, and the frontier each heads for (-1: none). */
+    private final Map<String, Long> wants = new java.util.TreeMap<>();
+    private final Map<String, Long> targets = new java.util.TreeMap<>();
+
+    private void tellWhereIAm() {
+        boolean moving = phase == Phase.ANNOUNCE || phase == Phase.TURN || phase == Phase.MOVE;
+        if (moving && dir >= 0) {
+            tell(cx + Maze.DIRECTIONS[dir][0], cy + Maze.DIRECTIONS[dir][1], false);
+        } else {
+            tell(NONE, NONE, false);
+        }
     }
 
-    private int openMask(int x, int y) {
-        int mask = 0;
-        for (int d = 0; d < 4; d++) {
-            mask |= map.open(x, y, d) ? 1 << d : 0;
+    private void tell(int nextX, int nextY, boolean gold) {
+        int newest = Math.min(ownCells.size() - reported, CELLS_PER_REPORT / 2);
+        List<int[]> send = new ArrayList<>(ownCells.subList(ownCells.size() - Math.max(newest, 0), ownCells.size()));
+        reported = ownCells.size();
+        int older = ownCells.size() - send.size();
+        for (int i = 0; i < CELLS_PER_REPORT - send.size() && older > 0 && i < older; i++) {
+            send.add(ownCells.get(repeatFrom % older));
+            repeatFrom++;
         }
-        return mask;
+        int[] cells = new int[send.size() * 3];
+        for (int i = 0; i < send.size(); i++) {
+            System.arraycopy(send.get(i), 0, cells, 3 * i, 3);
+        }
+        long t = plan.target();
+        broadcast(new MazeMessage(getName(), cx, cy, nextX, nextY, t < 0 ? NONE : plan.x(), t < 0 ? NONE : plan.y(),
+                plan.claim(), want < 0 ? NONE : MazeKnowledge.keyX(want), want < 0 ? NONE : MazeKnowledge.keyY(want),
+                cells, gold));
+        lastTold = getStep();
+    }
+
+    private void senseHere() {
+        int open = WallSensing.openSides(this, laser, cellSize);
+        map.sensed(cx, cy, open);
+        ownCells.add(new int[] {cx, cy, open});
     }
 
     private void decide() {
@@ -174,49 +245,63 @@ public class Gold extends ArRobot {
             return;
         }
         if (!map.isSensed(cx, cy)) {
-            map.sensed(cx, cy, WallSensing.openSides(this, laser, cellSize));
+            senseHere();
         }
-        int d = choose();
+        int[] order = order();
+        plan = TeamPlan.plan(map, rank, cx, cy, order, getStep());
+        int d = heatDirection();
+        if (d < 0 && plan.target() >= 0) {
+            d = TeamPlan.firstStep(map, cx, cy, plan.target(), order);
+            if (d >= 0 && !plan.claim()
+                    && MazeKnowledge.key(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1]) == plan.target()) {
+                d = -1; // following: the frontier itself is the claimant's to enter
+            }
+        }
+        String waiting = waitedForBy();
+        if (waiting != null && (d < 0 || !plan.claim() || mutual(waiting, d) || waited > PATIENCE / 2)) {
+            if (stepAside(waiting)) {
+                return;
+            }
+        }
         if (d < 0) {
-            tell(-1, -1, false);
-            pause = 10;
+            idle();
             return;
         }
         int nx = cx + Maze.DIRECTIONS[d][0];
         int ny = cy + Maze.DIRECTIONS[d][1];
-        if (blockedBy(nx, ny) != null) {
-            waitOrBackAway(d);
+        if (map.holder(nx, ny) != null) {
+            waitFor(nx, ny, d);
             return;
         }
-        dir = d;
+        go(d);
+    }
+
+    private void idle() {
+        want = -1;
         waited = 0;
-        tell(nx, ny, false);
+        tell(NONE, NONE, false);
+        pause = 5;
+    }
+
+    private void go(int d) {
+        dir = d;
+        want = -1;
+        waited = 0;
+        tell(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1], false);
         phase = Phase.ANNOUNCE;
     }
 
-    /** The direction to take: the gold's heat first, then an unexplored neighbour, then a frontier. */
-    private int choose() {
-        int[] order = order();
-        if (heat.senses()) {
-            int d = Math.floorMod((int) Math.round((getTh() + heat.getBearing()) / 90), 4);
-            if (map.open(cx, cy, d)) {
-                return d;
-            }
+    /**
+     * The side towards the gold's heat, if the heat is sensed through an open side onto a cell
+     * nobody has sensed; else -1. (Heat passes through walls: a known cell towards it may lead
+     * nowhere near the gold.)
+     */
+    private int heatDirection() {
+        if (!heat.senses()) {
+            return -1;
         }
-        for (int d : order) {
-            int nx = cx + Maze.DIRECTIONS[d][0];
-            int ny = cy + Maze.DIRECTIONS[d][1];
-            if (map.open(cx, cy, d) && !map.isSensed(nx, ny) && !map.claimedByMate(nx, ny)) {
-                return d;
-            }
-        }
-        Set<Long> avoid = new HashSet<>();
-        for (String mate : map.mates()) {
-            MazeKnowledge.Mate m = map.mate(mate);
-            avoid.add(MazeKnowledge.key(m.x(), m.y()));
-        }
-        int d = map.towardsFrontier(cx, cy, order, avoid);
-        return d >= 0 ? d : map.towardsFrontier(cx, cy, order, Set.of());
+        int d = Math.floorMod((int) Math.round((getTh() + heat.getBearing()) / 90), 4);
+        return map.open(cx, cy, d) && !map.isSensed(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1]) ? d : -1;
     }
 
     /** The four directions, starting at a seeded one, so teammates fan out differently. */
@@ -225,54 +310,108 @@ public class Gold extends ArRobot {
         return new int[] {first, (first + 1) % 4, (first + 2) % 4, (first + 3) % 4};
     }
 
-    /** The teammate that stands in the cell, or that claimed it and goes before this robot. */
-    private String blockedBy(int x, int y) {
-        String occupant = map.occupant(x, y);
-        if (occupant != null) {
-            return occupant;
-        }
-        for (String mate : map.mates()) {
-            MazeKnowledge.Mate m = map.mate(mate);
-            if (m.nextX() == x && m.nextY() == y && rankOf(mate) < rank) {
-                return mate;
+    /** A teammate that waits to enter this robot's cell, or null. */
+    private String waitedForBy() {
+        long here = MazeKnowledge.key(cx, cy);
+        for (Map.Entry<String, Long> e : wants.entrySet()) {
+            MazeKnowledge.Mate m = map.mate(e.getKey());
+            if (e.getValue() == here && m != null && getStep() - m.heard() <= 3 * HEARTBEAT) {
+                return e.getKey();
             }
         }
         return null;
     }
 
-    private void waitOrBackAway(int wanted) {
-        waited++;
-        if (waited < PATIENCE * (1 + rank % 3)) {
-            return;
+    /** Whether this robot wants the waiting teammate's cell and gives way to it by number. */
+    private boolean mutual(String mate, int d) {
+        MazeKnowledge.Mate m = map.mate(mate);
+        return m != null && m.x() == cx + Maze.DIRECTIONS[d][0] && m.y() == cy + Maze.DIRECTIONS[d][1]
+                && rankOf(mate) < rank;
+    }
+
+    private void waitFor(int nx, int ny, int d) {
+        long k = MazeKnowledge.key(nx, ny);
+        if (want != k) {
+            want = k;
+            waited = 0;
+            tell(NONE, NONE, false);
         }
-        // stuck: step into a free neighbour other than the one wanted, if there is one
-        int[] order = order();
-        for (int d : order) {
-            int nx = cx + Maze.DIRECTIONS[d][0];
-            int ny = cy + Maze.DIRECTIONS[d][1];
-            if (d != wanted && map.open(cx, cy, d) && map.isSensed(cx, cy) && blockedBy(nx, ny) == null
-                    && !map.claimedByMate(nx, ny)) {
-                dir = d;
-                waited = 0;
-                tell(nx, ny, false);
-                phase = Phase.ANNOUNCE;
-                return;
+        waited++;
+        if (waited >= PATIENCE * (1 + rank % 3)) {
+            // stuck: any free open side other than the one wanted, then think again
+            for (int s : order()) {
+                int sx = cx + Maze.DIRECTIONS[s][0];
+                int sy = cy + Maze.DIRECTIONS[s][1];
+                if (s != d && map.open(cx, cy, s) && map.isSensed(sx, sy) && map.holder(sx, sy) == null) {
+                    go(s);
+                    return;
+                }
+            }
+            waited = 0;
+        }
+    }
+
+    /**
+     * Drives off a teammate's way: to the nearest cell that is neither on the teammate's path to
+     * its target nor held by anyone, one cell at a time.
+     *
+     * @return whether a way aside was found and taken
+     */
+    private boolean stepAside(String mate) {
+        MazeKnowledge.Mate m = map.mate(mate);
+        if (m == null) {
+            return false;
+        }
+        Set<Long> onItsWay = new java.util.HashSet<>();
+        onItsWay.add(MazeKnowledge.key(cx, cy));
+        long target = targets.getOrDefault(mate, -1L);
+        if (target >= 0) {
+            onItsWay.addAll(map.path(m.x(), m.y(), MazeKnowledge.keyX(target), MazeKnowledge.keyY(target),
+                    new int[] {0, 1, 2, 3}, Set.of()));
+        }
+        Set<Long> held = map.held();
+        Map<Long, MazeKnowledge.Reach> reach = map.reach(cx, cy, order(), held);
+        long best = -1;
+        int bestCells = Integer.MAX_VALUE;
+        for (Map.Entry<Long, MazeKnowledge.Reach> e : reach.entrySet()) {
+            long k = e.getKey();
+            if (onItsWay.contains(k) || !map.sensedCells().contains(k) || e.getValue().cells() == 0) {
+                continue;
+            }
+            if (e.getValue().cells() < bestCells || (e.getValue().cells() == bestCells && k < best)) {
+                best = k;
+                bestCells = e.getValue().cells();
             }
         }
-        waited = 0;
+        if (best < 0) {
+            return false;
+        }
+        go(reach.get(best).first());
+        return true;
     }
 
     private void announce() {
         int nx = cx + Maze.DIRECTIONS[dir][0];
         int ny = cy + Maze.DIRECTIONS[dir][1];
-        if (blockedBy(nx, ny) != null) {
+        if (contested(nx, ny)) {
             phase = Phase.DECIDE;
             pause = 1;
-            tell(-1, -1, false);
+            tell(NONE, NONE, false);
             return;
         }
         setHeading(dir * 90);
         phase = Phase.TURN;
+    }
+
+    /** Whether a teammate stands in the cell, or drives into it and goes before this robot. */
+    private boolean contested(int x, int y) {
+        for (String name : map.mates()) {
+            MazeKnowledge.Mate m = map.mate(name);
+            if ((m.x() == x && m.y() == y) || (m.nextX() == x && m.nextY() == y && rankOf(name) < rank)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private void turn() {
@@ -297,8 +436,10 @@ public class Gold extends ArRobot {
             cx += Maze.DIRECTIONS[dir][0];
             cy += Maze.DIRECTIONS[dir][1];
             phase = Phase.DECIDE;
-            map.sensed(cx, cy, WallSensing.openSides(this, laser, cellSize));
-            tell(-1, -1, false);
+            if (!map.isSensed(cx, cy)) {
+                senseHere();
+            }
+            tell(NONE, NONE, false);
         }
     }
 
@@ -306,7 +447,7 @@ public class Gold extends ArRobot {
         if (isMoveDone(1) && isStopped()) {
             phase = Phase.DECIDE;
             pause = 5 + random.nextInt(10);
-            tell(-1, -1, false);
+            tell(NONE, NONE, false);
         }
     }
 }

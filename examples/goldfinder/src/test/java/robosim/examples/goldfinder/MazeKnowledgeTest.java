@@ -81,101 +81,66 @@ class MazeKnowledgeTest {
         assertTrue(map.open(-1, 0, NORTH));
     }
 
+    @Test
+    void aSideIsOpenWhenEitherCellItPartsSaysSo() {
+        map.sensed(0, 0, 0);
+        map.sensed(1, 0, W);
+        assertTrue(map.open(0, 0, EAST), "(1, 0) saw the side open: a teammate passing made it look closed from (0, 0)");
+        assertTrue(map.open(1, 0, WEST));
+        assertFalse(map.open(0, 0, NORTH));
+    }
+
     // ---- teammates ----
 
     @Test
-    void aMateClaimsTheCellItStandsInAndTheOneItHeadsFor() {
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1));
-        assertTrue(map.claimedByMate(1, 1));
-        assertTrue(map.claimedByMate(2, 1));
-        assertFalse(map.claimedByMate(3, 1));
-        assertFalse(map.claimedByMate(1, 2));
+    void aMateHoldsTheCellItStandsInAndTheOneItDrivesInto() {
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1, 5, 5, 0));
+        assertEquals("r2", map.holder(1, 1));
+        assertEquals("r2", map.holder(2, 1));
+        assertNull(map.holder(5, 5), "a claimed frontier is not held");
+        assertEquals(Set.of(MazeKnowledge.key(1, 1), MazeKnowledge.key(2, 1)), map.held());
     }
 
     @Test
-    void aMateWithNoTargetClaimsOnlyItsOwnCell() {
-        // Gold reports "no target" as (-1, -1)
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, -1, -1));
-        assertTrue(map.claimedByMate(1, 1));
-        assertFalse(map.claimedByMate(2, 1));
-        assertFalse(map.claimedByMate(0, 0));
-    }
-
-    @Test
-    void aMatesNewReportReplacesItsOldPlaceAndTarget() {
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1));
-        map.mate("r2", new MazeKnowledge.Mate(2, 1, 2, 2));
-        assertFalse(map.claimedByMate(1, 1), "r2 has left (1, 1)");
-        assertTrue(map.claimedByMate(2, 1));
-        assertTrue(map.claimedByMate(2, 2));
-        assertEquals(new MazeKnowledge.Mate(2, 1, 2, 2), map.mate("r2"));
-    }
-
-    @Test
-    void theOccupantIsTheMateStandingInTheCellNotOneHeadingThere() {
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1));
-        map.mate("r3", new MazeKnowledge.Mate(2, 1, -1, -1));
-        assertEquals("r3", map.occupant(2, 1));
-        assertEquals("r2", map.occupant(1, 1));
-        map.mate("r3", new MazeKnowledge.Mate(3, 1, -1, -1));
-        assertNull(map.occupant(2, 1), "r2 only heads for (2, 1)");
+    void aMatesNewReportReplacesItsOldOne() {
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1, MazeKnowledge.NONE, MazeKnowledge.NONE, 3));
+        map.mate("r2", new MazeKnowledge.Mate(2, 1, 7));
+        assertNull(map.holder(1, 1), "r2 has left (1, 1)");
+        assertEquals("r2", map.holder(2, 1));
+        assertEquals(new MazeKnowledge.Mate(2, 1, 7), map.mate("r2"));
+        assertFalse(map.mate("r2").moving());
+        assertFalse(map.mate("r2").claims());
     }
 
     @Test
     void matesAreListedByNameAndLookedUpByName() {
-        map.mate("r3", new MazeKnowledge.Mate(0, 0, -1, -1));
-        map.mate("r1", new MazeKnowledge.Mate(1, 0, -1, -1));
-        map.mate("r2", new MazeKnowledge.Mate(2, 0, -1, -1));
-        map.mate("r1", new MazeKnowledge.Mate(1, 1, -1, -1));
+        map.mate("r3", new MazeKnowledge.Mate(0, 0, 0));
+        map.mate("r1", new MazeKnowledge.Mate(1, 0, 0));
+        map.mate("r2", new MazeKnowledge.Mate(2, 0, 0));
         assertEquals(List.of("r1", "r2", "r3"), map.mates());
-        assertEquals(new MazeKnowledge.Mate(1, 1, -1, -1), map.mate("r1"));
         assertNull(map.mate("r9"));
-    }
-
-    @Test
-    void noMateHeardFromMeansNoClaimAndNoOccupant() {
-        assertEquals(List.of(), map.mates());
-        assertFalse(map.claimedByMate(0, 0));
-        assertNull(map.occupant(0, 0));
+        assertNull(map.holder(5, 5));
     }
 
     // ---- frontiers ----
 
     @Test
-    void aSensedCellWithAnOpenSideTowardsAnUnsensedCellHasAFrontier() {
+    void anUnsensedCellBehindAnOpenSideIsAFrontier() {
         map.sensed(0, 0, E);
-        assertTrue(map.hasFrontier(0, 0));
+        assertTrue(map.isFrontier(1, 0));
+        assertEquals(List.of(MazeKnowledge.key(1, 0)), map.frontiers());
     }
 
     @Test
-    void aCellWhoseOpenNeighboursAreAllSensedHasNoFrontier() {
+    void aSensedCellOrOneBehindAWallIsNoFrontier() {
         map.sensed(0, 0, E);
         map.sensed(1, 0, W);
-        assertFalse(map.hasFrontier(0, 0));
-        assertFalse(map.hasFrontier(1, 0));
+        assertFalse(map.isFrontier(1, 0));
+        assertFalse(map.isFrontier(0, 1), "(0, 0) is closed to the north");
+        assertEquals(List.of(), map.frontiers());
     }
 
-    @Test
-    void aClosedSideTowardsAnUnsensedCellIsNoFrontier() {
-        map.sensed(0, 0, 0);
-        assertFalse(map.hasFrontier(0, 0));
-    }
-
-    @Test
-    void anOpenSideTowardsACellAMateClaimedIsNoFrontier() {
-        map.sensed(0, 0, E);
-        map.mate("r2", new MazeKnowledge.Mate(0, 1, 1, 0));
-        assertFalse(map.hasFrontier(0, 0), "r2 is heading for (1, 0)");
-        map.mate("r2", new MazeKnowledge.Mate(0, 1, -1, -1));
-        assertTrue(map.hasFrontier(0, 0), "r2 has given (1, 0) up");
-    }
-
-    @Test
-    void anUnsensedCellHasNoFrontier() {
-        assertFalse(map.hasFrontier(5, 5));
-    }
-
-    // ---- the way to the nearest frontier ----
+    // ---- paths ----
 
     /**
      * A corridor east from (0, 0) to (2, 0), whose north side opens onto unsensed (2, 1); and a
@@ -189,22 +154,16 @@ class MazeKnowledgeTest {
     }
 
     @Test
-    void theFirstStepLeadsAlongTheShortestKnownPathToTheNearestFrontier() {
+    void pathsLeadThroughSensedCellsAndEndInAFrontier() {
         twoFrontiersOneNearer();
-        assertEquals(NORTH, map.towardsFrontier(0, 0, EAST_FIRST, Set.of()),
-                "(0, 1) is one cell away, (2, 0) two, whichever way is tried first");
-    }
-
-    @Test
-    void aFrontierFurtherAlongACorridorIsReachedThroughIt() {
-        map.sensed(0, 0, E);
-        map.sensed(1, 0, W | E);
-        map.sensed(2, 0, W | E);
-        map.sensed(3, 0, W | N);
-        assertEquals(EAST, map.towardsFrontier(0, 0, NORTH_FIRST, Set.of()));
-        assertEquals(EAST, map.towardsFrontier(2, 0, NORTH_FIRST, Set.of()));
-        assertEquals(-1, map.towardsFrontier(3, 0, NORTH_FIRST, Set.of()),
-                "the start's own frontier is no step away");
+        var reach = map.reach(0, 0, EAST_FIRST, Set.of());
+        assertEquals(2, reach.get(MazeKnowledge.key(0, 2)).cells());
+        assertEquals(NORTH, reach.get(MazeKnowledge.key(0, 2)).first());
+        assertEquals(3, reach.get(MazeKnowledge.key(2, 1)).cells());
+        assertEquals(EAST, reach.get(MazeKnowledge.key(2, 1)).first());
+        assertNull(reach.get(MazeKnowledge.key(0, 3)), "nothing is known beyond a frontier");
+        assertEquals(List.of(MazeKnowledge.key(1, 0), MazeKnowledge.key(2, 0), MazeKnowledge.key(2, 1)),
+                map.path(0, 0, 2, 1, EAST_FIRST, Set.of()));
     }
 
     /** A ring of four sensed cells; (1, 1) opens east onto unsensed (2, 1), two cells from (0, 0) either way. */
@@ -216,46 +175,19 @@ class MazeKnowledgeTest {
     }
 
     @Test
-    void betweenPathsOfEqualLengthTheOrderDecides() {
+    void betweenPathsOfEqualLengthTheOrderDecidesAndBlockedCellsAreGoneAround() {
         ringWithAFrontierAtTheFarCorner();
-        assertEquals(EAST, map.towardsFrontier(0, 0, EAST_FIRST, Set.of()));
-        assertEquals(NORTH, map.towardsFrontier(0, 0, NORTH_FIRST, Set.of()));
+        long corner = MazeKnowledge.key(1, 1);
+        assertEquals(EAST, map.reach(0, 0, EAST_FIRST, Set.of()).get(corner).first());
+        assertEquals(NORTH, map.reach(0, 0, NORTH_FIRST, Set.of()).get(corner).first());
+        assertEquals(NORTH, map.reach(0, 0, EAST_FIRST, Set.of(MazeKnowledge.key(1, 0))).get(corner).first());
+        assertNull(map.reach(0, 0, EAST_FIRST, Set.of(MazeKnowledge.key(1, 0), MazeKnowledge.key(0, 1))).get(corner));
     }
 
     @Test
-    void aPathThroughAnAvoidedCellIsNotTaken() {
-        ringWithAFrontierAtTheFarCorner();
-        assertEquals(NORTH, map.towardsFrontier(0, 0, EAST_FIRST, Set.of(MazeKnowledge.key(1, 0))));
-        assertEquals(-1, map.towardsFrontier(0, 0, EAST_FIRST,
-                Set.of(MazeKnowledge.key(1, 0), MazeKnowledge.key(0, 1))));
-    }
-
-    @Test
-    void anAvoidedFrontierCellIsNotATarget() {
-        ringWithAFrontierAtTheFarCorner();
-        assertEquals(-1, map.towardsFrontier(0, 0, EAST_FIRST, Set.of(MazeKnowledge.key(1, 1))));
-    }
-
-    @Test
-    void pathsLeadOnlyThroughSensedCells() {
-        // (2, 0) has a frontier, but the way there crosses (1, 0), which nobody has sensed
+    void pathsDoNotCrossUnsensedCells() {
         map.sensed(0, 0, E);
         map.sensed(2, 0, W | E);
-        assertEquals(-1, map.towardsFrontier(0, 0, EAST_FIRST, Set.of()));
-    }
-
-    @Test
-    void aFrontierAMateClaimedIsNoTarget() {
-        twoFrontiersOneNearer();
-        map.mate("r2", new MazeKnowledge.Mate(0, 1, 0, 2));
-        assertEquals(EAST, map.towardsFrontier(0, 0, NORTH_FIRST, Set.of()),
-                "r2 heads for (0, 2), so the frontier left is east, at (2, 0)");
-    }
-
-    @Test
-    void withEverythingExploredThereIsNoWayToAFrontier() {
-        map.sensed(0, 0, E);
-        map.sensed(1, 0, W);
-        assertEquals(-1, map.towardsFrontier(0, 0, EAST_FIRST, Set.of()));
+        assertEquals(List.of(), map.path(0, 0, 3, 0, EAST_FIRST, Set.of()));
     }
 }
