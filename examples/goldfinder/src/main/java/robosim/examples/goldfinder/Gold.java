@@ -42,6 +42,8 @@ public class Gold extends ArRobot {
     private static final int CELLS_PER_REPORT = 16;
     /** Steps a robot waits for a cell before it tries another way out. */
     private static final int PATIENCE = 60;
+    /** The most cells a robot drives in one move. */
+    static final int LONGEST_RUN = 8;
 
     private enum Phase { DECIDE, ANNOUNCE, TURN, MOVE, BACK, DONE }
 
@@ -59,6 +61,8 @@ public class Gold extends ArRobot {
     private int cx;
     private int cy;
     private int dir = -1;
+    /** Cells the current move crosses, in direction {@link #dir}. */
+    private int runCells = 1;
     private TeamPlan.Plan plan = TeamPlan.Plan.NONE;
     private long want = -1;
     private int waited;
@@ -207,7 +211,7 @@ public class Gold extends ArRobot {
     private void tellWhereIAm() {
         boolean moving = phase == Phase.ANNOUNCE || phase == Phase.TURN || phase == Phase.MOVE;
         if (moving && dir >= 0) {
-            tell(cx + Maze.DIRECTIONS[dir][0], cy + Maze.DIRECTIONS[dir][1], false);
+            tell(cx + runCells * Maze.DIRECTIONS[dir][0], cy + runCells * Maze.DIRECTIONS[dir][1], false);
         } else {
             tell(NONE, NONE, false);
         }
@@ -273,7 +277,34 @@ public class Gold extends ArRobot {
             waitFor(nx, ny, d);
             return;
         }
-        go(d);
+        go(d, run(d, plan.target(), order));
+    }
+
+    /**
+     * How many cells to drive straight in one move, without stopping: on along the way to the
+     * target while it keeps direction {@code d} through cells already sensed that no teammate
+     * holds, up to {@value #LONGEST_RUN}; a cell nobody has sensed ends the run (it must be sensed
+     * from its centre).
+     */
+    private int run(int d, long target, int[] order) {
+        if (target < 0 || heatDirection() >= 0) {
+            return 1;
+        }
+        List<Long> path = map.path(cx, cy, MazeKnowledge.keyX(target), MazeKnowledge.keyY(target), order, map.held());
+        int cells = 1;
+        while (cells < path.size() && cells < LONGEST_RUN) {
+            long here = path.get(cells - 1);
+            long next = path.get(cells);
+            if (!map.isSensed(MazeKnowledge.keyX(here), MazeKnowledge.keyY(here))
+                    || MazeKnowledge.keyX(next) - MazeKnowledge.keyX(here) != Maze.DIRECTIONS[d][0]
+                    || MazeKnowledge.keyY(next) - MazeKnowledge.keyY(here) != Maze.DIRECTIONS[d][1]
+                    || (!plan.claim() && next == target)) {
+                break;
+            }
+            cells++;
+        }
+        return path.isEmpty() || path.get(0) != MazeKnowledge.key(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1])
+                ? 1 : cells;
     }
 
     private void idle() {
@@ -283,11 +314,12 @@ public class Gold extends ArRobot {
         pause = 5;
     }
 
-    private void go(int d) {
+    private void go(int d, int cells) {
         dir = d;
+        runCells = cells;
         want = -1;
         waited = 0;
-        tell(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1], false);
+        tell(cx + cells * Maze.DIRECTIONS[d][0], cy + cells * Maze.DIRECTIONS[d][1], false);
         phase = Phase.ANNOUNCE;
     }
 
@@ -343,7 +375,7 @@ public class Gold extends ArRobot {
                 int sx = cx + Maze.DIRECTIONS[s][0];
                 int sy = cy + Maze.DIRECTIONS[s][1];
                 if (s != d && map.open(cx, cy, s) && map.isSensed(sx, sy) && map.holder(sx, sy) == null) {
-                    go(s);
+                    go(s, 1);
                     return;
                 }
             }
@@ -386,14 +418,16 @@ public class Gold extends ArRobot {
         if (best < 0) {
             return false;
         }
-        go(reach.get(best).first());
+        go(reach.get(best).first(), 1);
         return true;
     }
 
     private void announce() {
-        int nx = cx + Maze.DIRECTIONS[dir][0];
-        int ny = cy + Maze.DIRECTIONS[dir][1];
-        if (contested(nx, ny)) {
+        boolean contested = false;
+        for (int k = 1; k <= runCells; k++) {
+            contested |= contested(cx + k * Maze.DIRECTIONS[dir][0], cy + k * Maze.DIRECTIONS[dir][1]);
+        }
+        if (contested) {
             phase = Phase.DECIDE;
             pause = 1;
             tell(NONE, NONE, false);
@@ -418,7 +452,7 @@ public class Gold extends ArRobot {
         if (isHeadingDone(0.5) && Math.abs(getRotVel()) < 1) {
             startX = getX();
             startY = getY();
-            move(cellSize);
+            move(runCells * cellSize);
             phase = Phase.MOVE;
         }
     }
@@ -433,8 +467,8 @@ public class Gold extends ArRobot {
             return;
         }
         if (isMoveDone(1) && isStopped()) {
-            cx += Maze.DIRECTIONS[dir][0];
-            cy += Maze.DIRECTIONS[dir][1];
+            cx += runCells * Maze.DIRECTIONS[dir][0];
+            cy += runCells * Maze.DIRECTIONS[dir][1];
             phase = Phase.DECIDE;
             if (!map.isSensed(cx, cy)) {
                 senseHere();

@@ -46,9 +46,24 @@ final class MazeKnowledge {
             return claimX != NONE;
         }
 
-        /** Whether it stands in, or drives into, the cell. */
+        /**
+         * Whether it stands in the cell or drives into or through it: a robot drives straight,
+         * so the cells between its cell and the one it drives to are on its way.
+         */
         boolean holds(int cx, int cy) {
-            return (x == cx && y == cy) || (nextX == cx && nextY == cy);
+            if (x == cx && y == cy) {
+                return true;
+            }
+            if (!moving()) {
+                return false;
+            }
+            if (x == nextX && cx == x) {
+                return cy >= Math.min(y, nextY) && cy <= Math.max(y, nextY);
+            }
+            if (y == nextY && cy == y) {
+                return cx >= Math.min(x, nextX) && cx <= Math.max(x, nextX);
+            }
+            return nextX == cx && nextY == cy;
         }
     }
 
@@ -244,6 +259,12 @@ final class MazeKnowledge {
         for (Mate m : mates.values()) {
             out.add(key(m.x(), m.y()));
             if (m.moving()) {
+                int dx = Integer.signum(m.nextX() - m.x());
+                int dy = Integer.signum(m.nextY() - m.y());
+                int cells = Math.abs(m.nextX() - m.x()) + Math.abs(m.nextY() - m.y());
+                for (int k = 1; k <= cells && (dx == 0 || dy == 0); k++) {
+                    out.add(key(m.x() + k * dx, m.y() + k * dy));
+                }
                 out.add(key(m.nextX(), m.nextY()));
             }
         }
