@@ -63,6 +63,8 @@ public class Gold extends ArRobot {
     private int dir = -1;
     /** Cells the current move crosses, in direction {@link #dir}. */
     private int runCells = 1;
+    /** Whether the robot read the cells ahead since it last turned. */
+    private boolean lookedAhead;
     private TeamPlan.Plan plan = TeamPlan.Plan.NONE;
     private long want = -1;
     private int waited;
@@ -243,6 +245,28 @@ public class Gold extends ArRobot {
         ownCells.add(new int[] {cx, cy, open});
     }
 
+    /**
+     * Reads the cells straight ahead with the laser ({@link WallSensing#cellsAhead}), so that a
+     * corridor is driven through in one move instead of a stop in every cell.
+     *
+     * @return how many cells it sensed that nobody had
+     */
+    private int lookAhead() {
+        int d = Math.floorMod((int) Math.round(getTh() / 90), 4);
+        int[] ahead = WallSensing.cellsAhead(this, laser, cellSize);
+        int added = 0;
+        for (int j = 0; j < ahead.length; j++) {
+            int x = cx + (j + 1) * Maze.DIRECTIONS[d][0];
+            int y = cy + (j + 1) * Maze.DIRECTIONS[d][1];
+            if (!map.isSensed(x, y)) {
+                map.sensed(x, y, ahead[j]);
+                ownCells.add(new int[] {x, y, ahead[j]});
+                added++;
+            }
+        }
+        return added;
+    }
+
     private void decide() {
         if (pause > 0) {
             pause--;
@@ -251,9 +275,15 @@ public class Gold extends ArRobot {
         if (!map.isSensed(cx, cy)) {
             senseHere();
         }
+        lookAhead();
         int[] order = order();
         plan = TeamPlan.plan(map, rank, cx, cy, order, getStep());
-        int d = heatDirection();
+        long goldCell = goldCell();
+        if (goldCell >= 0 && goldCell != MazeKnowledge.key(cx, cy)
+                && map.reach(cx, cy, order, Set.of()).containsKey(goldCell)) {
+            plan = new TeamPlan.Plan(goldCell, true); // the heat places the gold in a cell known to be reachable
+        }
+        int d = goldCell >= 0 && plan.target() == goldCell ? -1 : heatDirection();
         if (d < 0 && plan.target() >= 0) {
             d = TeamPlan.firstStep(map, cx, cy, plan.target(), order);
             if (d >= 0 && !plan.claim()
@@ -320,7 +350,22 @@ public class Gold extends ArRobot {
         want = -1;
         waited = 0;
         tell(cx + cells * Maze.DIRECTIONS[d][0], cy + cells * Maze.DIRECTIONS[d][1], false);
+        lookedAhead = false;
         phase = Phase.ANNOUNCE;
+    }
+
+    /**
+     * The cell where the heat sensor places the gold, or -1 while it senses no heat. (A robot can
+     * know a cell from afar, read with its laser: the heat brings it there.)
+     */
+    private long goldCell() {
+        if (!heat.senses()) {
+            return -1;
+        }
+        double bearing = Math.toRadians(getTh() + heat.getBearing());
+        double gx = getX() + heat.getDistance() * Math.cos(bearing);
+        double gy = getY() + heat.getDistance() * Math.sin(bearing);
+        return MazeKnowledge.key((int) Math.floor(gx / cellSize), (int) Math.floor(gy / cellSize));
     }
 
     /**
@@ -450,6 +495,13 @@ public class Gold extends ArRobot {
 
     private void turn() {
         if (isHeadingDone(0.5) && Math.abs(getRotVel()) < 1) {
+            if (!lookedAhead) {
+                lookedAhead = true;
+                if (lookAhead() > 0) {
+                    phase = Phase.DECIDE; // what it saw may change the way
+                    return;
+                }
+            }
             startX = getX();
             startY = getY();
             move(runCells * cellSize);
