@@ -9,6 +9,8 @@ import java.util.Map;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import robosim.env.world.RunRules;
 import robosim.env.world.World;
 
@@ -74,6 +76,14 @@ class WorldPropertyTest {
                 """);
 
         assertThrows(UnsupportedOperationException.class, () -> world.properties().put("cellSize", "2"));
+    }
+
+    @ParameterizedTest
+    @CsvSource({"small-maze.xml, 2000", "maze-small.xml, 1500", "maze-medium.xml, 1500", "maze-large.xml, 1500"})
+    void theShippedMazesGiveTheirCellSize(String file, String cellSize) {
+        World world = WorldReader.read(WorldFixtures.root().resolve("testLoadFiles/environment").resolve(file));
+
+        assertEquals(Map.of("cellSize", cellSize), world.properties());
     }
 
     @Test
