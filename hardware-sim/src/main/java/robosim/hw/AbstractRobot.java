@@ -2,6 +2,8 @@ package robosim.hw;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import java.io.IOException;
+import java.util.Map;
+import java.util.OptionalDouble;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.logging.Logger;
@@ -33,6 +35,7 @@ public abstract class AbstractRobot {
     private final RobotParameters parameters;
     private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
     private volatile int stepMs = 100;
+    private volatile WelcomeFacts facts;
     private volatile HardwareSimulator hardware;
     private volatile String connectionError;
     /** How the last attempt to connect ended, while {@link #hardware} is null. */
@@ -58,6 +61,7 @@ public abstract class AbstractRobot {
         this.port = port;
         this.robotType = robotType;
         this.parameters = parameters;
+        this.facts = WelcomeFacts.none(name);
     }
 
     /**
@@ -118,6 +122,7 @@ public abstract class AbstractRobot {
             throw e;
         }
         stepMs = w.stepMs();
+        facts = WelcomeFacts.of(name, w);
         state = w.state();
         welcomed(w.state());
         CURRENT.set(this);
@@ -397,6 +402,62 @@ public abstract class AbstractRobot {
     /** @return the step length, simulated ms */
     public int getStepMs() {
         return stepMs;
+    }
+
+    /**
+     * One of the world's properties (its world file's {@code <property>} elements), as the
+     * Environment's welcome gave them: what a program needs to know of the world, such as a maze's
+     * cell size. Valid once the robot is connected; before, and on a Pioneer port, there are none.
+     *
+     * @param name the property's name
+     * @return its value, or null when the world does not give it
+     */
+    public String getWorldProperty(String name) {
+        return facts.properties().get(name);
+    }
+
+    /**
+     * One of the world's properties as a number (see {@link #getWorldProperty(String)}).
+     *
+     * @param name     the property's name
+     * @param fallback the value when the world does not give the property
+     * @return its value, or {@code fallback}
+     * @throws IllegalStateException naming the robot, the property and its value, if the world gives
+     *                               the property but not as a finite decimal number
+     */
+    public double getWorldProperty(String name, double fallback) {
+        return facts.number(name).orElse(fallback);
+    }
+
+    /**
+     * One of the world's properties as a number, when the program has no sensible default.
+     *
+     * @param name the property's name
+     * @return its value, or empty when the world does not give it
+     * @throws IllegalStateException naming the robot, the property and its value, if the world gives
+     *                               the property but not as a finite decimal number
+     */
+    public OptionalDouble getWorldNumber(String name) {
+        return facts.number(name);
+    }
+
+    /**
+     * @return all of the world's properties, name to value in the world file's order, unmodifiable
+     *         (none before the robot is connected)
+     */
+    public Map<String, String> getWorldProperties() {
+        return facts.properties();
+    }
+
+    /**
+     * The run's seed, as the Environment's welcome gave it, so that a program's own random choices
+     * (tie-breaks, say) follow it and the same seed gives the same run. Valid once the robot is
+     * connected; before, and on a Pioneer port, it is 0.
+     *
+     * @return the run's seed
+     */
+    public long getRunSeed() {
+        return facts.seed();
     }
 
     /** @return simulated time of the latest state, ms */

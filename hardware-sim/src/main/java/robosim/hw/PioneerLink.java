@@ -2,6 +2,7 @@ package robosim.hw;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -79,7 +80,8 @@ public final class PioneerLink extends ReleasedOnClose {
             RobotState state = states.state(first, 0, 0, List.of());
             int cycle = config.sipCycle() > 0 ? config.sipCycle() : DEFAULT_CYCLE_MS;
             RobotThreads.unstarted("hw-pioneer-" + hello.name(), () -> read(receiver)).start();
-            return new Welcome(hello.name(), cycle, state);
+            // a robot server has no world and no run: no properties, seed 0
+            return new Welcome(hello.name(), cycle, state, Map.of(), 0);
         } catch (IOException | RuntimeException e) {
             close();
             throw e;

@@ -11,7 +11,9 @@ import static robosim.hw.FakeEnvironment.WAIT_MS;
 
 import java.io.IOException;
 import java.net.ConnectException;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -153,6 +155,45 @@ class AbstractRobotTest {
         env.send(new Welcome("r1", 250, new RobotState(0, 0, 1500, -750, 90, 0, 0, 0, 0, false, new int[0], 0)));
         assertEquals("step 0 of 250 ms at (1500.0, -750.0, 90.0), welcomed at (1500.0, -750.0), connected true",
                 nextSeen());
+    }
+
+    @Test
+    void theWelcomeGivesTheWorldsPropertiesAndTheRunsSeed() throws Exception {
+        TestRobot robot = new TestRobot("r1", env.port());
+        run(robot, () -> seen.add("cellSize " + robot.getWorldProperty("cellSize") + " = "
+                + robot.getWorldProperty("cellSize", 0) + ", goal " + robot.getWorldProperty("goal") + ", absent "
+                + robot.getWorldProperty("absent") + " or " + robot.getWorldProperty("absent", 7.5) + " or "
+                + robot.getWorldNumber("absent") + ", all " + robot.getWorldProperties() + ", seed "
+                + robot.getRunSeed()));
+        env.acceptHello();
+        Map<String, String> properties = new LinkedHashMap<>();
+        properties.put("cellSize", " 1500 ");
+        properties.put("goal", "gold");
+        env.send(new Welcome("r1", 100, FakeEnvironment.state(0), properties, -42));
+
+        assertEquals("cellSize  1500  = 1500.0, goal gold, absent null or 7.5 or OptionalDouble.empty, all "
+                + "{cellSize= 1500 , goal=gold}, seed -42", nextSeen());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"gold", "", "NaN", "Infinity", "0x10", "1d", "1e999"})
+    void aWorldPropertyThatIsNotANumberIsAnErrorNamingTheRobotThePropertyAndTheValue(String value) throws Exception {
+        TestRobot robot = new TestRobot("r1", env.port());
+        run(robot, () -> seen.add(assertThrows(IllegalStateException.class,
+                () -> robot.getWorldProperty("goal", 1)).getMessage()));
+        env.acceptHello();
+        env.send(new Welcome("r1", 100, FakeEnvironment.state(0), Map.of("goal", value), 1));
+
+        assertEquals("robot r1: the world's property goal is '" + value + "', not a number", nextSeen());
+    }
+
+    @Test
+    void beforeItsWelcomeARobotKnowsNoPropertiesAndSeedZero() {
+        TestRobot robot = new TestRobot("r1", env.port());
+
+        assertNull(robot.getWorldProperty("cellSize"));
+        assertEquals(Map.of(), robot.getWorldProperties());
+        assertEquals(0, robot.getRunSeed());
     }
 
     // ---- state after a step ----

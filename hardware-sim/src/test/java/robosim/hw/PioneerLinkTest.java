@@ -60,6 +60,8 @@ class PioneerLinkTest {
             Welcome w = link.open(HELLO, receiver);
             try {
                 assertEquals(50, w.stepMs(), "the CONFIG reply's SIP cycle");
+                assertEquals(java.util.Map.of(), w.properties(), "a robot server has no world");
+                assertEquals(0, w.seed(), "a robot server has no run");
                 assertEquals(List.of(Commands.OPEN, Commands.CONFIG), ids(server, 2));
                 RobotSensorResponse first = receiver.steps.poll(5, TimeUnit.SECONDS);
                 assertNotNull(first);

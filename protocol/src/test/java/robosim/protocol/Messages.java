@@ -1,6 +1,8 @@
 package robosim.protocol;
 
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Literal messages for the codec and snapshot tests. Every field holds a value that differs from its
@@ -49,7 +51,10 @@ final class Messages {
     }
 
     static Welcome welcome() {
-        return new Welcome("robot1", 100, state());
+        Map<String, String> properties = new LinkedHashMap<>();
+        properties.put("cellSize", "1000");
+        properties.put("goal.name", "gold ✓");
+        return new Welcome("robot1", 100, state(), properties, -7_654_321_987L);
     }
 
     static TimeStep timeStep() {

@@ -1,7 +1,9 @@
 package robosim.protocol;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.function.Supplier;
 
@@ -27,7 +29,7 @@ public final class RandomMessages {
     public Message any() {
         return switch (random.nextInt(16)) {
             case 0 -> new RobotHello(text(), text(), nullOr(this::parameters));
-            case 1 -> new Welcome(text(), (int) anyLong(), nullOr(this::state));
+            case 1 -> new Welcome(text(), (int) anyLong(), nullOr(this::state), properties(), anyLong());
             case 2 -> new TimeStep(anyLong(), anyLong(), nullOr(this::state));
             case 3 -> new RobotRequests(anyLong(), commands());
             case 4 -> new ViewerHello(text());
@@ -75,6 +77,15 @@ public final class RandomMessages {
         return new Snapshot.RobotView(text(), anyDouble(), anyDouble(), anyDouble(), random.nextBoolean(),
                 random.nextBoolean(), ints(32), anyDouble(), anyDouble(), anyDouble(), ints(400), anyDouble(),
                 anyDouble(), anyDouble());
+    }
+
+    /** @return up to 4 world properties, each name and value within its rule */
+    private Map<String, String> properties() {
+        Map<String, String> p = new LinkedHashMap<>();
+        for (int n = random.nextInt(5); n > 0; n--) {
+            p.put("p" + Integer.toString(random.nextInt(1 << 20), 36), text(100));
+        }
+        return p;
     }
 
     RobotParameters parameters() {

@@ -75,7 +75,8 @@ final class RobotJoins {
         }
         robots.put(hello.name(), c);
         sim().setConnected(hello.name(), true);
-        c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name())));
+        c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name()), sim().world().properties(),
+                sim().seed()));
         String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";
         Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim().stepCount() + 1);
         if (join == null) {

@@ -1,7 +1,10 @@
 package robosim.env.world;
 
 import java.nio.file.Path;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import robosim.comms.CommsSettings;
 
@@ -30,11 +33,13 @@ import robosim.comms.CommsSettings;
  *                  not solid
  * @param rules     who may join the run and when it ends ({@link RunRules#DEFAULT} by default)
  * @param objects   the movable objects (pucks) where they start, in file order
+ * @param properties the world's {@code <property>} elements, name to value in file order: what robot
+ *                  programs learn of the world in their welcome (none for an ARIA map)
  */
 public record World(String name, Path source, double width, double height, int stepMs,
                     List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
                     CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones,
-                    RunRules rules, List<WorldObject> objects) {
+                    RunRules rules, List<WorldObject> objects, Map<String, String> properties) {
     /** The widest and highest world a world file may describe, mm (100 km). */
     public static final double MAX_SIZE = 100_000_000;
 
@@ -51,7 +56,7 @@ public record World(String name, Path source, double width, double height, int s
                     + " has places for 1 to " + robots.size());
         }
         return new World(name, source, width, height, stepMs, obstacles, robots.subList(0, count), heat, noise,
-                comms, gold, minX, minY, zones, rules, objects);
+                comms, gold, minX, minY, zones, rules, objects, properties);
     }
 
     /**
@@ -62,7 +67,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withRobots(List<RobotSpec> others) {
         return new World(name, source, width, height, stepMs, obstacles, others, heat, noise, comms, gold, minX, minY,
-                zones, rules, objects);
+                zones, rules, objects, properties);
     }
 
     /**
@@ -73,7 +78,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withRules(RunRules other) {
         return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
-                zones, other, objects);
+                zones, other, objects, properties);
     }
 
     /** @return the world's extent */
@@ -81,8 +86,9 @@ public record World(String name, Path source, double width, double height, int s
         return new Bounds(minX, minY, width, height);
     }
 
-    /** Copies the lists so the record stays immutable. */
+    /** Copies the lists and the properties, keeping their order, so the record stays immutable. */
     public World {
+        properties = properties == null ? Map.of() : Collections.unmodifiableMap(new LinkedHashMap<>(properties));
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
         heat = List.copyOf(heat);
@@ -90,6 +96,43 @@ public record World(String name, Path source, double width, double height, int s
         objects = objects == null ? List.of() : List.copyOf(objects);
         Objects.requireNonNull(comms, "comms");
         Objects.requireNonNull(rules, "rules");
+    }
+
+    /**
+     * A world without properties.
+     *
+     * @param name      the world's name
+     * @param source    the file it was read from
+     * @param width     extent in x, mm
+     * @param height    extent in y, mm
+     * @param stepMs    step length, ms
+     * @param obstacles walls and polygons
+     * @param robots    the robots
+     * @param heat      the heat sources
+     * @param noise     the sensor and odometry noise
+     * @param comms     how messages travel between robots
+     * @param gold      the gold, or null
+     * @param minX      the world's left edge, mm
+     * @param minY      the world's bottom edge, mm
+     * @param zones     the forbidden lines and areas of a map
+     * @param rules     who may join the run and when it ends
+     * @param objects   the movable objects
+     */
+    public World(String name, Path source, double width, double height, int stepMs,
+                 List<Obstacle> obstacles, List<RobotSpec> robots, List<HeatSource> heat, Noise noise,
+                 CommsSettings comms, HeatSource gold, double minX, double minY, List<ForbiddenZone> zones,
+                 RunRules rules, List<WorldObject> objects) {
+        this(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY, zones,
+                rules, objects, Map.of());
+    }
+
+    /**
+     * @param others the properties, name to value, already checked
+     * @return the same world with those properties
+     */
+    public World withProperties(Map<String, String> others) {
+        return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
+                zones, rules, objects, others);
     }
 
     /**
@@ -125,7 +168,7 @@ public record World(String name, Path source, double width, double height, int s
      */
     public World withObjects(List<WorldObject> others) {
         return new World(name, source, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, minX, minY,
-                zones, rules, others);
+                zones, rules, others, properties);
     }
 
     /**

@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
@@ -84,6 +85,17 @@ class JoinsTest {
             deliver(r1);
             sim.step(rules.closeStep());
         }
+    }
+
+    @Test
+    void theWelcomeCarriesTheWorldsPropertiesAndTheRunsSeed() throws IOException {
+        sim = new Simulation(sim.world().withProperties(Map.of("cellSize", "1500")), 31_337);
+        rules = new SessionRules(sim);
+
+        Welcome w = assertInstanceOf(Welcome.class, connect("r1", worldParameters()).read());
+
+        assertEquals(Map.of("cellSize", "1500"), w.properties());
+        assertEquals(31_337, w.seed());
     }
 
     @Test

@@ -84,6 +84,11 @@ final class WorldElement extends Element {
         children.add(object);
     }
 
+    @JsonSetter("property")
+    void addProperty(PropertyElement property) {
+        children.add(property);
+    }
+
     @Override
     String tag() {
         return "world";

@@ -149,7 +149,7 @@ public final class WorldReader {
         }
         return new World(name, file, width, height, stepMs, obstacles, robots, heat, noise, comms, gold, bounds.minX(),
                 bounds.minY(), map == null ? List.of() : map.zones(), RunRulesReader.read(attributes, root, bounds, gold),
-                objects);
+                objects, PropertiesReader.read(attributes, root));
     }
 
     /** @return the world's {@code <map>}, or null; a world has at most one */

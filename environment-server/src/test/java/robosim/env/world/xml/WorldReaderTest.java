@@ -69,6 +69,7 @@ class WorldReaderTest {
         assertEquals(List.of(new HeatSource(4500, 5000, 40, 11)), world.heat());
         assertEquals(new Noise(5, 10, 0.0075), world.noise());
         assertEquals(new CommsSettings(8000, true, 1, 0.05, 65536), world.comms());
+        assertEquals(java.util.Map.of("cellSize", "2000"), world.properties());
     }
 
     @Test

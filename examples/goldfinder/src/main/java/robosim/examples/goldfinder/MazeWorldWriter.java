@@ -6,11 +6,14 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Writes a {@link Maze} as a RoboSim world file: walls on the grid lines (100 mm thick, merged into
- * long runs), boundary walls, robots in the cells nearest the start corner, and the gold, glowing
- * with heat, in the cell farthest from the start by path.
+ * Writes a {@link Maze} as a RoboSim world file: the cell size as the world property
+ * {@value #CELL_SIZE_PROPERTY}, walls on the grid lines (100 mm thick, merged into long runs),
+ * boundary walls, robots in the cells nearest the start corner, and the gold, glowing with heat, in
+ * the cell farthest from the start by path.
  */
 public final class MazeWorldWriter {
+    /** The world property that gives the maze's cell size, mm, to the robots in their welcome. */
+    public static final String CELL_SIZE_PROPERTY = "cellSize";
     /** The gold's heat intensity, as felt 1 m away. */
     public static final double GOLD_INTENSITY = 50;
 
@@ -40,6 +43,8 @@ public final class MazeWorldWriter {
                 maze.width(), maze.height(), cellSize));
         xml.append(String.format(Locale.ROOT, "<world name=\"%s\" width=\"%d\" height=\"%d\" stepMs=\"100\" boundary=\"true\">%n",
                 name, maze.width() * cellSize, maze.height() * cellSize));
+        // robot programs learn the grid from the world, not from their command line
+        xml.append(String.format(Locale.ROOT, "  <property name=\"%s\" value=\"%d\"/>%n", CELL_SIZE_PROPERTY, cellSize));
         for (int[] w : walls(maze)) {
             xml.append(String.format(Locale.ROOT, "  <wall x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\"/>%n",
                     w[0] * cellSize, w[1] * cellSize, w[2] * cellSize, w[3] * cellSize));
