@@ -322,6 +322,19 @@ public sealed interface Command {
             if (figures == null) {
                 throw new IllegalArgumentException("layer " + layer + " needs its figures: an empty list clears it");
             }
+            requireFits(layer, figures);
+            figures = List.copyOf(figures);
+        }
+
+        /**
+         * The caps on one layer's figures, as one rule for every place that takes them.
+         *
+         * @param layer   the layer's name, for the message
+         * @param figures its figures
+         * @throws IllegalArgumentException if one is null, or there are more than {@value #MAX_FIGURES}
+         *                                  figures or {@value Figure#MAX_NUMBERS} numbers in all
+         */
+        public static void requireFits(String layer, List<Figure> figures) {
             if (figures.size() > MAX_FIGURES) {
                 throw new IllegalArgumentException(figures.size() + " figures were supplied for layer " + layer
                         + ": at most " + MAX_FIGURES);
@@ -337,7 +350,6 @@ public sealed interface Command {
                 throw new IllegalArgumentException(numbers + " numbers were supplied for layer " + layer
                         + ": at most " + Figure.MAX_NUMBERS + " in all its figures");
             }
-            figures = List.copyOf(figures);
         }
 
         /**

@@ -69,15 +69,17 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
         /**
          * Copies the figures; null reads as none.
          *
-         * @throws IllegalArgumentException if the robot is missing or the layer breaks
-         *                                  {@link Command.Draw#requireLayer}'s rule
+         * @throws IllegalArgumentException if the robot is missing, or the layer or its figures break
+         *                                  {@link Command.Draw}'s rules
          */
         public Drawing {
             if (robot == null || robot.isEmpty()) {
                 throw new IllegalArgumentException("a drawing of layer " + layer + " needs the robot that drew it");
             }
             Command.Draw.requireLayer(layer);
-            figures = figures == null ? List.of() : List.copyOf(figures);
+            figures = figures == null ? List.of() : figures;
+            Command.Draw.requireFits(layer, figures);
+            figures = List.copyOf(figures);
         }
     }
 
