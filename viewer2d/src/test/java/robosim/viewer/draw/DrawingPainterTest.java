@@ -85,6 +85,17 @@ class DrawingPainterTest {
     }
 
     @Test
+    void theLegendSaysWhatTheTranslucentFiguresAreOnlyWhenTheyAreShown() {
+        RenderOptions plain = RenderOptions.of(800);
+        assertTrue(WorldRenderer.legend(Fixtures.world(), plain.withDrawings(true))
+                .contains("translucent: what a robot drew"));
+        assertEquals(WorldRenderer.legend(Fixtures.world(), plain).size() + 1,
+                WorldRenderer.legend(Fixtures.world(), plain.withDrawings(true)).size());
+        assertTrue(renderer.render(Fixtures.world(), null, plain.withDrawings(true)).getHeight()
+                >= renderer.render(Fixtures.world(), null, plain).getHeight());
+    }
+
+    @Test
     void aWorldForgetsTheDrawings() {
         Drawings drawings = new Drawings();
         drawings.add(drawn(1, CELL));
