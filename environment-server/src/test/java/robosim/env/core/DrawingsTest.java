@@ -9,6 +9,8 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Command;
 import robosim.protocol.Figure;
+import robosim.protocol.FrameReader;
+import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 
 /** The robots' drawings: kept per robot and layer, and in a snapshot only in the step they changed. */
@@ -62,6 +64,29 @@ class DrawingsTest {
         sim.step(Map.of());
         assertEquals(List.of(new Snapshot.Drawing("a", "map", List.of())), sim.snapshot().drawings());
         assertEquals(List.of(new Snapshot.Drawing("b", "map", List.of(CELL))), sim.drawings());
+    }
+
+    @Test
+    void aLayerThatWouldBringAllTheDrawingsPastTheirCapIsRefused() {
+        Simulation sim = twoRobots();
+        Figure full = new Figure(Figure.DOTS, "", new double[Figure.MAX_NUMBERS]);
+        List<Command> a = new ArrayList<>();
+        List<Command> b = new ArrayList<>();
+        for (int i = 1; i <= 5; i++) {
+            a.add(draw("a" + i, full));
+            b.add(draw("b" + i, full));
+        }
+        sim.step(Map.of("a", a, "b", b));
+        assertEquals(10, sim.drawings().size(), "200000 numbers in all");
+        int bytes = new MessageCodec().encode(sim.snapshot().withDrawings(sim.drawings())).length;
+        assertTrue(bytes < FrameReader.DEFAULT_MAX_FRAME, "all of them fit a viewer's frame: " + bytes + " bytes");
+        sim.step(Map.of("a", List.of(draw("a1", full), draw("more", CELL))));
+        List<String> errors = sim.state("a").errors();
+        assertEquals(List.of("step 2: robot a's layer more of 4 numbers would bring the robots' drawings to 200004"
+                + " numbers, more than the 200000 they may hold together; it was not drawn"), errors);
+        sim.setConnected("b", false);
+        sim.step(Map.of("a", List.of(draw("more", CELL))));
+        assertTrue(sim.state("a").errors().isEmpty(), "a robot that left made room");
     }
 
     @Test
