@@ -245,8 +245,9 @@ public abstract class AbstractRobot {
      * replace whatever the layer showed, and viewers that show drawings ({@code --drawings}) draw them
      * translucent under the robots, in the robot's colour unless a figure names its own, until the
      * robot draws the layer again, clears it, or leaves. The Environment keeps at most
-     * {@value Command.Draw#MAX_LAYERS} layers per robot: a new layer past that is refused with an
-     * error the robot reads in its next state, and the robot goes on.
+     * {@value Command.Draw#MAX_LAYERS} layers per robot, and a bounded number of coordinates in all
+     * the robots' layers together: a layer past either is refused with an error the robot reads in
+     * its next state, and the robot goes on.
      *
      * <p>Viewers are sent a layer each time it is drawn, so draw every so often (when what it shows
      * has changed), not every step.

@@ -302,7 +302,8 @@ public sealed interface Command {
      * Replaces one layer of the robot's drawings, the shapes it shows in the world's views (its known
      * map, the frontier it claimed): viewers draw the figures until the robot replaces the layer,
      * clears it with an empty list, or leaves. The Environment keeps at most
-     * {@value #MAX_LAYERS} layers per robot and refuses a new one past that.
+     * {@value #MAX_LAYERS} layers per robot, and a bounded number of coordinates in all the robots'
+     * layers together, and refuses a layer past either with the reason.
      *
      * Its constructor throws IllegalArgumentException if the layer is not 1 to 32 letters, digits,
      * dots, underscores or hyphens, the figures are missing or null, or there are more than
