@@ -2,12 +2,14 @@ package robosim.hw;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import java.io.IOException;
+import java.util.List;
 import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
+import robosim.protocol.Figure;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RunSecret;
@@ -241,6 +243,38 @@ public abstract class AbstractRobot {
      */
     public void say(String text) {
         request(new Command.Say(text));
+    }
+
+    /**
+     * Draws into the world's views, as a robot of ARIA's shows drawings in MobileEyes: the figures
+     * replace whatever the layer showed, and viewers that show drawings ({@code --drawings}) draw them
+     * translucent under the robots, in the robot's colour unless a figure names its own, until the
+     * robot draws the layer again, clears it, or leaves. The Environment keeps at most
+     * {@value Command.Draw#MAX_LAYERS} layers per robot, and a bounded number of coordinates in all
+     * the robots' layers together: a layer past either is refused with an error the robot reads in
+     * its next state, and the robot goes on.
+     *
+     * <p>Viewers are sent a layer each time it is drawn, so draw every so often (when what it shows
+     * has changed), not every step.
+     *
+     * @param layer   the layer's name, 1 to 32 letters, digits, {@code .}, {@code _} or {@code -},
+     *                such as {@code map} or {@code frontier}
+     * @param figures what it shows now, at most {@value Command.Draw#MAX_FIGURES} figures and
+     *                {@value Figure#MAX_NUMBERS} numbers in all; empty clears the layer
+     * @throws IllegalArgumentException if the layer's name or the figures break those rules
+     */
+    public void draw(String layer, List<Figure> figures) {
+        request(new Command.Draw(layer, figures));
+    }
+
+    /**
+     * Clears one layer of the robot's drawings; a layer it has not drawn is left as it is.
+     *
+     * @param layer the layer's name
+     * @throws IllegalArgumentException if the name breaks {@link #draw}'s rule
+     */
+    public void clearDrawing(String layer) {
+        request(new Command.Draw(layer, List.of()));
     }
 
     /**

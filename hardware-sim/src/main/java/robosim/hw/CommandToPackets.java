@@ -102,6 +102,9 @@ final class CommandToPackets {
             return refuse("pan-tilt-zoom camera or ACTS colour tracking (a real camera is driven through the"
                     + " AUX serial port, which this server does not simulate)", c.getClass().getSimpleName());
         }
+        if (c instanceof Command.Draw) {
+            return refuse("drawings in the world's views", "Draw");
+        }
         return refuse("messages between robots", c.getClass().getSimpleName());
     }
 

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import robosim.protocol.Command;
+import robosim.protocol.Figure;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotState;
 
@@ -87,6 +88,19 @@ class AbstractRobotUnitTest {
         link.step(1);
         assertEquals(List.of(new RobotRequest(new Command.Say("hello")), new RobotRequest(new Command.JoinGroup("team"))),
                 link.next().requests());
+    }
+
+    @Test
+    void aDrawingAndItsClearingLeaveAsTheStepsRobotRequests() throws Exception {
+        Figure cell = new Figure(Figure.CELLS, "", new double[] {0, 0, 500, 500});
+        run(() -> {
+            robot.draw("map", List.of(cell));
+            robot.clearDrawing("frontier");
+            robot.sleepSimulated(100);
+        });
+        link.step(1);
+        assertEquals(List.of(new RobotRequest(new Command.Draw("map", List.of(cell))),
+                new RobotRequest(new Command.Draw("frontier", List.of()))), link.next().requests());
     }
 
     @Test

@@ -92,6 +92,16 @@ class CommandToPacketsTest {
     }
 
     @Test
+    void aDrawingIsRefusedOnceAndSendsNothing() {
+        Command.Draw draw = new Command.Draw("map", List.of());
+        assertTrue(to.packets(draw).isEmpty());
+        assertTrue(to.packets(draw).isEmpty());
+        List<String> errors = to.takeErrors();
+        assertEquals(1, errors.size(), errors.toString());
+        assertTrue(errors.get(0).startsWith("Draw was not carried out"), errors.get(0));
+    }
+
+    @Test
     void theCameraIsRefusedNamingTheAuxPort() {
         assertTrue(to.packets(new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300)).isEmpty());
         assertTrue(to.packets(new Command.AimPtz(10, 0, 0)).isEmpty());

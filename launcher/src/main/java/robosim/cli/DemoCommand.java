@@ -14,7 +14,7 @@ import robosim.params.RobotParameterFiles;
  * images written as PNG (and, if asked, a recording and an animated GIF), the summary printed.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "Run the demo: GoldFinder with 3 robots, each in its own JVM, on the medium maze; frames written as PNG.")
+        description = "Run the demo: GoldFinder with 3 robots, each in its own JVM, on the medium maze; frames written as PNG, showing what the robots draw.")
 final class DemoCommand implements Callable<Integer> {
     /** The wander robot, for runs that need robots that just keep moving. */
     static final String WANDER = "robosim.examples.wander.Wander";
@@ -64,6 +64,8 @@ final class DemoCommand implements Callable<Integer> {
         gold.cellSize = 1500;
         gold.recording = recording;
         gold.gif = gif;
+        // the frames show each robot's known map and claimed frontier: the division of work
+        gold.drawings = true;
         return gold.call();
     }
 }

@@ -27,6 +27,9 @@ final class DrawingOptions {
     @Option(names = "--grid", description = "draw a light grid of round-length squares (2D)")
     boolean grid;
 
+    @Option(names = "--drawings", description = OptionTexts.DRAWINGS)
+    boolean drawings;
+
     @Option(names = "--3d", description = "draw the 3D view: walls extruded to their heights, robots as solids")
     boolean threeD;
 
@@ -47,7 +50,7 @@ final class DrawingOptions {
 
     /** @return the 2D options; throws IllegalArgumentException naming a bad value */
     RenderOptions render() {
-        return new RenderOptions(width, sonar, !noNames).withTrails(trails).withGrid(grid);
+        return new RenderOptions(width, sonar, !noNames).withTrails(trails).withGrid(grid).withDrawings(drawings);
     }
 
     /** @return the 3D options; throws IllegalArgumentException naming a bad value */

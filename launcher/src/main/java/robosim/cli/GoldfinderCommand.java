@@ -82,6 +82,9 @@ final class GoldfinderCommand implements Callable<Integer> {
     @Option(names = "--no-frames", description = "write no PNG frames")
     boolean noFrames;
 
+    @Option(names = "--drawings", description = OptionTexts.DRAWINGS + "; in the frames and the GIF")
+    boolean drawings;
+
     @Mixin
     RecordOptions recording = new RecordOptions();
 
@@ -158,7 +161,7 @@ final class GoldfinderCommand implements Callable<Integer> {
             CompletableFuture<ViewerSummary> viewer = !watched() ? null : Background.supply("png viewer", () -> {
                 try {
                     return Viewers.client("127.0.0.1", server.viewerPort(), "png:" + frames.getFileName(),
-                            outputs.listeners(every, 800), Duration.ofMinutes(5)).run();
+                            outputs.listeners(every, 800, drawings), Duration.ofMinutes(5)).run();
                 } catch (java.io.IOException e) {
                     throw new IllegalStateException(e.getMessage(), e);
                 }

@@ -22,6 +22,8 @@ final class OptionTexts {
     static final String SECRET_FILE = "read the run secret from FILE (as env --token-file wrote it)";
     static final String WINDOW = "show it in a window";
     static final String PNG_DIR = "write frame-NNNNNN.png files to DIR";
+    static final String DRAWINGS = "draw what the robots draw (each one's known map, the frontier it claimed),"
+            + " translucent in each robot's colour (2D)";
     /** The hidden old names' descriptions: never shown, kept for scripts written before. */
     static final String OLD_NAME = "old name of ";
 

@@ -71,18 +71,20 @@ final class RunOutputs implements AutoCloseable {
     /**
      * @param every draw every K-th step
      * @param width the PNG images' width, px
+     * @param drawings whether the images show the robots' drawings
      * @return the viewer's listeners: the PNG drawing, the GIF's drawing of the same steps
      *         {@value #GIF_WIDTH} px wide (each on a thread of its own), and the recorder
      */
-    List<SnapshotListener> listeners(int every, int width) {
+    List<SnapshotListener> listeners(int every, int width, boolean drawings) {
         List<SnapshotListener> listeners = new ArrayList<>();
         if (png != null) {
             listeners.add(new QueuedListener("png frames",
-                    RenderedImages.flat(png, new RenderOptions(width, false, true), every)));
+                    RenderedImages.flat(png, new RenderOptions(width, false, true).withDrawings(drawings), every)));
         }
         if (gif != null) {
             listeners.add(new QueuedListener("gif frames",
-                    RenderedImages.flat(gif, new RenderOptions(GIF_WIDTH, false, true), every)));
+                    RenderedImages.flat(gif, new RenderOptions(GIF_WIDTH, false, true).withDrawings(drawings),
+                            every)));
         }
         if (recorder != null) {
             listeners.add(recorder);

@@ -2,6 +2,7 @@ package robosim.protocol;
 
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
+import java.util.List;
 
 /**
  * A request of a robot: ARIA's direct motion commands, switching its sensors, messages to other
@@ -44,6 +45,7 @@ import com.fasterxml.jackson.annotation.JsonTypeInfo;
         @JsonSubTypes.Type(value = Command.BindChannel.class, name = "bindChannel"),
         @JsonSubTypes.Type(value = Command.SetSonarCycle.class, name = "sonarCycle"),
         @JsonSubTypes.Type(value = Command.SetMotors.class, name = "motors"),
+        @JsonSubTypes.Type(value = Command.Draw.class, name = "draw"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -292,6 +294,75 @@ public sealed interface Command {
             if (text == null || text.length() > 1000) {
                 throw new IllegalArgumentException("a robot says at most 1000 characters, not "
                         + (text == null ? "nothing" : text.length()));
+            }
+        }
+    }
+
+    /**
+     * Replaces one layer of the robot's drawings, the shapes it shows in the world's views (its known
+     * map, the frontier it claimed): viewers draw the figures until the robot replaces the layer,
+     * clears it with an empty list, or leaves. The Environment keeps at most
+     * {@value #MAX_LAYERS} layers per robot, and a bounded number of coordinates in all the robots'
+     * layers together, and refuses a layer past either with the reason.
+     *
+     * Its constructor throws IllegalArgumentException if the layer is not 1 to 32 letters, digits,
+     * dots, underscores or hyphens, the figures are missing or null, or there are more than
+     * {@value #MAX_FIGURES} figures or {@value Figure#MAX_NUMBERS} numbers in all.
+     *
+     * @param layer   the layer's name, such as {@code map} or {@code frontier}
+     * @param figures what the layer shows now; empty clears it
+     */
+    record Draw(String layer, List<Figure> figures) implements RunEvent {
+        /** The most layers one robot may have at once. */
+        public static final int MAX_LAYERS = 8;
+        /** The most figures in one drawing. */
+        public static final int MAX_FIGURES = 256;
+
+        public Draw {
+            requireLayer(layer);
+            if (figures == null) {
+                throw new IllegalArgumentException("layer " + layer + " needs its figures: an empty list clears it");
+            }
+            requireFits(layer, figures);
+            figures = List.copyOf(figures);
+        }
+
+        /**
+         * The caps on one layer's figures, as one rule for every place that takes them.
+         *
+         * @param layer   the layer's name, for the message
+         * @param figures its figures
+         * @throws IllegalArgumentException if one is null, or there are more than {@value #MAX_FIGURES}
+         *                                  figures or {@value Figure#MAX_NUMBERS} numbers in all
+         */
+        public static void requireFits(String layer, List<Figure> figures) {
+            if (figures.size() > MAX_FIGURES) {
+                throw new IllegalArgumentException(figures.size() + " figures were supplied for layer " + layer
+                        + ": at most " + MAX_FIGURES);
+            }
+            long numbers = 0;
+            for (Figure f : figures) {
+                if (f == null) {
+                    throw new IllegalArgumentException("a null figure was supplied for layer " + layer);
+                }
+                numbers += f.size();
+            }
+            if (numbers > Figure.MAX_NUMBERS) {
+                throw new IllegalArgumentException(numbers + " numbers were supplied for layer " + layer
+                        + ": at most " + Figure.MAX_NUMBERS + " in all its figures");
+            }
+        }
+
+        /**
+         * The rule for a layer's name, as one rule for every place that takes one.
+         *
+         * @param layer the name
+         * @throws IllegalArgumentException if it is not 1 to 32 letters, digits, dots, underscores or hyphens
+         */
+        public static void requireLayer(String layer) {
+            if (layer == null || !layer.matches("[A-Za-z0-9._-]{1,32}")) {
+                throw new IllegalArgumentException((layer == null ? "null" : "'" + layer + "'")
+                        + " was supplied for a drawing's layer: 1 to 32 letters, digits, '.', '_' or '-'");
             }
         }
     }

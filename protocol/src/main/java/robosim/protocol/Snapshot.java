@@ -15,10 +15,14 @@ import java.util.List;
  *                 absent (read as none) in recordings made before robots could join a run under way
  * @param objects  the world's movable objects (pucks) where they are now, in the world file's order;
  *                 absent (read as none) in recordings made before worlds had objects
+ * @param drawings the robots' drawings that changed in this step (one with no figures was cleared);
+ *                 a viewer that attaches gets every robot's current drawings in its first snapshot.
+ *                 Absent (read as none) when none changed, and in recordings made before robots drew
  */
 public record Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
                           List<Said> said, List<Event> events,
-                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<ObjectView> objects) implements Message {
+                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<ObjectView> objects,
+                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<Drawing> drawings) implements Message {
     /** Copies the lists so the record stays immutable. */
     public Snapshot {
         robots = List.copyOf(robots);
@@ -26,6 +30,57 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
         said = said == null ? List.of() : List.copyOf(said);
         events = events == null ? List.of() : List.copyOf(events);
         objects = objects == null ? List.of() : List.copyOf(objects);
+        drawings = drawings == null ? List.of() : List.copyOf(drawings);
+    }
+
+    /**
+     * A snapshot in which no drawing changed.
+     *
+     * @param step     the step just completed
+     * @param timeMs   simulated time after it
+     * @param robots   every robot
+     * @param messages the messages robots sent in this step
+     * @param said     what robots said in this step
+     * @param events   the robots that joined or went since the snapshot before
+     * @param objects  the world's objects where they are now
+     */
+    public Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages, List<Said> said,
+                    List<Event> events, List<ObjectView> objects) {
+        this(step, timeMs, robots, messages, said, events, objects, List.of());
+    }
+
+    /**
+     * @param changed the robots' drawings to carry: those that changed, or for a viewer that
+     *                attaches, all there are
+     * @return this snapshot with those drawings
+     */
+    public Snapshot withDrawings(List<Drawing> changed) {
+        return new Snapshot(step, timeMs, robots, messages, said, events, objects, changed);
+    }
+
+    /**
+     * One layer of a robot's drawings, as it is after a step.
+     *
+     * @param robot   the robot that drew it
+     * @param layer   the layer's name
+     * @param figures what it shows; empty when the robot cleared it or left
+     */
+    public record Drawing(String robot, String layer, List<Figure> figures) {
+        /**
+         * Copies the figures; null reads as none.
+         *
+         * @throws IllegalArgumentException if the robot is missing, or the layer or its figures break
+         *                                  {@link Command.Draw}'s rules
+         */
+        public Drawing {
+            if (robot == null || robot.isEmpty()) {
+                throw new IllegalArgumentException("a drawing of layer " + layer + " needs the robot that drew it");
+            }
+            Command.Draw.requireLayer(layer);
+            figures = figures == null ? List.of() : figures;
+            Command.Draw.requireFits(layer, figures);
+            figures = List.copyOf(figures);
+        }
     }
 
     /**
@@ -46,7 +101,7 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those events
      */
     public Snapshot withEvents(List<Event> happened) {
-        return new Snapshot(step, timeMs, robots, messages, said, happened, objects);
+        return new Snapshot(step, timeMs, robots, messages, said, happened, objects, drawings);
     }
 
     /**
@@ -188,7 +243,7 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those objects
      */
     public Snapshot withObjects(List<ObjectView> others) {
-        return new Snapshot(step, timeMs, robots, messages, said, events, others);
+        return new Snapshot(step, timeMs, robots, messages, said, events, others, drawings);
     }
 
     /**

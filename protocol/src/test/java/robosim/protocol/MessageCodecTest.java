@@ -338,7 +338,9 @@ class MessageCodecTest {
                 + "{\"cmd\":\"trackColors\",\"on\":true},"
                 + "{\"cmd\":\"bindChannel\",\"channel\":3,\"color\":\"#00ff7f\"},"
                 + "{\"cmd\":\"sonarCycle\",\"msPerFiring\":40},"
-                + "{\"cmd\":\"motors\",\"on\":true}]}", json);
+                + "{\"cmd\":\"motors\",\"on\":true},"
+                + "{\"cmd\":\"draw\",\"layer\":\"frontier\",\"figures\":[{\"kind\":\"cells\",\"color\":\"#ff0000\","
+                + "\"xy\":[0.0,0.0,500.0,500.0]}]}]}", json);
     }
 
     @Test

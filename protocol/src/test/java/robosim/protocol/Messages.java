@@ -93,7 +93,8 @@ final class Messages {
                 new Command.TrackColors(true),
                 new Command.BindChannel(3, "#00ff7f"),
                 new Command.SetSonarCycle(40),
-                new Command.SetMotors(true)));
+                new Command.SetMotors(true),
+                new Command.Draw("frontier", List.of(new Figure(Figure.CELLS, "red", new double[] {0, 0, 500, 500})))));
     }
 
     static ViewerHello viewerHello() {

@@ -57,6 +57,7 @@ public final class Simulation {
     private Parallel parallel = Parallel.SERIAL;
     private final MessageRouter messages;
     private final RunEvents events;
+    private final RobotDrawings drawings = new RobotDrawings();
     private long step;
     /** The world's movable objects, and the robots' grippers that hold them. */
     private final Pucks pucks;
@@ -286,6 +287,7 @@ public final class Simulation {
         }
         grippers.step(order, dt);
         step = current;
+        drawings.stepEnded();
         readSensors();
         messages.deliver(step, new RobotPositions(this::robot, geometry), RobotPositions.connected(order));
     }
@@ -301,6 +303,11 @@ public final class Simulation {
             r.sensors().configure(s);
         } else if (c instanceof Command.Messaging m) {
             messages.take(current, r.name, m);
+        } else if (c instanceof Command.Draw d) {
+            String refusal = drawings.draw(r.name, d, current);
+            if (refusal != null) {
+                messages.error(r.name, refusal);
+            }
         } else if (c instanceof Command.RunEvent e) {
             events.take(r, e, current);
         } else if (c instanceof Command.Simulator s) {
@@ -465,7 +472,8 @@ public final class Simulation {
 
     /**
      * Marks a robot's program as connected or not, for viewers. A program that connects finds a
-     * Pioneer's motors as the world says ({@code <world motors=...>}, disabled by default).
+     * Pioneer's motors as the world says ({@code <world motors=...>}, disabled by default); one that
+     * leaves loses its drawings, cleared in the next step's snapshot.
      *
      * @param name      the robot
      * @param connected whether its program is connected
@@ -475,14 +483,26 @@ public final class Simulation {
         r.connected = connected;
         if (connected) {
             r.motorsAtConnect(world.rules().motorsEnabled());
+        } else {
+            drawings.drop(name);
         }
     }
 
-    /** @return the moving parts of the world now, for viewers */
+    /** @return the moving parts of the world now, for viewers, with the drawings that changed in the last step */
     public Snapshot snapshot() {
         readUnread();
         return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said())
-                .withObjects(pucks.views(grippers::lifted));
+                .withObjects(pucks.views(grippers::lifted)).withDrawings(drawings.changed());
+    }
+
+    /**
+     * Every robot's drawings now, for a viewer that has not seen them: one that attaches, or one
+     * sent the world again (which forgets the drawings it had).
+     *
+     * @return each robot's layers, robot by robot in the order they first drew
+     */
+    public List<Snapshot.Drawing> drawings() {
+        return drawings.all();
     }
 
     /** @return the static world, with every robot in it now, for viewers */

@@ -292,7 +292,8 @@ public final class EnvironmentServer implements AutoCloseable {
 
     /**
      * Sends the viewers and listeners the snapshot after a step, with the robots that joined or went
-     * since the one before, and before it the world again when a robot was added to it. The snapshot
+     * since the one before, and before it the world again when a robot was added to it (the snapshot
+     * then carries every robot's drawings, not only the changed ones). The snapshot
      * is built only when someone watches: benchmarks and headless runs skip it.
      */
     private void publish() {
@@ -301,12 +302,14 @@ public final class EnvironmentServer implements AutoCloseable {
         if (rules.viewerCount() == 0 && listeners.size() == 0) {
             return;
         }
+        Snapshot snapshot = sim().snapshot().withEvents(events);
         if (worldChanged) {
             WorldDescription world = sim().description();
             rules.broadcastSnapshot(world, codec);
             listeners.world(world);
+            // a viewer forgets the drawings with the world it replaces: the snapshot after it carries them all
+            snapshot = snapshot.withDrawings(sim().drawings());
         }
-        Snapshot snapshot = sim().snapshot().withEvents(events);
         rules.broadcastSnapshot(snapshot, codec);
         listeners.snapshot(snapshot);
     }

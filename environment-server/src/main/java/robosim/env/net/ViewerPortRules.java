@@ -130,7 +130,8 @@ final class ViewerPortRules {
         c.setName(name);
         viewers.add(c);
         c.send(sim().description());
-        c.send(sim().snapshot());
+        // the viewer has seen no drawing yet: it gets them all, not only the last step's changes
+        c.send(sim().snapshot().withDrawings(sim().drawings()));
         LOG.info(() -> c.peer() + " attached at step " + sim().stepCount());
     }
 

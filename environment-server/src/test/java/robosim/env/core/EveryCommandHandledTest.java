@@ -12,6 +12,7 @@ import java.util.TreeSet;
 import org.junit.jupiter.api.Test;
 import robosim.env.world.World;
 import robosim.protocol.Command;
+import robosim.protocol.Figure;
 
 /**
  * Every kind of command a robot can send reaches a handler in the core: a command record added to
@@ -34,7 +35,8 @@ class EveryCommandHandledTest {
             new Command.Gripper(Command.Gripper.GRIP_CLOSE),
             new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300), new Command.AimPtz(10, 5, 100),
             new Command.TrackColors(true), new Command.BindChannel(9, "#123456"),
-            new Command.SetSonarCycle(40), new Command.SetMotors(true));
+            new Command.SetSonarCycle(40), new Command.SetMotors(true),
+            new Command.Draw("map", List.of(new Figure(Figure.DOTS, "", new double[] {1, 2}))));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {

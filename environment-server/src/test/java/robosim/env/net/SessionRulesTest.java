@@ -27,6 +27,7 @@ import robosim.env.world.xml.WorldReader;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.CommsUpdate;
+import robosim.protocol.Figure;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.InvalidValueException;
@@ -36,6 +37,7 @@ import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.RobotRequests;
+import robosim.protocol.Snapshot;
 import robosim.protocol.SonarUnit;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
@@ -379,6 +381,22 @@ class SessionRulesTest {
         assertEquals("empty-room", world.name());
         assertArrayEquals(loopback.codec.encode(sim.snapshot()), loopback.codec.encode(viewer.read()));
         assertEquals(1, rules.viewerCount());
+    }
+
+    @Test
+    void aViewerThatAttachesMidRunGetsEveryDrawingInItsFirstSnapshot() throws IOException {
+        Figure cell = new Figure(Figure.CELLS, "", new double[] {0, 0, 500, 500});
+        sim.step(Map.of("r1", List.of(new Command.Draw("map", List.of(cell)))));
+        sim.step(Map.of("r2", List.of(new Command.Draw("frontier", List.of(cell)))));
+        Peer viewer = loopback.connect(Connection.Kind.VIEWER);
+
+        viewer.send(new ViewerHello("v"));
+        deliver(viewer);
+
+        assertInstanceOf(WorldDescription.class, viewer.read());
+        Snapshot first = assertInstanceOf(Snapshot.class, viewer.read());
+        assertEquals(List.of(new Snapshot.Drawing("r1", "map", List.of(cell)),
+                new Snapshot.Drawing("r2", "frontier", List.of(cell))), first.drawings());
     }
 
     @Test

@@ -158,6 +158,6 @@ public final class RecordingWriter implements SnapshotListener {
                     r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel(), r.camera()));
         }
         return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said(),
-                snapshot.events(), snapshot.objects());
+                snapshot.events(), snapshot.objects(), snapshot.drawings());
     }
 }

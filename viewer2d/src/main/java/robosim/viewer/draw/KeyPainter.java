@@ -160,6 +160,11 @@ final class KeyPainter {
                 path.curveTo(x + w / 3, y - h / 2, x + 2 * w / 3, y + 1.5 * h, x + w, y);
                 g.draw(path);
             }
+            case DRAWING -> {
+                g.setColor(new Color(60, 60, 60, DrawingPainter.FILL_ALPHA));
+                g.fill(new Rectangle2D.Double(x, y, w / 2, h / 2));
+                g.fill(new Rectangle2D.Double(x + w / 2, y + h / 2, w / 2, h / 2));
+            }
             case HEAT -> HeatPainter.drawSample(g, x + w / 2, y + h / 2, h);
             case WALL -> {
                 g.setColor(WorldRenderer.OBSTACLE);

@@ -13,7 +13,7 @@ import robosim.protocol.WorldDescription.RobotInfo;
  */
 final class Legend {
     /** How an entry's sample is drawn. */
-    enum Sample { ROBOT, FRONT, NOT_CONNECTED, STALLED, ODOMETRY, SONAR, LASER, TRAIL, HEAT, WALL, GRID }
+    enum Sample { ROBOT, FRONT, NOT_CONNECTED, STALLED, ODOMETRY, SONAR, LASER, TRAIL, DRAWING, HEAT, WALL, GRID }
 
     /**
      * One entry.
@@ -47,6 +47,9 @@ final class Legend {
         }
         if (options.showTrails()) {
             entries.add(new Entry(Sample.TRAIL, "trail", -1));
+        }
+        if (options.showDrawings()) {
+            entries.add(new Entry(Sample.DRAWING, "translucent: what a robot drew", -1));
         }
         if (!world.heat().isEmpty()) {
             entries.add(new Entry(Sample.HEAT, "heat source (the gold)", -1));

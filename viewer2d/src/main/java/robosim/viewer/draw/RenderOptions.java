@@ -13,9 +13,12 @@ package robosim.viewer.draw;
  * @param showTrails   whether to draw the path each robot has taken, when a {@link Trails} is given
  * @param showCaption  whether to write the step and simulated time in the key under the world
  * @param showGrid     whether to draw a light grid of round-length squares (see {@link ScaleBar#gridSpacing})
+ * @param showDrawings whether to draw the robots' drawings (their known maps, claimed frontiers)
+ *                     carried by the snapshot, see {@link Drawings}
  */
 public record RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser,
-                            boolean showOdometry, boolean showTrails, boolean showCaption, boolean showGrid) {
+                            boolean showOdometry, boolean showTrails, boolean showCaption, boolean showGrid,
+                            boolean showDrawings) {
     /** The widest image drawn, so that a bad option cannot exhaust the heap. */
     public static final int MAX_WIDTH = 8192;
 
@@ -30,6 +33,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @param showTrails   whether to draw the robots' paths
      * @param showCaption  whether to write the step and time
      * @param showGrid     whether to draw the grid
+     * @param showDrawings whether to draw the robots' drawings
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions {
@@ -50,7 +54,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @throws IllegalArgumentException if the width is out of range
      */
     public RenderOptions(int width, boolean showSonar, boolean showNames, boolean showLaser, boolean showOdometry) {
-        this(width, showSonar, showNames, showLaser, showOdometry, false, true, false);
+        this(width, showSonar, showNames, showLaser, showOdometry, false, true, false, false);
     }
 
     /**
@@ -81,7 +85,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with laser scans shown or hidden
      */
     public RenderOptions withLaser(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, show, showOdometry, showTrails, showCaption, showGrid);
+        return new RenderOptions(width, showSonar, showNames, show, showOdometry, showTrails, showCaption, showGrid,
+                showDrawings);
     }
 
     /**
@@ -89,7 +94,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the odometry pose shown or hidden
      */
     public RenderOptions withOdometry(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, show, showTrails, showCaption, showGrid);
+        return new RenderOptions(width, showSonar, showNames, showLaser, show, showTrails, showCaption, showGrid,
+                showDrawings);
     }
 
     /**
@@ -97,7 +103,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with sonar rays shown or hidden
      */
     public RenderOptions withSonar(boolean show) {
-        return new RenderOptions(width, show, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid);
+        return new RenderOptions(width, show, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid,
+                showDrawings);
     }
 
     /**
@@ -105,7 +112,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with names shown or hidden
      */
     public RenderOptions withNames(boolean show) {
-        return new RenderOptions(width, showSonar, show, showLaser, showOdometry, showTrails, showCaption, showGrid);
+        return new RenderOptions(width, showSonar, show, showLaser, showOdometry, showTrails, showCaption, showGrid,
+                showDrawings);
     }
 
     /**
@@ -113,7 +121,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with trails shown or hidden
      */
     public RenderOptions withTrails(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, show, showCaption, showGrid);
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, show, showCaption, showGrid,
+                showDrawings);
     }
 
     /**
@@ -121,7 +130,8 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the caption shown or hidden
      */
     public RenderOptions withCaption(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, show, showGrid);
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, show, showGrid,
+                showDrawings);
     }
 
     /**
@@ -129,7 +139,17 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options with the grid shown or hidden
      */
     public RenderOptions withGrid(boolean show) {
-        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, show);
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, show,
+                showDrawings);
+    }
+
+    /**
+     * @param show whether to draw the robots' drawings
+     * @return these options with the drawings shown or hidden
+     */
+    public RenderOptions withDrawings(boolean show) {
+        return new RenderOptions(width, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid,
+                show);
     }
 
     /**
@@ -137,6 +157,7 @@ public record RenderOptions(int width, boolean showSonar, boolean showNames, boo
      * @return these options at that width
      */
     public RenderOptions withWidth(int newWidth) {
-        return new RenderOptions(newWidth, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid);
+        return new RenderOptions(newWidth, showSonar, showNames, showLaser, showOdometry, showTrails, showCaption, showGrid,
+                showDrawings);
     }
 }

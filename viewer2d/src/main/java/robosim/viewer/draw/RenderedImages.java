@@ -8,7 +8,8 @@ import robosim.protocol.recording.SnapshotListener;
 /**
  * Follows a run and hands images of it to a {@link ImageSink}: the snapshots whose step is a
  * multiple of {@code every}, and always the last one, so that the final state is kept. A reloaded
- * world draws the old world's last snapshot before it replaces the world. Used alike by the live
+ * world draws the old world's last snapshot before it replaces the world. The robots' drawings are
+ * folded forward from snapshot to snapshot, so each image shows them all. Used alike by the live
  * viewer and the replay, so their images agree.
  */
 public final class RenderedImages implements SnapshotListener {
@@ -16,6 +17,7 @@ public final class RenderedImages implements SnapshotListener {
     private final ImageSink sink;
     private final int every;
     private final Trails trails;
+    private final Drawings drawings = new Drawings();
     private WorldDescription world;
     private Snapshot last;
     private boolean lastWritten = true;
@@ -75,6 +77,7 @@ public final class RenderedImages implements SnapshotListener {
         if (trails != null) {
             trails.clear();
         }
+        drawings.clear();
         world = newWorld;
     }
 
@@ -83,13 +86,13 @@ public final class RenderedImages implements SnapshotListener {
         skip(snapshot);
         lastWritten = false;
         if (snapshot.step() % every == 0) {
-            write(snapshot);
+            write(last);
         }
     }
 
     /**
      * Takes a snapshot without drawing it (one before a replay's first step): its robots still
-     * extend their trails.
+     * extend their trails, and its drawings are kept.
      *
      * @param snapshot the snapshot
      */
@@ -97,7 +100,8 @@ public final class RenderedImages implements SnapshotListener {
         if (trails != null) {
             trails.add(snapshot);
         }
-        last = snapshot;
+        drawings.add(snapshot);
+        last = drawings.over(snapshot);
         lastWritten = true;
     }
 

@@ -22,6 +22,7 @@ import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
  * Draws one snapshot of the world: background, optional grid, heat sources, obstacles, border,
+ * optionally the robots' drawings the snapshot carries (see {@link Drawings}), optional trails,
  * the movable objects (pucks) where the snapshot puts them,
  * robots, optional laser scans, sonar rays, odometry ghosts and names; and under the world a key
  * with the step and the simulated time, a scale bar and a legend. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
@@ -132,6 +133,9 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
             g.setRenderingHint(RenderingHints.KEY_RENDERING, RenderingHints.VALUE_RENDER_QUALITY);
             drawWorld(g, view, world, options.showGrid());
+            if (options.showDrawings()) {
+                DrawingPainter.draw(g, view, snapshot, name -> colourOf(world, snapshot, name));
+            }
             if (trails != null && options.showTrails()) {
                 TrailPainter.draw(g, trails, name -> colourOf(world, snapshot, name), (x, y, out) -> {
                     out[0] = view.px(x);

@@ -15,8 +15,8 @@ import robosim.viewer.draw.RenderOptions;
 import robosim.viewer.draw.Trails;
 
 /**
- * The toolbar of display choices: sonar rays, laser scans, names and trails shown or hidden, the
- * 2D or the 3D view, the robot to follow, and a button that fits the whole world back in view.
+ * The toolbar of display choices: sonar rays, laser scans, names, trails, the grid and the robots'
+ * drawings (2D only) shown or hidden, the 2D or the 3D view, the robot to follow, and a button that fits the whole world back in view.
  */
 public final class DisplayControls extends JPanel {
     private static final long serialVersionUID = 1L;
@@ -47,6 +47,7 @@ public final class DisplayControls extends JPanel {
         toggle("Names", r.showNames(), (o, on) -> o.withNames(on));
         toggle("Trails", r.showTrails(), (o, on) -> o.withTrails(on));
         toggle("Grid", r.showGrid(), (o, on) -> o.withGrid(on));
+        toggle("Drawings", r.showDrawings(), (o, on) -> o.withDrawings(on));
         JCheckBox threeD = new JCheckBox("3D", state.threeD());
         threeD.addActionListener(e -> {
             state.setThreeD(threeD.isSelected());

@@ -8,6 +8,7 @@ import java.util.List;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
+import robosim.viewer.draw.Drawings;
 import robosim.viewer.draw.Trails;
 
 /**
@@ -18,6 +19,7 @@ import robosim.viewer.draw.Trails;
 public final class ViewModel {
     private final List<Runnable> observers = new ArrayList<>();
     private final Trails trails = new Trails();
+    private final Drawings drawings = new Drawings();
     private WorldDescription world;
     private Snapshot snapshot;
     private final Deque<String> messages = new ArrayDeque<>();
@@ -41,7 +43,7 @@ public final class ViewModel {
     }
 
     /**
-     * A new world: the snapshot and the trails are forgotten.
+     * A new world: the snapshot, the trails and the drawings are forgotten.
      *
      * @param newWorld the world
      */
@@ -49,6 +51,7 @@ public final class ViewModel {
         world = newWorld;
         snapshot = null;
         trails.clear();
+        drawings.clear();
         messages.clear();
         changed();
     }
@@ -64,26 +67,29 @@ public final class ViewModel {
         }
         for (Snapshot f : snapshots) {
             trails.add(f);
+            drawings.add(f);
             keepMessages(f);
         }
-        snapshot = snapshots.get(snapshots.size() - 1);
+        snapshot = drawings.over(snapshots.get(snapshots.size() - 1));
         changed();
     }
 
     /**
-     * Shows a snapshot out of order, as a replay does when it jumps: the trails are rebuilt from the
-     * snapshots that lead up to it.
+     * Shows a snapshot out of order, as a replay does when it jumps: the trails and the drawings are
+     * rebuilt from the snapshots that lead up to it.
      *
      * @param history the snapshots from the start up to and including the one to show
      */
     public void jump(List<Snapshot> history) {
         trails.clear();
+        drawings.clear();
         messages.clear();
         for (Snapshot f : history) {
             trails.add(f);
+            drawings.add(f);
             keepMessages(f);
         }
-        snapshot = history.isEmpty() ? null : history.get(history.size() - 1);
+        snapshot = history.isEmpty() ? null : drawings.over(history.get(history.size() - 1));
         changed();
     }
 
@@ -173,7 +179,7 @@ public final class ViewModel {
         return world;
     }
 
-    /** @return the snapshot shown, or {@code null} */
+    /** @return the snapshot shown, carrying every robot's current drawings, or {@code null} */
     public Snapshot snapshot() {
         return snapshot;
     }
