@@ -87,7 +87,7 @@ public final class GoldFinderBench {
         try (EnvironmentServer server = new EnvironmentServer(sim,
                 ServerOptions.loopback().withMaxSteps(maxSteps))) {
             server.bind();
-            List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), world.robots().size(), 1500, seed);
+            List<Thread> team = GoldFinder.start("127.0.0.1", server.robotPort(), world.robots().size());
             RunReport report = server.run();
             for (Thread t : team) {
                 t.join(10_000);

@@ -48,7 +48,7 @@ class GoldFinderTest {
         try (LocalEnvironment env = new LocalEnvironment(world, seed,
                 ServerOptions.loopback().withMaxSteps(STEP_LIMIT).withWaitViewers(1))) {
             SnapshotCollector viewer = new SnapshotCollector(env.viewerPort());
-            List<Thread> team = GoldFinder.start("127.0.0.1", env.robotPort(), ROBOTS, 1500, seed);
+            List<Thread> team = GoldFinder.start("127.0.0.1", env.robotPort(), ROBOTS);
             RunReport r = env.await(180);
             for (Thread t : team) {
                 t.join(10_000);

@@ -61,7 +61,6 @@ final class DemoCommand implements Callable<Integer> {
         gold.out = oldOut != null ? oldOut : out;
         gold.maxSteps = oldMaxSteps != null ? oldMaxSteps : maxSteps;
         gold.every = every;
-        gold.cellSize = 1500;
         gold.recording = recording;
         gold.gif = gif;
         // the frames show each robot's known map and claimed frontier: the division of work

@@ -29,6 +29,7 @@ import robosim.protocol.RunSecret;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
+import robosim.examples.goldfinder.MazeWorldWriter;
 import robosim.viewer.net.ViewerSummary;
 
 /**
@@ -75,9 +76,9 @@ final class GoldfinderCommand implements Callable<Integer> {
     @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
-    @Option(names = "--cell-size", defaultValue = "1500", paramLabel = "MM", description = OptionTexts.CELL_SIZE
-            + "; the maze's own (see robosim maze); default ${DEFAULT-VALUE}")
-    int cellSize;
+    @Option(names = "--cell-size", hidden = true, paramLabel = "MM",
+            description = "no longer needed: the robots read the world's cellSize property")
+    Integer cellSize;
 
     @Option(names = "--no-frames", description = "write no PNG frames")
     boolean noFrames;
@@ -120,6 +121,17 @@ final class GoldfinderCommand implements Callable<Integer> {
             if (full.gold() == null) {
                 spec.commandLine().getErr().println("robosim goldfinder: world " + world + " has no <gold>");
                 return 1;
+            }
+            if (!full.properties().containsKey(MazeWorldWriter.CELL_SIZE_PROPERTY)) {
+                spec.commandLine().getErr().println("robosim goldfinder: world " + world + " has no <property name=\""
+                        + MazeWorldWriter.CELL_SIZE_PROPERTY + "\" value=\"MM\"/>: the Gold robots read the maze's cell size"
+                        + " from it (robosim maze writes it)");
+                return 1;
+            }
+            if (cellSize != null) {
+                spec.commandLine().getErr().println("robosim goldfinder: --cell-size is no longer needed and is ignored:"
+                        + " the robots read the world's " + MazeWorldWriter.CELL_SIZE_PROPERTY + " property ("
+                        + full.properties().get(MazeWorldWriter.CELL_SIZE_PROPERTY) + ")");
             }
             w = full.withFirstRobots(robots);
         } catch (WorldFileException | IllegalArgumentException e) {
@@ -171,11 +183,10 @@ final class GoldfinderCommand implements Callable<Integer> {
                 if (separateJvms) {
                     for (int k = 1; k <= robots; k++) {
                         processes.add(RobotProcesses.start("robosim.examples.goldfinder.Gold", "r" + k,
-                                server.robotPort(), secret, out.resolve("r" + k + ".log"),
-                                Double.toString(cellSize), Long.toString(seed)));
+                                server.robotPort(), secret, out.resolve("r" + k + ".log")));
                     }
                 } else {
-                    GoldFinder.start("127.0.0.1", server.robotPort(), robots, cellSize, seed);
+                    GoldFinder.start("127.0.0.1", server.robotPort(), robots);
                 }
                 RunReport report;
                 try (RunProgressLine progress = RunProgressLine.follow(server, spec.commandLine().getErr(), quiet.quiet, true)) {

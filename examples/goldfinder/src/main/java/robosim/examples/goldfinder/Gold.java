@@ -12,6 +12,7 @@ import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 import robosim.aria.ArUtil;
 import robosim.hw.RobotMessage;
+import robosim.protocol.Figure;
 
 /**
  * A Pioneer that searches a grid maze for gold by its sensors alone, with its team.
@@ -42,17 +43,20 @@ public class Gold extends ArRobot {
     private static final int CELLS_PER_REPORT = 16;
     /** Steps a robot waits for a cell before it tries another way out. */
     private static final int PATIENCE = 60;
+    /** The fewest steps between two drawings. */
+    static final int DRAW_EVERY = 10;
     /** The most cells a robot drives in one move. */
     static final int LONGEST_RUN = 8;
 
     private enum Phase { DECIDE, ANNOUNCE, TURN, MOVE, BACK, DONE }
 
-    private final double cellSize;
     private final int rank;
-    private final SplittableRandom random;
+    /** The maze's cell size, mm: the world's, known once connected. */
+    private double cellSize;
+    private SplittableRandom random;
     private final MazeKnowledge map = new MazeKnowledge();
     private final ArSick laser = new ArSick();
-    private final ArHeatSensor heat;
+    private ArHeatSensor heat;
     /** The cells this robot sensed itself, in order: what its reports repeat. */
     private final List<int[]> ownCells = new ArrayList<>();
     private int repeatFrom;
@@ -70,23 +74,27 @@ public class Gold extends ArRobot {
     private int waited;
     private int pause;
     private long lastTold = Long.MIN_VALUE / 2;
+    /** When it last drew, what it drew: its own cells' count, its target and the cell it drew it from. */
+    private long drawnAt = Long.MIN_VALUE / 2;
+    private int drawnCells;
+    private long drawnTarget = -1;
+    private long drawnFrom = -1;
     private double startX;
     private double startY;
     private String finder;
 
     /**
-     * @param name     the robot's name, {@code r<number>}: lower numbers go first where robots meet
-     * @param host     the Environment's host
-     * @param port     its robot port
-     * @param cellSize the maze's cell size, mm
-     * @param seed     the seed of the robot's tie-breaks
+     * A Gold robot as the original's robot applications make one: the maze's cell size comes from
+     * the world (its {@value MazeWorldWriter#CELL_SIZE_PROPERTY} property, in the Environment's
+     * welcome) and the seed of its tie-breaks from the run's seed, once it has connected.
+     *
+     * @param name the robot's name, {@code r<number>}: lower numbers go first where robots meet
+     * @param host the Environment's host
+     * @param port its robot port
      */
-    public Gold(String name, String host, int port, double cellSize, long seed) {
+    public Gold(String name, String host, int port) {
         super(name, host, port, "p3dx");
-        this.cellSize = cellSize;
         this.rank = rankOf(name);
-        this.random = new SplittableRandom(seed * 31 + rank);
-        this.heat = new ArHeatSensor(360, 3 * cellSize);
         addRangeDevice(laser);
     }
 
@@ -103,28 +111,65 @@ public class Gold extends ArRobot {
     }
 
     /**
-     * Runs one Gold robot, as the original's robot applications.
+     * Runs one Gold robot, the original's way: {@code java robosim.examples.goldfinder.Gold
+     * robotName host port}.
      *
-     * @param args NAME HOST PORT CELLSIZE [SEED]
+     * @param args NAME HOST PORT
      */
     public static void main(String[] args) {
-        if (args.length < 4) {
-            throw new IllegalArgumentException("usage: Gold NAME HOST PORT CELLSIZE [SEED]");
+        run(args, "Gold");
+    }
+
+    /**
+     * Connects one Gold robot named by the command line, searches, disconnects.
+     *
+     * @param args    NAME HOST PORT
+     * @param program the program's name, for the usage line
+     */
+    static void run(String[] args, String program) {
+        if (args.length != 3) {
+            System.err.println("usage: " + program + " robotName host port");
+            System.exit(2);
         }
-        Gold robot = new Gold(args[0], args[1], Integer.parseInt(args[2]), Double.parseDouble(args[3]),
-                args.length > 4 ? Long.parseLong(args[4]) : 1);
+        int port;
+        try {
+            port = Integer.parseInt(args[2]);
+        } catch (NumberFormatException e) {
+            System.err.println(program + ": '" + args[2] + "' was supplied for port: it must be a whole number, 1 to 65535");
+            System.exit(2);
+            return;
+        }
+        Gold robot = new Gold(args[0], args[1], port);
         if (!robot.blockingConnect()) {
-            throw new IllegalStateException("robot " + args[0] + " could not connect: " + robot.getConnectionError());
+            System.err.println(program + ": robot " + args[0] + " could not connect: " + robot.getConnectionError());
+            System.exit(1);
         }
-        robot.search();
+        try {
+            robot.search();
+        } catch (IllegalStateException e) {
+            System.err.println(program + ": " + e.getMessage());
+            robot.disconnect();
+            System.exit(1);
+        }
         robot.disconnect();
     }
 
     /**
      * Enables the motors (a Pioneer's are disabled when its program connects, as in ARIA), then
      * searches until the gold is found (by anyone) or the run ends; then stands still until the end.
+     *
+     * @throws IllegalStateException if the world gives no cell size, or one under 1000 mm
      */
     public void search() {
+        cellSize = getWorldNumber(MazeWorldWriter.CELL_SIZE_PROPERTY).orElseThrow(() -> new IllegalStateException(
+                "robot " + getName() + ": world gives no " + MazeWorldWriter.CELL_SIZE_PROPERTY
+                        + " property; GoldFinder needs the maze's cell size, mm (see robosim maze)"));
+        if (!(cellSize >= 1000)) {
+            throw new IllegalStateException("robot " + getName() + ": the world's " + MazeWorldWriter.CELL_SIZE_PROPERTY
+                    + " is " + cellSize + ": GoldFinder's mazes have cells of at least 1000 mm");
+        }
+        random = new SplittableRandom(getRunSeed() * 31 + rank);
+        heat = new ArHeatSensor(360, 3 * cellSize);
         enableMotors();
         laser.blockingConnect();
         heat.attach(this);
@@ -173,6 +218,75 @@ public class Gold extends ArRobot {
         }
         if (getStep() - lastTold >= HEARTBEAT) {
             tellWhereIAm();
+        }
+        drawWhatItKnows();
+    }
+
+    /**
+     * Draws, for viewers that show robots' drawings, the cells this robot has sensed itself (its
+     * share of the work), every cell it knows of as a dot, and the frontier it has claimed or
+     * follows with its way there. A layer is sent again only when it changed, at most every
+     * {@value #DRAW_EVERY} steps.
+     */
+    private void drawWhatItKnows() {
+        if (getStep() - drawnAt < DRAW_EVERY) {
+            return;
+        }
+        if (ownCells.size() != drawnCells) {
+            drawnCells = ownCells.size();
+            double inset = cellSize * 0.12;
+            double[] own = new double[4 * ownCells.size()];
+            for (int i = 0; i < ownCells.size(); i++) {
+                double x0 = ownCells.get(i)[0] * cellSize;
+                double y0 = ownCells.get(i)[1] * cellSize;
+                own[4 * i] = x0 + inset;
+                own[4 * i + 1] = y0 + inset;
+                own[4 * i + 2] = x0 + cellSize - inset;
+                own[4 * i + 3] = y0 + cellSize - inset;
+            }
+            // each robot's dots sit a little apart, so every robot's known map shows
+            double dx = cellSize * (0.1 * (rank % 4) - 0.15);
+            double dy = cellSize * (0.1 * (rank / 4 % 4) - 0.15);
+            double[] known = new double[2 * map.sensedCount()];
+            int i = 0;
+            for (long k : map.sensedCells()) {
+                known[i++] = (MazeKnowledge.keyX(k) + 0.5) * cellSize + dx;
+                known[i++] = (MazeKnowledge.keyY(k) + 0.5) * cellSize + dy;
+            }
+            if (own.length > 0) {
+                draw("explored", List.of(new Figure(Figure.CELLS, "", own)));
+            }
+            if (known.length > 0) {
+                draw("known", List.of(new Figure(Figure.DOTS, "", known)));
+            }
+            drawnAt = getStep();
+        }
+        long target = plan.target();
+        if (target != drawnTarget || (target >= 0 && MazeKnowledge.key(cx, cy) != drawnFrom)) {
+            drawnTarget = target;
+            drawnFrom = MazeKnowledge.key(cx, cy);
+            if (target < 0) {
+                clearDrawing("claim");
+            } else {
+                List<Long> way = map.path(cx, cy, plan.x(), plan.y(), new int[] {0, 1, 2, 3}, Set.of());
+                double[] line = new double[2 * (way.size() + 1)];
+                line[0] = (cx + 0.5) * cellSize;
+                line[1] = (cy + 0.5) * cellSize;
+                for (int k = 0; k < way.size(); k++) {
+                    line[2 * k + 2] = (MazeKnowledge.keyX(way.get(k)) + 0.5) * cellSize;
+                    line[2 * k + 3] = (MazeKnowledge.keyY(way.get(k)) + 0.5) * cellSize;
+                }
+                double x0 = plan.x() * cellSize;
+                double y0 = plan.y() * cellSize;
+                double in = plan.claim() ? cellSize * 0.3 : cellSize * 0.4;
+                List<Figure> figures = new ArrayList<>();
+                figures.add(new Figure(Figure.CELLS, "", new double[] {x0 + in, y0 + in, x0 + cellSize - in, y0 + cellSize - in}));
+                if (way.size() > 0) {
+                    figures.add(new Figure(Figure.LINE, "", line));
+                }
+                draw("claim", figures);
+            }
+            drawnAt = getStep();
         }
     }
 

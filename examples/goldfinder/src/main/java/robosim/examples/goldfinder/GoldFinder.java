@@ -5,8 +5,10 @@ import java.util.List;
 import robosim.hw.RobotThreads;
 
 /**
- * Starts a team of {@link Gold} robots as threads of this JVM. (The {@code bin/robosim goldfinder}
- * command can also start each in a JVM of its own, running {@link Gold#main}.)
+ * GoldFinder's robot application, run as the original's: {@code java
+ * robosim.examples.goldfinder.GoldFinder robotName host port} connects one {@link Gold} robot;
+ * start one per robot of the world, each in its own terminal (or JVM). {@link #start} instead
+ * starts a whole team as threads of this JVM, as {@code bin/robosim goldfinder} does.
  */
 public final class GoldFinder {
     private GoldFinder() {
@@ -14,23 +16,26 @@ public final class GoldFinder {
 
     /**
      * Starts robots {@code r1..rN} as threads (virtual ones where the JDK allows; see
-     * {@link RobotThreads}); each searches until the run ends.
+     * {@link RobotThreads}); each searches until the run ends. The cell size and the seed of their
+     * tie-breaks come from the world and the run, through the Environment's welcome.
      *
-     * @param host     the Environment's host
-     * @param port     its robot port
-     * @param robots   how many
-     * @param cellSize the maze's cell size, mm
-     * @param seed     the team's seed
+     * @param host   the Environment's host
+     * @param port   its robot port
+     * @param robots how many
      * @return the threads, started
      */
-    public static List<Thread> start(String host, int port, int robots, double cellSize, long seed) {
+    public static List<Thread> start(String host, int port, int robots) {
         List<Thread> threads = new ArrayList<>();
         for (int k = 1; k <= robots; k++) {
             String name = "r" + k;
             Thread t = RobotThreads.unstarted("gold-" + name, () -> {
-                Gold g = new Gold(name, host, port, cellSize, seed);
+                Gold g = new Gold(name, host, port);
                 if (g.blockingConnect()) {
-                    g.search();
+                    try {
+                        g.search();
+                    } catch (IllegalStateException e) {
+                        System.err.println("GoldFinder: " + e.getMessage());
+                    }
                     g.disconnect();
                 }
             });
@@ -41,18 +46,11 @@ public final class GoldFinder {
     }
 
     /**
-     * Runs a team against a running Environment.
+     * Runs one Gold robot against a running Environment, the original's way.
      *
-     * @param args HOST PORT ROBOTS CELLSIZE [SEED]
-     * @throws InterruptedException if interrupted
+     * @param args robotName host port
      */
-    public static void main(String[] args) throws InterruptedException {
-        if (args.length < 4) {
-            throw new IllegalArgumentException("usage: GoldFinder HOST PORT ROBOTS CELLSIZE [SEED]");
-        }
-        for (Thread t : start(args[0], Integer.parseInt(args[1]), Integer.parseInt(args[2]),
-                Double.parseDouble(args[3]), args.length > 4 ? Long.parseLong(args[4]) : 1)) {
-            t.join();
-        }
+    public static void main(String[] args) {
+        Gold.run(args, "GoldFinder");
     }
 }
