@@ -3,6 +3,7 @@ package robosim.it;
 import robosim.cli.Main;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -14,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Polygon;
+import robosim.comms.CommsSettings;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
@@ -40,6 +42,11 @@ class GoldFinderTest {
     record Run(RunReport report, WorldDescription world, List<Snapshot> snapshots) { }
 
     Run run(long seed) throws Exception {
+        return run(seed, null);
+    }
+
+    /** One run, with messages travelling as {@code comms} says (null: the world's own way). */
+    Run run(long seed, CommsSettings comms) throws Exception {
         Path file = dir.resolve("maze-" + seed + ".xml");
         int exit = Main.commandLine().execute("maze", "--cells", "8", "8", "--cell-size", "1500",
                 "--seed", Long.toString(seed), "--robots", "8", "--out", file.toString());
@@ -47,6 +54,9 @@ class GoldFinderTest {
         World world = WorldReader.read(file).withFirstRobots(ROBOTS);
         try (LocalEnvironment env = new LocalEnvironment(world, seed,
                 ServerOptions.loopback().withMaxSteps(STEP_LIMIT).withWaitViewers(1))) {
+            if (comms != null) {
+                env.sim.setCommsSettings(comms);
+            }
             SnapshotCollector viewer = new SnapshotCollector(env.viewerPort());
             List<Thread> team = GoldFinder.start("127.0.0.1", env.robotPort(), ROBOTS);
             RunReport r = env.await(180);
@@ -81,6 +91,29 @@ class GoldFinderTest {
         assertEquals(a.report().find(), b.report().find());
         assertEquals(a.report().robots(), b.report().robots());
         assertEquals(a.snapshots().size(), b.snapshots().size());
+    }
+
+    @Test
+    void aSeedGivesTheSameSearchEveryTimeWithMessagesLostAndLate() throws Exception {
+        CommsSettings lossy = new CommsSettings(0, false, 3, 0.25, 65536);
+        Run a = run(4, lossy);
+        Run b = run(4, lossy);
+        assertNotNull(a.report().find(), "found with a quarter of the messages lost and the rest 3 steps late");
+        assertEquals(a.report().find(), b.report().find());
+        assertEquals(a.report().robots(), b.report().robots());
+        assertEquals(poses(a), poses(b), "the same poses, step for step");
+        assertNotEquals(poses(a), poses(run(4)), "losses change the run: the test compares runs that depend on them");
+    }
+
+    /** Every robot's true pose at every step, as text. */
+    static List<String> poses(Run run) {
+        List<String> out = new ArrayList<>();
+        for (Snapshot s : run.snapshots()) {
+            for (Snapshot.RobotView v : s.robots()) {
+                out.add(s.step() + " " + v.name() + " " + v.x() + " " + v.y() + " " + v.th());
+            }
+        }
+        return out;
     }
 
     /** Every step, from the true poses: no body inside a wall, no two bodies overlapping. */

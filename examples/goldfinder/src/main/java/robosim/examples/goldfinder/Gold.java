@@ -291,6 +291,7 @@ public class Gold extends ArRobot {
     }
 
     private void listen() {
+        forgetSilentMates();
         RobotMessage m;
         while ((m = poll()) != null) {
             if (!m.holds(MazeMessage.class)) {
@@ -316,6 +317,22 @@ public class Gold extends ArRobot {
             }
             if (mm.gold() && finder == null) {
                 finder = mm.robot();
+            }
+        }
+    }
+
+    /**
+     * A teammate not heard for {@link TeamPlan#CLAIM_STEPS} steps (its messages are lost, or it has
+     * failed) is taken to stand where it last said it was: its move, its claim and its wait lapse,
+     * so that no cell or frontier stays reserved for a robot that may never come.
+     */
+    private void forgetSilentMates() {
+        for (String name : map.mates()) {
+            MazeKnowledge.Mate m = map.mate(name);
+            if (getStep() - m.heard() > TeamPlan.CLAIM_STEPS && (m.moving() || m.claims())) {
+                map.mate(name, new MazeKnowledge.Mate(m.x(), m.y(), m.heard()));
+                wants.remove(name);
+                targets.remove(name);
             }
         }
     }
