@@ -44,8 +44,12 @@ final class WallSensing {
         return open;
     }
 
-    /** The farthest cell ahead that {@link #cellsAhead} reads. */
-    static final int MOST_AHEAD = 3;
+    /**
+     * The farthest cell ahead that {@link #cellsAhead} reads: two cells, so that every cell a Gold
+     * robot reads from afar lies within its heat sensor's reach (three cells), and a cell holding
+     * the gold is never known without the gold being sensed.
+     */
+    static final int MOST_AHEAD = 2;
 
     /**
      * Reads the cells straight ahead of a robot standing at a cell's centre and facing along a grid

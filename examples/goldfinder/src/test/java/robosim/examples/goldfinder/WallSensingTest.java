@@ -1,5 +1,6 @@
 package robosim.examples.goldfinder;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Arrays;
@@ -178,5 +179,54 @@ class WallSensingTest {
         StandingPioneer robot = new StandingPioneer(p3dx(List.of()));
         robot.reads(0, scan(2250), new int[0]);
         assertEquals(E | N | S, WallSensing.openSides(robot, robot.laser, 1500));
+    }
+
+    // ---- the cells ahead ----
+
+    private static int[] cellsAhead(double th, int[] laser) {
+        StandingPioneer robot = new StandingPioneer(p3dx(P3DX_SONARS));
+        robot.reads(th, laser, sonar(750, 495, 495));
+        return WallSensing.cellsAhead(robot, robot.laser, 1500);
+    }
+
+    /**
+     * A 1° scan facing along a 1500 mm corridor. The side walls of the cell j ahead face the
+     * robot's centre line 700 mm away; the beams aimed at their middles leave at ±25° (j = 1) and
+     * ±13° (j = 2) and meet a wall 1655 and 3080 mm from the centre (the laser sits 18 mm ahead);
+     * {@code ahead} is the straight beam's echo.
+     */
+    private static int[] corridor(int ahead, int... indexRange) {
+        int[] s = scan(5000, 90, ahead, 115, 1639, 65, 1639, 103, 3062, 77, 3062);
+        for (int k = 0; k < indexRange.length; k += 2) {
+            s[indexRange[k]] = indexRange[k + 1];
+        }
+        return s;
+    }
+
+    @Test
+    void aCorridorStraightAheadIsReadTwoCellsDeep() {
+        // the straight beam runs on past the second cell: both cells open ahead and behind, closed at the sides
+        assertArrayEquals(new int[] {E | W, E | W}, cellsAhead(0, corridor(7000)));
+    }
+
+    @Test
+    void aSideOpeningAndAnEndWallAreRead() {
+        // the first cell opens north (its beam runs on into the next row); the second ends the corridor
+        assertArrayEquals(new int[] {E | W | N, W}, cellsAhead(0, corridor(3732, 115, 2500)));
+        assertArrayEquals(new int[] {W | S}, cellsAhead(0, corridor(2232, 65, 2500)),
+                "the first cell ends the corridor, so nothing beyond it is read");
+    }
+
+    @Test
+    void facingNorthTheCellsAheadAreReadInTheMazesDirections() {
+        // facing north, left is west and right is east
+        assertArrayEquals(new int[] {N | S | W, N | S}, cellsAhead(90, corridor(7000, 115, 2500)));
+    }
+
+    @Test
+    void somethingNearerThanAWallHidesWhatLiesBeyond() {
+        assertArrayEquals(new int[0], cellsAhead(0, corridor(900)), "a teammate in the next cell");
+        assertArrayEquals(new int[] {E | W}, cellsAhead(0, corridor(7000, 103, 1500)),
+                "a teammate hides the second cell's north wall");
     }
 }
