@@ -43,6 +43,12 @@ public class Gold extends ArRobot {
     private static final int CELLS_PER_REPORT = 16;
     /** Steps a robot waits for a cell before it tries another way out. */
     private static final int PATIENCE = 60;
+    /** The longest a robot tries to turn, steps (a quarter turn takes about 20). */
+    private static final int TURN_STEPS = 80;
+    /** The room a robot leaves before an echo ahead, mm. */
+    private static final double CLEARANCE = 100;
+    /** The longest a robot tries to back off an obstacle, steps. */
+    private static final int BACK_STEPS = 60;
     /** The fewest steps between two drawings. */
     static final int DRAW_EVERY = 10;
     /** The most cells a robot drives in one move. */
@@ -79,8 +85,9 @@ public class Gold extends ArRobot {
     private int drawnCells;
     private long drawnTarget = -1;
     private long drawnFrom = -1;
-    private double startX;
-    private double startY;
+    /** The step the robot began to back off an obstacle, and to turn. */
+    private long backSince;
+    private long turnSince;
     private String finder;
 
     /**
@@ -610,6 +617,7 @@ public class Gold extends ArRobot {
             return;
         }
         setHeading(dir * 90);
+        turnSince = getStep();
         phase = Phase.TURN;
     }
 
@@ -625,6 +633,14 @@ public class Gold extends ArRobot {
     }
 
     private void turn() {
+        if (getStep() - turnSince > TURN_STEPS) {
+            // something keeps the robot from turning (a teammate pressed against it): think again
+            stop();
+            phase = Phase.DECIDE;
+            pause = 5 + random.nextInt(10);
+            tell(NONE, NONE, false);
+            return;
+        }
         if (isHeadingDone(0.5) && Math.abs(getRotVel()) < 1) {
             if (!lookedAhead) {
                 lookedAhead = true;
@@ -633,20 +649,34 @@ public class Gold extends ArRobot {
                     return;
                 }
             }
-            startX = getX();
-            startY = getY();
-            move(runCells * cellSize);
+            // the laser has the last word: a teammate the messages have not told of may stand ahead
+            runCells = Math.min(runCells, clearCellsAhead());
+            if (runCells == 0) {
+                phase = Phase.DECIDE;
+                pause = 5 + random.nextInt(10);
+                tell(NONE, NONE, false);
+                return;
+            }
+            // to the far cell's centre, measured from where the robot is: a start off the centre is made good
+            move(along(cx + runCells * Maze.DIRECTIONS[dir][0], cy + runCells * Maze.DIRECTIONS[dir][1]));
             phase = Phase.MOVE;
         }
     }
 
     private void drive() {
         if (isStalled()) {
-            // something unexpected is in the way: go back to the centre of the cell it left
-            double gone = Math.hypot(getX() - startX, getY() - startY);
+            // something unexpected is in the way: back to the centre of the cell the robot is in
             stop();
-            move(-gone);
+            int dx = Maze.DIRECTIONS[dir][0];
+            int dy = Maze.DIRECTIONS[dir][1];
+            int crossed = (int) Math.round(along(cx, cy) / -cellSize);
+            crossed = Math.max(0, Math.min(runCells - 1, crossed));
+            cx += crossed * dx;
+            cy += crossed * dy;
+            move(along(cx, cy));
+            backSince = getStep();
             phase = Phase.BACK;
+            tell(NONE, NONE, false);
             return;
         }
         if (isMoveDone(1) && isStopped()) {
@@ -660,8 +690,39 @@ public class Gold extends ArRobot {
         }
     }
 
+    /**
+     * How many cells ahead the robot can drive into, by its laser's beam straight ahead: the echo
+     * must lie beyond the far cell's centre by the robot's front and a margin.
+     */
+    private int clearCellsAhead() {
+        int[] scan = laser.getRawScan();
+        if (scan.length == 0) {
+            return runCells;
+        }
+        double reach = scan[scan.length / 2] + getParameters().laserX();
+        double front = getParameters().robotLengthFront() + CLEARANCE;
+        int cells = 0;
+        while (cells < runCells && along(cx + (cells + 1) * Maze.DIRECTIONS[dir][0], cy + (cells + 1) * Maze.DIRECTIONS[dir][1])
+                + front <= reach) {
+            cells++;
+        }
+        return cells;
+    }
+
+    /**
+     * The signed distance, along the robot's direction of travel, from where it is to a cell's
+     * centre: negative when the centre lies behind.
+     */
+    private double along(int x, int y) {
+        return ((x + 0.5) * cellSize - getX()) * Maze.DIRECTIONS[dir][0]
+                + ((y + 0.5) * cellSize - getY()) * Maze.DIRECTIONS[dir][1];
+    }
+
     private void back() {
-        if (isMoveDone(1) && isStopped()) {
+        boolean blocked = isStalled() || getStep() - backSince > BACK_STEPS;
+        if ((isMoveDone(1) && isStopped()) || blocked) {
+            // blocked again (a teammate came up behind): stop where it is; the next move makes good the offset
+            stop();
             phase = Phase.DECIDE;
             pause = 5 + random.nextInt(10);
             tell(NONE, NONE, false);
