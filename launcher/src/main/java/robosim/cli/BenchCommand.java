@@ -100,11 +100,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "cells across and up of --goldfinder's mazes; default ${DEFAULT-VALUE}")
     int mazeSize;
 
-    @Option(names = "--loss", defaultValue = "0", paramLabel = "P",
+    @Option(names = "--message-loss", defaultValue = "0", paramLabel = "P",
             description = "for --goldfinder: the chance, 0 to 1, that a message is lost on its way; default ${DEFAULT-VALUE}")
     double loss;
 
-    @Option(names = "--latency", defaultValue = "1", paramLabel = "STEPS",
+    @Option(names = "--message-latency", defaultValue = "1", paramLabel = "STEPS",
             description = "for --goldfinder: steps a message takes, at least 1; default ${DEFAULT-VALUE}")
     int latency;
 
@@ -222,13 +222,13 @@ final class BenchCommand implements Callable<Integer> {
         if (goldfinder) {
             try {
                 ServerOptions.requireAtLeast("--maze-size", mazeSize, 2);
-                ServerOptions.requireAtLeast("--latency", latency, 1);
+                ServerOptions.requireAtLeast("--message-latency", latency, 1);
                 ServerOptions.requireAtLeast("--step-limit", stepLimit, 1);
                 for (int t : teams) {
                     ServerOptions.requireAtLeast("--teams", t, 1);
                 }
                 if (!(loss >= 0 && loss <= 1)) {
-                    throw new IllegalArgumentException(loss + " was supplied for --loss: it must be from 0 to 1");
+                    throw new IllegalArgumentException(loss + " was supplied for --message-loss: it must be from 0 to 1");
                 }
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());

@@ -76,9 +76,6 @@ final class GoldfinderCommand implements Callable<Integer> {
     @Option(names = "--every", defaultValue = OptionTexts.EVERY_DEFAULT, paramLabel = "K", description = OptionTexts.EVERY)
     int every;
 
-    @Option(names = "--cell-size", hidden = true, paramLabel = "MM",
-            description = "no longer needed: the robots read the world's cellSize property")
-    Integer cellSize;
 
     @Option(names = "--no-frames", description = "write no PNG frames")
     boolean noFrames;
@@ -127,11 +124,6 @@ final class GoldfinderCommand implements Callable<Integer> {
                         + MazeWorldWriter.CELL_SIZE_PROPERTY + "\" value=\"MM\"/>: the Gold robots read the maze's cell size"
                         + " from it (robosim maze writes it)");
                 return 1;
-            }
-            if (cellSize != null) {
-                spec.commandLine().getErr().println("robosim goldfinder: --cell-size is no longer needed and is ignored:"
-                        + " the robots read the world's " + MazeWorldWriter.CELL_SIZE_PROPERTY + " property ("
-                        + full.properties().get(MazeWorldWriter.CELL_SIZE_PROPERTY) + ")");
             }
             w = full.withFirstRobots(robots);
         } catch (WorldFileException | IllegalArgumentException e) {

@@ -48,6 +48,17 @@ class GoldfinderOutputsTest {
     }
 
     @Test
+    void aWorldThatDoesNotGiveItsCellSizeIsRefusedBeforeTheRun() throws Exception {
+        Path world = maze();
+        Path without = dir.resolve("no-cell-size.xml");
+        Files.writeString(without, Files.readString(world).replaceAll("\\s*<property name=\"cellSize\"[^>]*/>", ""));
+        String[] r = run("goldfinder", without.toString(), "--robots", "2", "--no-frames");
+        assertEquals("1", r[0]);
+        assertTrue(r[2].contains("has no <property name=\"cellSize\" value=\"MM\"/>"), r[2]);
+        assertFalse(r[1].contains("Gold found"), "no run: " + r[1]);
+    }
+
+    @Test
     void theRunIsRecordedAndItsFramesMadeIntoAGif() throws Exception {
         Path world = maze();
         Path recording = dir.resolve("run.rsr");

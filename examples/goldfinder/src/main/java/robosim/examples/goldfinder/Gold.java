@@ -665,11 +665,11 @@ public class Gold extends ArRobot {
 
     private void drive() {
         if (isStalled()) {
-            // something unexpected is in the way: back to the centre of the cell the robot is in
+            // something unexpected is in the way: back to the centre of the last cell it drove through
             stop();
             int dx = Maze.DIRECTIONS[dir][0];
             int dy = Maze.DIRECTIONS[dir][1];
-            int crossed = (int) Math.round(along(cx, cy) / -cellSize);
+            int crossed = (int) Math.floor(along(cx, cy) / -cellSize);
             crossed = Math.max(0, Math.min(runCells - 1, crossed));
             cx += crossed * dx;
             cy += crossed * dy;
