@@ -3,16 +3,17 @@ package robosim.examples.goldfinder;
 import static robosim.examples.goldfinder.MazeKnowledge.NONE;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
+import java.util.TreeMap;
 import robosim.aria.ArHeatSensor;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 import robosim.aria.ArUtil;
 import robosim.hw.RobotMessage;
-import robosim.protocol.Figure;
 
 /**
  * A Pioneer that searches a grid maze for gold by its sensors alone, with its team.
@@ -80,6 +81,9 @@ public class Gold extends ArRobot {
     private int waited;
     private int pause;
     private long lastTold = Long.MIN_VALUE / 2;
+    /** The cell each teammate waits to enter, and the frontier each heads for (-1: none). */
+    private final Map<String, Long> wants = new TreeMap<>();
+    private final Map<String, Long> targets = new TreeMap<>();
     /** When it last drew, what it drew: its own cells' count, its target and the cell it drew it from. */
     private long drawnAt = Long.MIN_VALUE / 2;
     private int drawnCells;
@@ -230,10 +234,9 @@ public class Gold extends ArRobot {
     }
 
     /**
-     * Draws, for viewers that show robots' drawings, the cells this robot has sensed itself (its
-     * share of the work), every cell it knows of as a dot, and the frontier it has claimed or
-     * follows with its way there. A layer is sent again only when it changed, at most every
-     * {@value #DRAW_EVERY} steps.
+     * Draws, for viewers that show robots' drawings, what {@link TeamDrawings} makes of what this
+     * robot knows. A layer is sent again only when it changed, at most every {@value #DRAW_EVERY}
+     * steps.
      */
     private void drawWhatItKnows() {
         if (getStep() - drawnAt < DRAW_EVERY) {
@@ -241,58 +244,15 @@ public class Gold extends ArRobot {
         }
         if (ownCells.size() != drawnCells) {
             drawnCells = ownCells.size();
-            double inset = cellSize * 0.12;
-            double[] own = new double[4 * ownCells.size()];
-            for (int i = 0; i < ownCells.size(); i++) {
-                double x0 = ownCells.get(i)[0] * cellSize;
-                double y0 = ownCells.get(i)[1] * cellSize;
-                own[4 * i] = x0 + inset;
-                own[4 * i + 1] = y0 + inset;
-                own[4 * i + 2] = x0 + cellSize - inset;
-                own[4 * i + 3] = y0 + cellSize - inset;
-            }
-            // each robot's dots sit a little apart, so every robot's known map shows
-            double dx = cellSize * (0.1 * (rank % 4) - 0.15);
-            double dy = cellSize * (0.1 * (rank / 4 % 4) - 0.15);
-            double[] known = new double[2 * map.sensedCount()];
-            int i = 0;
-            for (long k : map.sensedCells()) {
-                known[i++] = (MazeKnowledge.keyX(k) + 0.5) * cellSize + dx;
-                known[i++] = (MazeKnowledge.keyY(k) + 0.5) * cellSize + dy;
-            }
-            if (own.length > 0) {
-                draw("explored", List.of(new Figure(Figure.CELLS, "", own)));
-            }
-            if (known.length > 0) {
-                draw("known", List.of(new Figure(Figure.DOTS, "", known)));
-            }
+            draw(TeamDrawings.EXPLORED, TeamDrawings.explored(ownCells, cellSize));
+            draw(TeamDrawings.KNOWN, TeamDrawings.known(map, rank, cellSize));
             drawnAt = getStep();
         }
         long target = plan.target();
         if (target != drawnTarget || (target >= 0 && MazeKnowledge.key(cx, cy) != drawnFrom)) {
             drawnTarget = target;
             drawnFrom = MazeKnowledge.key(cx, cy);
-            if (target < 0) {
-                clearDrawing("claim");
-            } else {
-                List<Long> way = map.path(cx, cy, plan.x(), plan.y(), new int[] {0, 1, 2, 3}, Set.of());
-                double[] line = new double[2 * (way.size() + 1)];
-                line[0] = (cx + 0.5) * cellSize;
-                line[1] = (cy + 0.5) * cellSize;
-                for (int k = 0; k < way.size(); k++) {
-                    line[2 * k + 2] = (MazeKnowledge.keyX(way.get(k)) + 0.5) * cellSize;
-                    line[2 * k + 3] = (MazeKnowledge.keyY(way.get(k)) + 0.5) * cellSize;
-                }
-                double x0 = plan.x() * cellSize;
-                double y0 = plan.y() * cellSize;
-                double in = plan.claim() ? cellSize * 0.3 : cellSize * 0.4;
-                List<Figure> figures = new ArrayList<>();
-                figures.add(new Figure(Figure.CELLS, "", new double[] {x0 + in, y0 + in, x0 + cellSize - in, y0 + cellSize - in}));
-                if (way.size() > 0) {
-                    figures.add(new Figure(Figure.LINE, "", line));
-                }
-                draw("claim", figures);
-            }
+            draw(TeamDrawings.CLAIM, TeamDrawings.claim(map, cx, cy, plan, cellSize));
             drawnAt = getStep();
         }
     }
@@ -343,10 +303,6 @@ public class Gold extends ArRobot {
             }
         }
     }
-
-    /** The cell each teammate waits to enter, and the frontier each heads for (-1: none). */
-    private final Map<String, Long> wants = new java.util.TreeMap<>();
-    private final Map<String, Long> targets = new java.util.TreeMap<>();
 
     private void tellWhereIAm() {
         boolean moving = phase == Phase.ANNOUNCE || phase == Phase.TURN || phase == Phase.MOVE;
@@ -577,7 +533,7 @@ public class Gold extends ArRobot {
         if (m == null) {
             return false;
         }
-        Set<Long> onItsWay = new java.util.HashSet<>();
+        Set<Long> onItsWay = new HashSet<>();
         onItsWay.add(MazeKnowledge.key(cx, cy));
         long target = targets.getOrDefault(mate, -1L);
         if (target >= 0) {

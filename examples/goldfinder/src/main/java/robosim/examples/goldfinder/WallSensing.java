@@ -1,5 +1,6 @@
 package robosim.examples.goldfinder;
 
+import java.util.Arrays;
 import robosim.aria.ArMath;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
@@ -103,7 +104,7 @@ final class WallSensing {
                 break;
             }
         }
-        return java.util.Arrays.copyOf(out, cells);
+        return Arrays.copyOf(out, cells);
     }
 
     /** Half a maze wall's thickness, mm: walls are 100 mm thick, centred on the grid lines. */
