@@ -87,6 +87,7 @@ public class Gold extends ArRobot {
     /** When it last drew, what it drew: its own cells' count, its target and the cell it drew it from. */
     private long drawnAt = Long.MIN_VALUE / 2;
     private int drawnCells;
+    private int drawnKnown;
     private long drawnTarget = -1;
     private long drawnFrom = -1;
     /** The step the robot began to back off an obstacle, and to turn. */
@@ -245,6 +246,11 @@ public class Gold extends ArRobot {
         if (ownCells.size() != drawnCells) {
             drawnCells = ownCells.size();
             draw(TeamDrawings.EXPLORED, TeamDrawings.explored(ownCells, cellSize));
+            drawnAt = getStep();
+        }
+        if (map.sensedCount() != drawnKnown) {
+            // what teammates told counts too: each robot's known map shows what reached it
+            drawnKnown = map.sensedCount();
             draw(TeamDrawings.KNOWN, TeamDrawings.known(map, rank, cellSize));
             drawnAt = getStep();
         }
