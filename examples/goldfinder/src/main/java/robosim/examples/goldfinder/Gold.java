@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.SplittableRandom;
-import java.util.TreeMap;
 import robosim.aria.ArHeatSensor;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
@@ -81,9 +80,6 @@ public class Gold extends ArRobot {
     private int waited;
     private int pause;
     private long lastTold = Long.MIN_VALUE / 2;
-    /** The cell each teammate waits to enter, and the frontier each heads for (-1: none). */
-    private final Map<String, Long> wants = new TreeMap<>();
-    private final Map<String, Long> targets = new TreeMap<>();
     /** When it last drew, what it drew: its own cells' count, its target and the cell it drew it from. */
     private long drawnAt = Long.MIN_VALUE / 2;
     private int drawnCells;
@@ -284,9 +280,9 @@ public class Gold extends ArRobot {
             }
             if (!mm.robot().equals(getName())) {
                 map.mate(mm.robot(), new MazeKnowledge.Mate(mm.x(), mm.y(), mm.nextX(), mm.nextY(),
-                        mm.claim() ? mm.targetX() : NONE, mm.claim() ? mm.targetY() : NONE, getStep()));
-                wants.put(mm.robot(), mm.wantX() == NONE ? -1 : MazeKnowledge.key(mm.wantX(), mm.wantY()));
-                targets.put(mm.robot(), mm.targetX() == NONE ? -1 : MazeKnowledge.key(mm.targetX(), mm.targetY()));
+                        mm.claim() ? mm.targetX() : NONE, mm.claim() ? mm.targetY() : NONE, getStep(),
+                        mm.wantX() == NONE ? -1 : MazeKnowledge.key(mm.wantX(), mm.wantY()),
+                        mm.targetX() == NONE ? -1 : MazeKnowledge.key(mm.targetX(), mm.targetY())));
             }
             if (mm.gold() && finder == null) {
                 finder = mm.robot();
@@ -302,10 +298,9 @@ public class Gold extends ArRobot {
     private void forgetSilentMates() {
         for (String name : map.mates()) {
             MazeKnowledge.Mate m = map.mate(name);
-            if (getStep() - m.heard() > TeamPlan.CLAIM_STEPS && (m.moving() || m.claims())) {
+            if (getStep() - m.heard() > TeamPlan.CLAIM_STEPS && (m.moving() || m.claims() || m.want() >= 0
+                    || m.target() >= 0)) {
                 map.mate(name, new MazeKnowledge.Mate(m.x(), m.y(), m.heard()));
-                wants.remove(name);
-                targets.remove(name);
             }
         }
     }
@@ -490,10 +485,10 @@ public class Gold extends ArRobot {
     /** A teammate that waits to enter this robot's cell, or null. */
     private String waitedForBy() {
         long here = MazeKnowledge.key(cx, cy);
-        for (Map.Entry<String, Long> e : wants.entrySet()) {
-            MazeKnowledge.Mate m = map.mate(e.getKey());
-            if (e.getValue() == here && m != null && getStep() - m.heard() <= 3 * HEARTBEAT) {
-                return e.getKey();
+        for (String name : map.mates()) {
+            MazeKnowledge.Mate m = map.mate(name);
+            if (m.want() == here && getStep() - m.heard() <= 3 * HEARTBEAT) {
+                return name;
             }
         }
         return null;
@@ -541,7 +536,7 @@ public class Gold extends ArRobot {
         }
         Set<Long> onItsWay = new HashSet<>();
         onItsWay.add(MazeKnowledge.key(cx, cy));
-        long target = targets.getOrDefault(mate, -1L);
+        long target = m.target();
         if (target >= 0) {
             onItsWay.addAll(map.path(m.x(), m.y(), MazeKnowledge.keyX(target), MazeKnowledge.keyY(target),
                     new int[] {0, 1, 2, 3}, Set.of()));

@@ -2,6 +2,7 @@ package robosim.examples.goldfinder;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.logging.Logger;
 import robosim.hw.RobotThreads;
 
 /**
@@ -11,6 +12,8 @@ import robosim.hw.RobotThreads;
  * starts a whole team as threads of this JVM, as {@code bin/robosim goldfinder} does.
  */
 public final class GoldFinder {
+    private static final Logger LOG = Logger.getLogger(GoldFinder.class.getName());
+
     private GoldFinder() {
     }
 
@@ -34,7 +37,7 @@ public final class GoldFinder {
                     try {
                         g.search();
                     } catch (IllegalStateException e) {
-                        System.err.println("GoldFinder: " + e.getMessage());
+                        LOG.severe(e.getMessage());
                     }
                     g.disconnect();
                 }

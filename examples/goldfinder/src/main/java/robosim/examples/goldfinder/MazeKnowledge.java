@@ -31,8 +31,15 @@ final class MazeKnowledge {
      * @param claimX the column of the frontier it has claimed, or {@link #NONE}
      * @param claimY the row of that frontier
      * @param heard  the step at which this robot heard the report
+     * @param want   the key of the cell it waits to enter, or -1
+     * @param target the key of the frontier it claimed or follows, or -1
      */
-    record Mate(int x, int y, int nextX, int nextY, int claimX, int claimY, long heard) {
+    record Mate(int x, int y, int nextX, int nextY, int claimX, int claimY, long heard, long want, long target) {
+        /** A teammate that waits for no cell and heads for its claim, if any. */
+        Mate(int x, int y, int nextX, int nextY, int claimX, int claimY, long heard) {
+            this(x, y, nextX, nextY, claimX, claimY, heard, -1, claimX == NONE ? -1 : key(claimX, claimY));
+        }
+
         /** A teammate that stands in a cell and has claimed nothing. */
         Mate(int x, int y, long heard) {
             this(x, y, NONE, NONE, NONE, NONE, heard);
@@ -47,23 +54,27 @@ final class MazeKnowledge {
         }
 
         /**
-         * Whether it stands in the cell or drives into or through it: a robot drives straight,
-         * so the cells between its cell and the one it drives to are on its way.
+         * The cells it holds: the one it stands in and, while it drives, every cell on its way to the
+         * one it drives to (a robot drives straight).
          */
+        List<Long> cells() {
+            List<Long> out = new ArrayList<>();
+            out.add(key(x, y));
+            if (moving()) {
+                int dx = Integer.signum(nextX - x);
+                int dy = Integer.signum(nextY - y);
+                int steps = dx != 0 && dy != 0 ? 1 : Math.abs(nextX - x) + Math.abs(nextY - y);
+                for (int k = 1; k < steps; k++) {
+                    out.add(key(x + k * dx, y + k * dy));
+                }
+                out.add(key(nextX, nextY));
+            }
+            return out;
+        }
+
+        /** Whether it stands in, or drives into or through, the cell. */
         boolean holds(int cx, int cy) {
-            if (x == cx && y == cy) {
-                return true;
-            }
-            if (!moving()) {
-                return false;
-            }
-            if (x == nextX && cx == x) {
-                return cy >= Math.min(y, nextY) && cy <= Math.max(y, nextY);
-            }
-            if (y == nextY && cy == y) {
-                return cx >= Math.min(x, nextX) && cx <= Math.max(x, nextX);
-            }
-            return nextX == cx && nextY == cy;
+            return cells().contains(key(cx, cy));
         }
     }
 
@@ -257,16 +268,7 @@ final class MazeKnowledge {
     Set<Long> held() {
         Set<Long> out = new TreeSet<>();
         for (Mate m : mates.values()) {
-            out.add(key(m.x(), m.y()));
-            if (m.moving()) {
-                int dx = Integer.signum(m.nextX() - m.x());
-                int dy = Integer.signum(m.nextY() - m.y());
-                int cells = Math.abs(m.nextX() - m.x()) + Math.abs(m.nextY() - m.y());
-                for (int k = 1; k <= cells && (dx == 0 || dy == 0); k++) {
-                    out.add(key(m.x() + k * dx, m.y() + k * dy));
-                }
-                out.add(key(m.nextX(), m.nextY()));
-            }
+            out.addAll(m.cells());
         }
         return out;
     }
