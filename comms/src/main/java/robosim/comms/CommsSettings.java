@@ -33,4 +33,15 @@ public record CommsSettings(double maxRange, boolean wallsBlock, int latencyStep
             throw new IllegalArgumentException(maxMessageBytes + " was supplied for maxMessageBytes: it must be at least 1");
         }
     }
+
+    /**
+     * @return the settings in words, as a log line or a user reads them: {@code range 5000 mm, walls
+     *         block, latency 1 step, loss 0.100, messages up to 65536 bytes}
+     */
+    public String describe() {
+        return String.format(java.util.Locale.ROOT, "range %s, walls %s, latency %d step%s, loss %.3f, messages up to %d bytes",
+                maxRange == 0 ? "unlimited" : String.format(java.util.Locale.ROOT, "%.0f mm", maxRange),
+                wallsBlock ? "block" : "do not block", latencySteps, latencySteps == 1 ? "" : "s", lossProbability,
+                maxMessageBytes);
+    }
 }

@@ -7,6 +7,8 @@ import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
 import robosim.protocol.Figure;
@@ -83,7 +85,33 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connect(HardwareOptions options) throws IOException {
-        connect(options, EnvironmentLinks.to(host, port, options));
+        connectFinding(options, () -> EnvironmentLinks.to(host, port, options));
+    }
+
+    /**
+     * Connects, finding the secret as {@link RunSecret#find} does, and tries again over a new link
+     * while a refusal may clear ({@link RunSecret#mayClear}): a robot started with its Environment
+     * may have looked before the Environment wrote its secret, or found the file an earlier run
+     * left. Any other refusal, or the same secret refused again, ends the attempt at once. The
+     * connect timeout bounds the whole.
+     */
+    private void connectFinding(HardwareOptions options, Supplier<EnvironmentLink> links) throws IOException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
+        String secret = RunSecret.find(null, host, port);
+        while (true) {
+            try {
+                connect(options, links.get(), secret);
+                return;
+            } catch (RefusedException e) {
+                String now = RunSecret.findAgain(host, port);
+                if (!RunSecret.mayClear(e.reason(), secret, now) || System.nanoTime() - deadline > 0) {
+                    throw e;
+                }
+                LOG.info(() -> "robot " + name + ": the Environment at " + host + ":" + port + " refused the run secret"
+                        + " found first, and another has appeared since (the Environment was starting); trying again");
+                secret = now;
+            }
+        }
     }
 
     /**
@@ -107,7 +135,12 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
-        connect(options, link, RunSecret.find(null, host, port));
+        EnvironmentLink[] first = {link};
+        connectFinding(options, () -> {
+            EnvironmentLink l = first[0];
+            first[0] = null;
+            return l != null ? l : EnvironmentLinks.to(host, port, options);
+        });
     }
 
     private void connect(HardwareOptions options, EnvironmentLink link, String secret) throws IOException {

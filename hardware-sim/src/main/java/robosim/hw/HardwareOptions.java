@@ -15,6 +15,14 @@ public record HardwareOptions(long connectTimeoutMs, long lostAfterMs, long yiel
     public static final String LOST_AFTER_PROPERTY = "robosim.lostAfterMs";
     /** The lost time when {@value #LOST_AFTER_PROPERTY} is unset, ms. */
     public static final long DEFAULT_LOST_AFTER_MS = 10_000;
+    /** The system property that sets {@link #connectTimeoutMs} of {@link #defaults()}, in ms. */
+    public static final String CONNECT_TIMEOUT_PROPERTY = "robosim.connectTimeoutMs";
+    /**
+     * The connect timeout when {@value #CONNECT_TIMEOUT_PROPERTY} is unset, ms: long enough for an
+     * Environment started after its robots to come up on a busy machine, where a JVM's start may
+     * take many seconds.
+     */
+    public static final long DEFAULT_CONNECT_TIMEOUT_MS = 60_000;
 
     /**
      * Checks the values.
@@ -35,13 +43,15 @@ public record HardwareOptions(long connectTimeoutMs, long lostAfterMs, long yiel
     }
 
     /**
-     * @return 10 s to connect, the Environment lost after {@value #DEFAULT_LOST_AFTER_MS} ms of
-     *         silence (or what the system property {@value #LOST_AFTER_PROPERTY} says), a warning after
-     *         5 s without a yield
-     * @throws IllegalArgumentException if the system property is not a whole number of ms above 0
+     * @return {@value #DEFAULT_CONNECT_TIMEOUT_MS} ms to connect (or what the system property
+     *         {@value #CONNECT_TIMEOUT_PROPERTY} says), the Environment lost after
+     *         {@value #DEFAULT_LOST_AFTER_MS} ms of silence (or what the system property
+     *         {@value #LOST_AFTER_PROPERTY} says), a warning after 5 s without a yield
+     * @throws IllegalArgumentException if a system property is not a whole number of ms above 0
      */
     public static HardwareOptions defaults() {
-        return new HardwareOptions(10_000, configuredLostAfterMs(), 5_000);
+        return new HardwareOptions(configuredMs(CONNECT_TIMEOUT_PROPERTY, DEFAULT_CONNECT_TIMEOUT_MS),
+                configuredLostAfterMs(), 5_000);
     }
 
     /**
@@ -50,9 +60,13 @@ public record HardwareOptions(long connectTimeoutMs, long lostAfterMs, long yiel
      * @throws IllegalArgumentException if it is not a whole number of ms above 0
      */
     public static long configuredLostAfterMs() {
-        String value = System.getProperty(LOST_AFTER_PROPERTY);
+        return configuredMs(LOST_AFTER_PROPERTY, DEFAULT_LOST_AFTER_MS);
+    }
+
+    private static long configuredMs(String property, long unset) {
+        String value = System.getProperty(property);
         if (value == null) {
-            return DEFAULT_LOST_AFTER_MS;
+            return unset;
         }
         try {
             long ms = Long.parseLong(value.trim());
@@ -62,7 +76,7 @@ public record HardwareOptions(long connectTimeoutMs, long lostAfterMs, long yiel
         } catch (NumberFormatException e) {
             // said below
         }
-        throw new IllegalArgumentException("'" + value + "' was supplied for the system property " + LOST_AFTER_PROPERTY
+        throw new IllegalArgumentException("'" + value + "' was supplied for the system property " + property
                 + ": it is a whole number of ms, 1 to " + Integer.MAX_VALUE);
     }
 }

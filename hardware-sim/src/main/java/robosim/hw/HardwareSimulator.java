@@ -58,6 +58,8 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private volatile Thread keeper;
     private volatile long joinedNanos;
     private volatile boolean welcomed;
+    /** The steps the run had run when the Environment welcomed the robot (written before {@link #welcomed}). */
+    private volatile long welcomedAfterStep;
     private long warnedStep = -1;
 
     /**
@@ -101,6 +103,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         RunEndWatch.joining(this);
         try {
             Welcome w = link.open(hello, this);
+            welcomedAfterStep = w.state().step();
             welcomed = true;
             WATCHED.add(this);
             return w;
@@ -216,7 +219,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
             return null;
         }
         return new RunEndWatch.BeforeFirstStep(hello.name(), l.environment(), welcomed,
-                System.nanoTime() - joinedNanos);
+                System.nanoTime() - joinedNanos, welcomed ? welcomedAfterStep : -1);
     }
 
     @Override

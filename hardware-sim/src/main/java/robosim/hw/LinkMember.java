@@ -30,7 +30,7 @@ final class LinkMember extends ReleasedOnClose {
         this.name = hello.name();
         this.receiver = receiver;
         try {
-            link = SharedLink.to(host, port, options);
+            link = SharedLink.to(host, port, options, hello.token());
             return link.join(this, hello);
         } catch (IOException | RuntimeException e) {
             close();

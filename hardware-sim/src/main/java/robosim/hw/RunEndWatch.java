@@ -67,8 +67,22 @@ public final class RunEndWatch implements AutoCloseable {
      * @param environment the Environment's host and port, {@code host:port}
      * @param welcomed    whether the Environment has welcomed the robot into its world
      * @param waitedNanos since the robot began to connect, ns
+     * @param afterStep   once welcomed, the steps the run had run then: 0 when the run had not begun, more
+     *                    for a robot that joined a run under way (which may be paused); -1 before
      */
-    public record BeforeFirstStep(String robot, String environment, boolean welcomed, long waitedNanos) {
+    public record BeforeFirstStep(String robot, String environment, boolean welcomed, long waitedNanos,
+                                  long afterStep) {
+        /**
+         * A robot that has had no step yet, welcomed before its run began (or not welcomed yet).
+         *
+         * @param robot       the robot's name
+         * @param environment the Environment's host and port
+         * @param welcomed    whether the Environment has welcomed it
+         * @param waitedNanos since it began to connect, ns
+         */
+        public BeforeFirstStep(String robot, String environment, boolean welcomed, long waitedNanos) {
+            this(robot, environment, welcomed, waitedNanos, welcomed ? 0 : -1);
+        }
     }
 
     /** @return the robots followed that are connecting or connected and have had no step yet */

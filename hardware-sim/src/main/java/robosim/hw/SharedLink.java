@@ -26,7 +26,6 @@ import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RunSecret;
 import robosim.protocol.TimeSteps;
 import robosim.protocol.Welcome;
 
@@ -88,7 +87,7 @@ final class SharedLink {
         });
     }
 
-    private SharedLink(String host, int port, HardwareOptions options) throws IOException {
+    private SharedLink(String host, int port, HardwareOptions options, String secret) throws IOException {
         this.host = host;
         this.port = port;
         this.options = options;
@@ -97,7 +96,7 @@ final class SharedLink {
             socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), RunSecret.find(null, host, port)));
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), secret));
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;
@@ -110,15 +109,16 @@ final class SharedLink {
      * @param host    the Environment's host
      * @param port    its robot port
      * @param options timeouts (the first robot's serve the whole link)
+     * @param secret  the run secret the link presents, found by the robot that opens it, or null
      * @return the link
      * @throws IOException if it cannot connect
      */
-    static SharedLink to(String host, int port, HardwareOptions options) throws IOException {
+    static SharedLink to(String host, int port, HardwareOptions options, String secret) throws IOException {
         String key = host + ":" + port;
         synchronized (CONNECTING) {
             SharedLink link = OPEN.get(key);
             if (link == null || link.endReason != null) {
-                link = new SharedLink(host, port, options);
+                link = new SharedLink(host, port, options, secret);
                 OPEN.put(key, link);
                 SharedLink started = link;
                 RobotThreads.unstarted("hw-link-" + key, started::read).start();
@@ -323,7 +323,9 @@ final class SharedLink {
             LOG.log(Level.FINE, "closing", e);
         }
         for (Joining j : joining.values()) {
-            j.welcome().completeExceptionally(new IOException(endReason));
+            // a link refused (its secret) refuses the robots that were joining on it
+            j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? new RefusedException(endReason, reason)
+                    : new IOException(endReason));
         }
         for (LinkMember m : members.values()) {
             m.ended(kind, reason);

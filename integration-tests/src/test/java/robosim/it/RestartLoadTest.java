@@ -26,6 +26,7 @@ import robosim.protocol.ControlReply;
 import robosim.protocol.Message;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.Snapshot;
+import robosim.protocol.Bye;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.RecordingReader;
@@ -115,8 +116,9 @@ class RestartLoadTest {
                     control.ask("restart"));
 
             for (Future<String> bye : first) {
-                assertEquals("the run ended for a restart by control client ctl after step 25; connect again to join"
-                        + " the new run", bye.get(30, TimeUnit.SECONDS));
+                // the run they were in ended: they were not dropped from it
+                assertEquals(Bye.DONE + "the run ended for a restart by control client ctl after step 25; connect"
+                        + " again to join the new run", bye.get(30, TimeUnit.SECONDS));
             }
             assertEquals("empty-room", nextWorld(viewer).name());
             start(h, "r1", "r2");
@@ -167,7 +169,7 @@ class RestartLoadTest {
             confirmed("load of world solo by control client ctl after step 5: world solo (seed 1) waits for its robots",
                     control.ask("load", "solo.xml"));
 
-            assertTrue(first.get(0).get(30, TimeUnit.SECONDS).startsWith("the run ended for a load of world solo"));
+            assertTrue(first.get(0).get(30, TimeUnit.SECONDS).startsWith(Bye.DONE + "the run ended for a load of world solo"));
             WorldDescription loaded = nextWorld(viewer);
             assertEquals(List.of("s1"), loaded.robots().stream().map(WorldDescription.RobotInfo::name).toList());
             start(h, "s1");

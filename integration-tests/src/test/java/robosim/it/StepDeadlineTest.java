@@ -29,7 +29,9 @@ class StepDeadlineTest {
 
     @Test
     void aRobotThatNeverYieldsIsDroppedByNameAndTheRunReachesItsSteps() throws Exception {
-        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 500, 30_000, 0, 4 << 20);
+        // the first steps' allowance as short as the step timeout: r2 never yields at all
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 500, 30_000, 0, 4 << 20)
+                .withFirstStepsTimeoutMs(500);
         AtomicBoolean spinning = new AtomicBoolean(true);
         AtomicBoolean r2Connected = new AtomicBoolean();
         AtomicBoolean r2SawItsEnd = new AtomicBoolean();
@@ -74,6 +76,7 @@ class StepDeadlineTest {
             List<String> aboutR2 = log.warnings().stream().filter(w -> w.contains("robot r2")).toList();
             assertEquals(1, aboutR2.size(), "one log line for r2: " + log.warnings());
             assertTrue(aboutR2.get(0).contains("did not send its requests for step"), aboutR2.get(0));
+            assertTrue(aboutR2.get(0).contains("(env --step-timeout gives it longer)"), aboutR2.get(0));
             assertTrue(log.warnings().stream().noneMatch(w -> w.contains("robot r1")), "r1 was not dropped: "
                     + log.warnings());
             assertEquals(Departure.Kind.DROPPED, report.departure("r2").orElseThrow().kind(), "the report marks r2");
@@ -89,6 +92,59 @@ class StepDeadlineTest {
                 }
             }
         }
+    }
+
+    /**
+     * A robot whose first step takes longer than the step timeout (its program loading classes on a
+     * busy machine) stays in the run: its first {@value ServerOptions#FIRST_STEPS} steps wait up to
+     * the first steps' timeout. The same delay later is a missed deadline.
+     */
+    @Test
+    void aSlowFirstStepIsWaitedForButTheSameDelayLaterDropsTheRobot() throws Exception {
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 1000, 30_000, 0, 4 << 20)
+                .withFirstStepsTimeoutMs(60_000);
+        try (LogCapture log = new LogCapture("robosim.env.net");
+             LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
+            List<Thread> robots = new java.util.ArrayList<>();
+            for (String name : List.of("r1", "r2")) {
+                Thread t = new Thread(() -> {
+                    ArRobot robot = new ArRobot(name, "127.0.0.1", h.robotPort(), "p3dx");
+                    if (robot.blockingConnect()) {
+                        robot.enableMotors();
+                        // step 1: busy for three step timeouts before the first yield
+                        busy(2500);
+                        for (int step = 2; robot.isConnected(); step++) {
+                            robot.sleepSimulated(100);
+                            if (name.equals("r2") && step == 10) {
+                                busy(2500); // the same delay in step 10: no allowance now
+                            }
+                        }
+                    }
+                }, "slow-" + name);
+                t.setDaemon(true);
+                t.start();
+                robots.add(t);
+            }
+            RunReport report = h.await();
+            assertEquals("step limit " + STEPS + " reached", report.endReason());
+            assertTrue(report.departure("r1").isEmpty(), "r1's slow first step was waited for: " + log.warnings());
+            Departure r2 = report.departure("r2").orElseThrow();
+            assertEquals(Departure.Kind.DROPPED, r2.kind());
+            assertTrue(r2.step() >= 10, "r2 was dropped for its slow step 10, not its first: " + r2);
+            for (Thread t : robots) {
+                t.join(10_000);
+            }
+        }
+    }
+
+    /** Works on this thread, without yielding to the simulation, for about this many ms of wall time. */
+    private static void busy(long ms) {
+        long until = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms);
+        long work = 0;
+        while (System.nanoTime() < until) {
+            work++;
+        }
+        assertTrue(work > 0);
     }
 
     private static RobotSummary summary(RunReport report, String name) {

@@ -45,9 +45,11 @@ final class CommsCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "give at least one setting to change: --range, --walls-block, --latency, --loss or --max-bytes");
         }
         String token = ControlConnection.token(spec, secret, at);
-        try (ControlClient c = ControlConnection.open(at, "comms", token, 10_000)) {
-            c.send(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
-            CommsUpdate now = c.answer(CommsUpdate.class, u -> true);
+        try {
+            CommsUpdate now = ControlConnection.exchange(at, "comms", token, 10_000, c -> {
+                c.send(new CommsUpdate(range, wallsBlock, latency, loss, maxBytes));
+                return c.answer(CommsUpdate.class, u -> true);
+            });
             spec.commandLine().getOut().printf(java.util.Locale.ROOT,
                     "Comms settings now: range %.0f mm, walls block %s, latency %d, loss %.3f, max %d bytes%n",
                     now.maxRange(), now.wallsBlock(), now.latencySteps(), now.lossProbability(), now.maxMessageBytes());

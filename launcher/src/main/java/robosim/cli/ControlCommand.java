@@ -77,13 +77,15 @@ final class ControlCommand implements Callable<Integer> {
                     + " arguments, got " + args.size());
         }
         String token = ControlConnection.token(spec, secret, at);
-        try (ControlClient c = ControlConnection.open(at, "control", token, timeoutSeconds * 1000)) {
+        try {
             if (op.equals("status") && args.isEmpty()) {
-                printStatus(c.status());
+                printStatus(ControlConnection.exchange(at, "control", token, timeoutSeconds * 1000, ControlClient::status));
                 return 0;
             }
-            c.send(new ControlRequest(ID, op, args));
-            ControlReply reply = c.answer(ControlReply.class, r -> r.id() == ID);
+            ControlReply reply = ControlConnection.exchange(at, "control", token, timeoutSeconds * 1000, c -> {
+                c.send(new ControlRequest(ID, op, args));
+                return c.answer(ControlReply.class, r -> r.id() == ID);
+            });
             if (reply.ok()) {
                 spec.commandLine().getOut().println(reply.text());
                 return 0;

@@ -1,6 +1,9 @@
 package robosim.cli;
 
 import java.io.IOException;
+import java.io.InterruptedIOException;
+import java.net.ConnectException;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ParameterException;
 import robosim.panel.net.ControlClient;
@@ -11,6 +14,9 @@ import robosim.protocol.RunSecret;
  * the run secret found as every client finds it, then a {@link ControlClient}.
  */
 final class ControlConnection {
+    /** How long to wait before connecting again while nothing listens, ms. */
+    static final long RETRY_MS = 200;
+
     private ControlConnection() {
     }
 
@@ -32,17 +38,59 @@ final class ControlConnection {
         }
     }
 
+    /** What a command does over its connection. */
+    interface Exchange<T> {
+        T with(ControlClient c) throws IOException;
+    }
+
     /**
-     * Connects and says hello.
+     * Connects, says hello and has the exchange done, within {@code timeoutMs}: while nothing listens
+     * (an Environment starting) it connects again, and a refusal of the secret found first is tried
+     * again once the secret found now is another ({@link RunSecret#mayClear}): the Environment had
+     * not written its own yet. Any other refusal is final.
      *
      * @param at        where the Environment's viewer port is
      * @param name      the client's name, for the Environment's log
-     * @param token     the run secret, or null
+     * @param token     the run secret found first, or null
      * @param timeoutMs the longest wait for connecting and for each answer
-     * @return the connection, hello said
-     * @throws IOException if the Environment cannot be reached
+     * @param exchange  what to do once connected
+     * @param <T>       what it gives
+     * @return what it gave
+     * @throws IOException if the Environment cannot be reached, refuses, or does not answer
      */
-    static ControlClient open(ViewerPortOptions at, String name, String token, int timeoutMs) throws IOException {
-        return ControlClient.open(at.host, at.port(), name, token, timeoutMs);
+    static <T> T exchange(ViewerPortOptions at, String name, String token, int timeoutMs, Exchange<T> exchange)
+            throws IOException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        String presented = token;
+        while (true) {
+            ControlClient c;
+            try {
+                c = ControlClient.open(at.host, at.port(), name, presented, timeoutMs);
+            } catch (ConnectException e) {
+                if (deadline - System.nanoTime() < TimeUnit.MILLISECONDS.toNanos(RETRY_MS)) {
+                    throw new ConnectException(e.getMessage() + " (tried for " + timeoutMs / 1000 + " s, --timeout)");
+                }
+                pause();
+                continue;
+            }
+            try (c) {
+                return exchange.with(c);
+            } catch (ControlClient.NoAnswerException e) {
+                String now = RunSecret.findAgain(at.host, at.port());
+                if (!RunSecret.mayClear(e.getMessage(), presented, now) || System.nanoTime() - deadline > 0) {
+                    throw e;
+                }
+                presented = now;
+            }
+        }
+    }
+
+    private static void pause() throws IOException {
+        try {
+            Thread.sleep(RETRY_MS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new InterruptedIOException("interrupted while connecting");
+        }
     }
 }

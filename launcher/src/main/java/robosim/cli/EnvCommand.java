@@ -72,6 +72,11 @@ final class EnvCommand implements Callable<Integer> {
     @Option(names = "--step-timeout", defaultValue = "10000", paramLabel = "MS", description = "ms to wait for a robot's requests before dropping it; default ${DEFAULT-VALUE}")
     long stepTimeoutMs;
 
+    @Option(names = "--first-steps-timeout", defaultValue = "60000", paramLabel = "MS", description = "ms to wait for a"
+            + " robot's requests in each of its first 3 steps (it loads its classes then), if longer than"
+            + " --step-timeout; default ${DEFAULT-VALUE}")
+    long firstStepsTimeoutMs;
+
     @Option(names = "--connect-timeout", defaultValue = "600", paramLabel = "S", description = "seconds to wait for the world's robots; default ${DEFAULT-VALUE}")
     long connectTimeoutS;
 
@@ -135,7 +140,7 @@ final class EnvCommand implements Callable<Integer> {
             checkFlags();
             options = new ServerOptions(bind, port, viewerPort, steps, realtime, stepTimeoutMs,
                     connectTimeoutS * 1000, waitViewers, FrameReader.DEFAULT_MAX_FRAME, threads(), access.limits(),
-                    access.access());
+                    access.access(), firstStepsTimeoutMs);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -229,6 +234,7 @@ final class EnvCommand implements Callable<Integer> {
         ServerOptions.requirePort("--viewer-port", viewerPort);
         ServerOptions.requireAtLeast("--steps", steps, 0);
         ServerOptions.requireAtLeast("--step-timeout", stepTimeoutMs, 1);
+        ServerOptions.requireAtLeast("--first-steps-timeout", firstStepsTimeoutMs, 1);
         ServerOptions.requireAtLeast("--connect-timeout", connectTimeoutS, 1);
         ServerOptions.requireAtLeast("--wait-viewers", waitViewers, 0);
         ServerOptions.requireAtLeast("--threads", threads(), 1);

@@ -89,7 +89,7 @@ final class RobotProgram {
         }
         Map<String, List<RunEndWatch.BeforeFirstStep>> byState = new TreeMap<>();
         for (RunEndWatch.BeforeFirstStep w : watch.beforeFirstStep()) {
-            byState.computeIfAbsent((w.welcomed() ? "welcomed " : "connecting ") + w.environment(),
+            byState.computeIfAbsent((w.welcomed() ? w.afterStep() > 0 ? "joined " : "welcomed " : "connecting ") + w.environment(),
                     k -> new ArrayList<>()).add(w);
         }
         for (Map.Entry<String, List<RunEndWatch.BeforeFirstStep>> state : byState.entrySet()) {
@@ -117,7 +117,11 @@ final class RobotProgram {
         String time = " - " + WaitSchedule.seconds(waited) + " s";
         if (!first.welcomed()) {
             return "robosim robot: " + who + " waiting for the Environment at " + first.environment()
-                    + " to answer (is robosim env running there?)" + time;
+                    + " to answer (it keeps trying while nothing listens there)" + time;
+        }
+        if (first.afterStep() > 0) {
+            return "robosim robot: " + who + " in the run at " + first.environment() + " since step "
+                    + first.afterStep() + ", waiting for the next step (the run may be paused)" + time;
         }
         return "robosim robot: " + who + " connected to the Environment at " + first.environment()
                 + ", waiting for step 1: the run starts once every robot of the world has connected" + time;

@@ -1,12 +1,16 @@
 package robosim.cli;
 
 import java.io.PrintWriter;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunProgress;
+import robosim.protocol.RunSecret;
 
 /**
  * Shows an Environment's progress on a {@link StatusLine}: while it waits for robots, which ones and
@@ -34,6 +38,7 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
     private final String etaLabel;
     private final WaitSchedule waits = new WaitSchedule();
     private Phase waitPhase;
+    private Set<String> refusedShown = Set.of();
     private long waitStep = -1;
     private long lastLineNanos;
     private boolean anyLine;
@@ -94,7 +99,10 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
             waitStep = s.step();
             waits.reset();
         }
-        if (line.isTerminal() || waits.due(s.waitedNanos())) {
+        // a new refusal is news: shown at once, not at the next line the schedule allows
+        boolean newRefusal = !s.refused().keySet().equals(refusedShown);
+        refusedShown = s.refused().keySet();
+        if (line.isTerminal() || waits.due(s.waitedNanos()) || newRefusal && !s.refused().isEmpty()) {
             line.show(describeWait(s));
         }
     }
@@ -218,7 +226,30 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
         if (viewers > 0) {
             b.append(missing.isEmpty() ? "" : " and ").append(plural(viewers, "viewer"));
         }
-        return b.append(of).toString();
+        b.append(of);
+        if (!s.refused().isEmpty()) {
+            b.append("; refused: ").append(refusals(s.refused()));
+            if (!missing.isEmpty() && s.refused().keySet().containsAll(missing)) {
+                b.append(". Every robot waited for was refused: ").append(advice(s.refused()));
+            }
+        }
+        return b.toString();
+    }
+
+    /** @return {@code r1 (presented no run secret), r2 (...)}, the latest {@link #NAMES_SHOWN} */
+    private static String refusals(Map<String, String> refused) {
+        List<String> shown = new ArrayList<>();
+        refused.forEach((who, why) -> shown.add(who + " (" + why + ")"));
+        int from = Math.max(0, shown.size() - NAMES_SHOWN);
+        return (from > 0 ? from + " more and " : "") + String.join(", ", shown.subList(from, shown.size()));
+    }
+
+    /** @return what to do when every robot waited for was refused */
+    static String advice(Map<String, String> refused) {
+        boolean secret = refused.values().stream().anyMatch(RunSecret::isSecretRefusal);
+        return secret ? "start them on this machine as the same user (they read the secret file this Environment"
+                + " wrote), or give them the secret it printed (ROBOSIM_TOKEN or -Drobosim.token); see docs/SECURITY.md"
+                : "fix what the refusals say and start them again; the Environment keeps waiting";
     }
 
     private static String names(List<String> names) {

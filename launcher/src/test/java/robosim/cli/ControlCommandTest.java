@@ -49,9 +49,11 @@ class ControlCommandTest {
             port = s.getLocalPort();
         }
         Run run = Run.execute("control", "--host", "127.0.0.1", "--viewer-port", Integer.toString(port), "--token",
-                "abcdefghijklmnop", "pause");
+                "abcdefghijklmnop", "--timeout", "1", "pause");
 
         assertEquals(1, run.exit());
+        // it tried again while nothing listened (an Environment may be starting), for its --timeout
+        assertTrue(run.firstLine().endsWith("(tried for 1 s, --timeout)"), run.err());
         assertTrue(run.firstLine().startsWith("robosim control: cannot reach the Environment at 127.0.0.1:" + port),
                 run.err());
         run.assertNoStackTrace();

@@ -89,7 +89,7 @@ class ProgressAndTracesTest {
                 + " localhost:5000, waiting for step 1: the run starts once every robot of the world has connected - 8 s",
                 RobotProgram.describe(eight, TimeUnit.SECONDS.toNanos(8)));
         assertEquals("robosim robot: robot r1 is waiting for the Environment at localhost:5000 to answer"
-                + " (is robosim env running there?) - 2 s", RobotProgram.describe(List.of(
+                + " (it keeps trying while nothing listens there) - 2 s", RobotProgram.describe(List.of(
                         new RunEndWatch.BeforeFirstStep("r1", "localhost:5000", false, TimeUnit.SECONDS.toNanos(2))),
                 TimeUnit.SECONDS.toNanos(2)));
     }

@@ -6,7 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -161,6 +163,38 @@ class RunProgressLineTest {
         assertEquals("waiting for robot r2 (1 of 2 connected) - 4 s, no time limit",
                 RunProgressLine.describeWait(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 1, List.of("r2"), 0, 0, 0,
                         4 * S, 0)));
+    }
+
+    @Test
+    void refusedRobotsAreNamedWithWhyAndAWaitWhoseRobotsWereAllRefusedSaysWhatToDo() {
+        Map<String, String> one = new LinkedHashMap<>();
+        one.put("r1", "presented no run secret");
+        assertEquals("waiting for robots r1, r2 (0 of 2 connected) - 3 s of 600; refused: r1 (presented no run secret)",
+                RunProgressLine.describeWait(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 0, List.of("r1", "r2"), 0, 0,
+                        0, 3 * S, 600 * S, one)));
+        Map<String, String> both = new LinkedHashMap<>(one);
+        both.put("r2", "presented a wrong run secret");
+        String all = RunProgressLine.describeWait(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 0, List.of("r1", "r2"),
+                0, 0, 0, 3 * S, 600 * S, both));
+        assertTrue(all.startsWith("waiting for robots r1, r2 (0 of 2 connected) - 3 s of 600; refused: r1 (presented no"
+                + " run secret), r2 (presented a wrong run secret). Every robot waited for was refused: start them on this"
+                + " machine as the same user"), all);
+        Map<String, String> name = Map.of("r9", "world empty-room has no robot named 'r9'");
+        assertTrue(RunProgressLine.describeWait(new Status(Phase.CONNECTING, 0, 0, 100, 0, 1, 0, List.of("r9"), 0, 0, 0,
+                S, 600 * S, name)).endsWith("Every robot waited for was refused: fix what the refusals say and start"
+                + " them again; the Environment keeps waiting"));
+    }
+
+    @Test
+    void aNewRefusalIsShownAtOnceOffATerminal() {
+        RunProgressLine p = line(false, 200);
+        now = 0;
+        p.progress(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 0, List.of("r1", "r2"), 0, 0, 0, S / 2, 600 * S));
+        assertEquals(List.of(), lines(), "no line before the schedule's first");
+        p.progress(new Status(Phase.CONNECTING, 0, 0, 100, 0, 2, 0, List.of("r1", "r2"), 0, 0, 0, S / 2 + TICK,
+                600 * S, Map.of("r2", "presented no run secret")));
+        assertEquals(List.of("waiting for robots r1, r2 (0 of 2 connected) - 0 s of 600; refused: r2 (presented no"
+                + " run secret)"), lines());
     }
 
     @Test

@@ -44,6 +44,11 @@ public final class RunSecret {
     /** {@link #RULE} in words. */
     public static final String RULE_TEXT = "a run secret is 16 to 128 letters, digits, '-' or '_'";
 
+    /** How the Environment's refusal of a peer that presented no secret goes on after the peer's name. */
+    public static final String REFUSED_NONE = "presented no run secret";
+    /** How the Environment's refusal of a peer that presented another secret goes on after the peer's name. */
+    public static final String REFUSED_WRONG = "presented a wrong run secret";
+
     private static final SecureRandom RANDOM = new SecureRandom();
 
     private RunSecret() {
@@ -82,6 +87,48 @@ public final class RunSecret {
         }
         return MessageDigest.isEqual(expected.getBytes(StandardCharsets.UTF_8),
                 presented.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /**
+     * Whether the Environment refused a peer for the secret it presented: such a refusal may clear
+     * when the secret the client finds now is another (the Environment wrote its file after the
+     * client looked, or replaced a file an earlier run left), see {@link #mayClear}.
+     *
+     * @param reason the reason of the Environment's refusal, with or without {@link Bye#REFUSED}
+     * @return whether it is about the secret
+     */
+    public static boolean isSecretRefusal(String reason) {
+        return reason != null && (reason.contains(REFUSED_NONE) || reason.contains(REFUSED_WRONG));
+    }
+
+    /**
+     * The rule every client of the Environment follows when it is refused: a refusal for the secret
+     * clears when the secret found now (in the places {@link #find} looks) is not the one presented;
+     * any other refusal, or the same secret refused again, is final.
+     *
+     * @param reason    the Environment's reason
+     * @param presented the secret the refused hello presented, or null
+     * @param now       the secret found now, or null
+     * @return whether to try again with {@code now}
+     */
+    public static boolean mayClear(String reason, String presented, String now) {
+        return isSecretRefusal(reason) && now != null && !now.equals(presented);
+    }
+
+    /**
+     * Finds the secret again after a refusal, as {@link #find(String, String, int)} does, but never
+     * throws: a secret that cannot be read now is taken as none.
+     *
+     * @param host the host the client connects to
+     * @param port the port it connects to
+     * @return the secret found now, or null
+     */
+    public static String findAgain(String host, int port) {
+        try {
+            return find(null, host, port);
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
     }
 
     /** @return the folder of the Environment's secret files */

@@ -47,7 +47,7 @@ public record Access(String secret, boolean publicView) {
         if (!guarded() || RunSecret.matches(secret, presented)) {
             return null;
         }
-        return who + (presented == null ? " presented no run secret" : " presented a wrong run secret")
+        return who + " " + (presented == null ? RunSecret.REFUSED_NONE : RunSecret.REFUSED_WRONG)
                 + "; this Environment admits only those who present the secret it printed at its start (a --token"
                 + " option, the " + RunSecret.ENV + " variable, or the file it wrote)";
     }

@@ -122,6 +122,13 @@ final class Connection {
         send(new Bye(reason != null ? reason : Bye.GOODBYE, robot));
     }
 
+    /** Ends one robot's part on a shared link quietly: its run ended, and the bye says so. */
+    void endRobot(String robot, String reason) {
+        if (robots.remove(robot)) {
+            send(new Bye(reason, robot));
+        }
+    }
+
     void setName(String name) {
         this.name = name;
     }

@@ -67,6 +67,8 @@ public final class EnvironmentServer implements AutoCloseable {
         this.workers = new PooledParallel(options.threads());
         this.sender = new TimeStepSender(codec, workers);
         this.pump = new ConnectionPump(doorway, rules, progress, sender);
+        // the pace is the run's from the start: a status asked for while robots connect says it truly
+        rules.control().startPace(options.realtime() ? 1 : 0);
         sim.setParallel(workers);
     }
 
@@ -234,7 +236,7 @@ public final class EnvironmentServer implements AutoCloseable {
                         : "robots " + rules.missing();
                 String why = who + " and " + Math.max(0,
                         options.waitViewers() - rules.viewerCount()) + " viewer(s) did not connect within "
-                        + inUnitGiven(options.connectTimeoutMs());
+                        + inUnitGiven(options.connectTimeoutMs()) + refusedClause();
                 // the robots that came are told why the run they waited for will not start
                 for (Connection c : doorway.connections()) {
                     c.sendAndClose(new Bye("the run did not start: " + why));
@@ -245,10 +247,20 @@ public final class EnvironmentServer implements AutoCloseable {
         }
     }
 
+    /** @return {@code ; refused: r1 (presented no run secret), ...}, or nothing when none was refused */
+    private String refusedClause() {
+        Map<String, String> refused = rules.refusals();
+        if (refused.isEmpty()) {
+            return "";
+        }
+        List<String> each = new ArrayList<>();
+        refused.forEach((who, why) -> each.add(who + " (" + why + ")"));
+        return "; refused: " + String.join(", ", each);
+    }
+
     private String loop() throws InterruptedException {
         progress.runningSince(System.nanoTime());
         RunControl control = rules.control();
-        control.startPace(options.realtime() ? 1 : 0);
         while (true) {
             if (progress.following()) {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
@@ -318,22 +330,42 @@ public final class EnvironmentServer implements AutoCloseable {
         rules.openStep(current);
         sender.send(sim(), rules.connectedRobots(), current);
         long opened = System.nanoTime();
-        long deadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
         progress.waitingSince(opened);
+        // the deadline counts from the later of the step's opening and the last welcome
+        long from = rules.lastWelcomedNanos() - opened > 0 ? rules.lastWelcomedNanos() : opened;
+        long deadline = from + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
+        // robots in their first steps (loading classes, warming up) may take longer: see ServerOptions
+        long firstDeadline = from + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs(1));
         while (!rules.waitingFor().isEmpty()) {
             long now = System.nanoTime();
             progress.reportIfDue(RunProgress.Phase.STEP_HELD, now);
-            if (now >= deadline) {
+            if (now - deadline >= 0) {
                 Set<String> late = new LinkedHashSet<>(rules.waitingFor());
+                boolean anyStarting = false;
                 for (String name : late) {
-                    rules.drop(name, "it did not send its requests for step " + current + " within "
-                            + options.stepTimeoutMs() + " ms");
+                    long own = rules.robotStep(name, current);
+                    if (own <= ServerOptions.FIRST_STEPS && now - firstDeadline < 0) {
+                        anyStarting = true;
+                        continue;
+                    }
+                    rules.drop(name, lateReason(current, own));
                 }
-                break;
+                if (!anyStarting) {
+                    break;
+                }
+                deadline = firstDeadline;
             }
             pump(deadline);
         }
         return rules.closeStep();
+    }
+
+    /** @return why a robot is dropped that sent nothing for a step, naming the option that would give it longer */
+    private String lateReason(long step, long robotStep) {
+        long ms = options.stepTimeoutMs(robotStep);
+        String option = ms > options.stepTimeoutMs() ? "one of its first " + ServerOptions.FIRST_STEPS
+                + " steps; env --first-steps-timeout gives them longer" : "env --step-timeout gives it longer";
+        return "it did not send its requests for step " + step + " within " + ms + " ms (" + option + ")";
     }
 
     private void pump(long deadlineNanos) throws InterruptedException {

@@ -1,6 +1,7 @@
 package robosim.env.net;
 
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import robosim.env.core.Simulation;
@@ -99,7 +100,8 @@ final class ProgressReports {
             listener.progress(new RunProgress.Status(phase, sim().stepCount(), sim().timeMs(), sim().world().stepMs(),
                     options.maxSteps(), sim().robotNames().size(), rules.connectedRobots().size(), waitingFor,
                     rules.viewerCount(), options.waitViewers(), runNanos, waitedNanos,
-                    TimeUnit.MILLISECONDS.toNanos(limitMs)));
+                    TimeUnit.MILLISECONDS.toNanos(limitMs),
+                    phase == RunProgress.Phase.CONNECTING ? rules.refusals() : Map.of()));
         } catch (RuntimeException e) {
             // progress is a courtesy: a listener that fails is logged and dropped, the run goes on
             LOG.warning(() -> "the progress listener failed and is dropped: " + e);

@@ -1,5 +1,6 @@
 package robosim.env.net;
 
+import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.logging.Logger;
@@ -23,16 +24,36 @@ final class RobotJoins {
     private final CurrentRun run;
     private final RobotAdmission admission;
     private final Departures departures;
+    private final Refusals refusals;
+    /** The first step each robot took part in since it was last welcomed. */
+    private final Map<String, Long> firstSteps = new HashMap<>();
+    private long lastWelcomedNanos = System.nanoTime();
     private boolean worldChanged;
 
-    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures) {
+    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures, Refusals refusals) {
         this.run = run;
         this.admission = new RobotAdmission(run, access, limits.maxRobots());
         this.departures = departures;
+        this.refusals = refusals;
     }
 
     private Simulation sim() {
         return run.sim();
+    }
+
+    /**
+     * @param robot a robot connected
+     * @param step  a step of the run
+     * @return the robot's own count of that step: 1 for the first step it takes part in since it was
+     *         welcomed (a robot that joins late, or again, starts again from 1)
+     */
+    long robotStep(String robot, long step) {
+        return step - firstSteps.getOrDefault(robot, 1L) + 1;
+    }
+
+    /** @return when the last robot was welcomed, {@link System#nanoTime()} */
+    long lastWelcomedNanos() {
+        return lastWelcomedNanos;
     }
 
     /** @return whether a robot was added to the world since the last call */
@@ -61,6 +82,7 @@ final class RobotJoins {
         }
         if (refusal != null) {
             LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
+            refusals.refused(RobotHello.printable(hello.name()), refusal);
             if (c.isLink()) {
                 c.send(new Bye(Bye.REFUSED + refusal, hello.name()));
             } else {
@@ -74,11 +96,15 @@ final class RobotJoins {
             c.setName(hello.name());
         }
         robots.put(hello.name(), c);
+        refusals.admitted(hello.name());
         sim().setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name()), sim().world().properties(),
                 sim().seed()));
+        lastWelcomedNanos = System.nanoTime();
+        long first = openStep > 0 ? openStep + 1 : sim().stepCount() + 1;
+        firstSteps.put(hello.name(), first);
         String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";
-        Join join = departures.joined(hello.name(), spawned, openStep > 0 ? openStep + 1 : sim().stepCount() + 1);
+        Join join = departures.joined(hello.name(), spawned, first);
         if (join == null) {
             LOG.info(() -> "robot " + hello.name() + " connected" + on);
         } else {

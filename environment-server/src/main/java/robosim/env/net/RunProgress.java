@@ -1,6 +1,9 @@
 package robosim.env.net;
 
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Follows an {@link EnvironmentServer}'s run for a launcher that shows its progress: the server
@@ -47,13 +50,24 @@ public interface RunProgress {
      *                        is held: since the step opened; else 0; ns
      * @param waitLimitNanos  how long that wait may last (the connect or the step timeout); 0 while running,
      *                        and while connecting after a restart or load, which has no time limit
+     * @param refused         while {@link Phase#CONNECTING}: the robots (or shared links) refused since the wait
+     *                        began and not connected since, with the first clause of why, oldest first; else empty
      */
     record Status(Phase phase, long step, long timeMs, int stepMs, long maxSteps, int robots, int connected,
                   List<String> waitingFor, int viewers, int viewersAwaited, long runNanos, long waitedNanos,
-                  long waitLimitNanos) {
-        /** Copies the list of robots waited for. */
+                  long waitLimitNanos, Map<String, String> refused) {
+        /** Copies the list of robots waited for and the refusals, keeping their order. */
         public Status {
             waitingFor = List.copyOf(waitingFor);
+            refused = Collections.unmodifiableMap(new LinkedHashMap<>(refused));
+        }
+
+        /** A status with no refusals. */
+        public Status(Phase phase, long step, long timeMs, int stepMs, long maxSteps, int robots, int connected,
+                      List<String> waitingFor, int viewers, int viewersAwaited, long runNanos, long waitedNanos,
+                      long waitLimitNanos) {
+            this(phase, step, timeMs, stepMs, maxSteps, robots, connected, waitingFor, viewers, viewersAwaited, runNanos,
+                    waitedNanos, waitLimitNanos, Map.of());
         }
     }
 }

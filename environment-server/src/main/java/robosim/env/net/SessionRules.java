@@ -49,6 +49,7 @@ final class SessionRules {
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
     private final LogForwarding log = new LogForwarding();
+    private final Refusals refusals = new Refusals();
     /** The last step each robot answered in time, for control clients' status. */
     private final Map<String, Long> answered = new HashMap<>();
     private long openStep;
@@ -62,7 +63,7 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.run = new CurrentRun(sim);
         this.access = access;
-        this.joins = new RobotJoins(run, access, limits, departures);
+        this.joins = new RobotJoins(run, access, limits, departures, refusals);
         this.control = new RunControl(run, this, limits.maxRobots());
         this.viewerPort = new ViewerPortRules(run, access, limits, control);
     }
@@ -83,10 +84,11 @@ final class SessionRules {
      */
     void replace(Simulation next, String why) {
         for (String robot : List.copyOf(robots.keySet())) {
-            drop(robot, why);
+            endFor(robot, why);
         }
         run.replace(next);
         departures.reset();
+        refusals.clear();
         answered.clear();
         openStep = 0;
         commands = null;
@@ -134,6 +136,21 @@ final class SessionRules {
     /** @return the last step the robot answered in time, 0 if none */
     long lastAnswered(String robot) {
         return answered.getOrDefault(robot, 0L);
+    }
+
+    /** @return the robots refused since the run began to wait for its robots, with why, oldest first */
+    Map<String, String> refusals() {
+        return refusals.all();
+    }
+
+    /** @see RobotJoins#robotStep */
+    long robotStep(String robot, long step) {
+        return joins.robotStep(robot, step);
+    }
+
+    /** @see RobotJoins#lastWelcomedNanos */
+    long lastWelcomedNanos() {
+        return joins.lastWelcomedNanos();
     }
 
     Set<String> waitingFor() {
@@ -232,6 +249,7 @@ final class SessionRules {
             } else if (m instanceof LinkHello hello) {
                 String refusal = access.refusal("a shared link", hello.token());
                 if (refusal != null) {
+                    refusals.refused("a shared link (" + c.peer() + ")", refusal);
                     c.refuse(refusal);
                     return;
                 }
@@ -402,6 +420,25 @@ final class SessionRules {
             c.close(reason);
         } else {
             c.sendAndClose(new Bye(Bye.GOODBYE));
+        }
+    }
+
+    /**
+     * Ends a robot's part because its run ends (a restart or load): it is told so with a
+     * {@link Bye#DONE} bye, as at a run's end, not dropped.
+     */
+    private void endFor(String name, String why) {
+        Connection c = robots.remove(name);
+        waiting.remove(name);
+        sim().halt(name);
+        sim().setConnected(name, false);
+        if (c == null) {
+            return;
+        }
+        if (c.isLink()) {
+            c.endRobot(name, Bye.DONE + why);
+        } else {
+            c.sendAndClose(new Bye(Bye.DONE + why));
         }
     }
 

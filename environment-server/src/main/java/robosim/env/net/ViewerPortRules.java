@@ -165,7 +165,7 @@ final class ViewerPortRules {
                     u.lossProbability() != null ? u.lossProbability() : now.lossProbability(),
                     u.maxMessageBytes() != null ? u.maxMessageBytes() : now.maxMessageBytes());
             sim().setCommsSettings(next);
-            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim().stepCount() + " to " + next);
+            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim().stepCount() + " to " + next.describe());
             c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
                     next.maxMessageBytes()));
         } catch (IllegalArgumentException e) {

@@ -1,10 +1,12 @@
 package robosim.viewer.net;
 
 import java.io.IOException;
+import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -36,6 +38,8 @@ import robosim.protocol.recording.SnapshotListener;
  */
 public final class ViewerClient {
     private static final Logger LOG = Logger.getLogger(ViewerClient.class.getName());
+    /** How long to wait before connecting again while nothing listens, ms. */
+    static final long RETRY_MS = 200;
 
     private final ViewerOptions options;
     private final List<SnapshotListener> listeners;
@@ -84,15 +88,34 @@ public final class ViewerClient {
      *                         read timeout, breaks the protocol, or a listener fails
      */
     public ViewerSummary run() throws ViewerException {
-        Session session = new Session();
+        long deadline = System.nanoTime() + options.connectTimeout().toNanos();
         String token;
         try {
             token = RunSecret.find(null, options.host(), options.port());
         } catch (IllegalArgumentException e) {
             throw new ViewerException("cannot attach to the environment at " + options.peer() + ": " + e.getMessage(), e);
         }
+        while (true) {
+            try {
+                return attach(token, deadline);
+            } catch (ViewerException e) {
+                // a refusal of a secret found before the Environment wrote its own clears (RunSecret.mayClear)
+                String now = e.refusal() == null ? null : RunSecret.findAgain(options.host(), options.port());
+                if (stopped || !RunSecret.mayClear(e.refusal(), token, now) || System.nanoTime() - deadline > 0) {
+                    throw e;
+                }
+                LOG.info(() -> "viewer '" + options.name() + "': the environment at " + options.peer() + " refused the"
+                        + " run secret found first, and another has appeared since; trying again");
+                token = now;
+            }
+        }
+    }
+
+    /** One attempt: connects (trying again until the deadline while nothing listens), says hello and follows the run. */
+    private ViewerSummary attach(String token, long deadline) throws ViewerException {
+        Session session = new Session();
         try {
-            socket = connect();
+            socket = connect(deadline);
             if (stopped) {
                 closeQuietly(socket);
             }
@@ -100,7 +123,9 @@ public final class ViewerClient {
             new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name(), token));
             return session.run(new FrameReader(socket.getInputStream(), codec, options.maxFrame()));
         } catch (ViewerException e) {
-            session.abandon();
+            if (e.refusal() == null) {
+                session.abandon();
+            }
             throw e;
         } catch (IOException e) {
             session.abandon();
@@ -116,18 +141,34 @@ public final class ViewerClient {
         }
     }
 
-    private Socket connect() throws ViewerException {
-        int timeoutMs = Math.toIntExact(options.connectTimeout().toMillis());
-        Socket s = new Socket();
-        try {
-            s.connect(new InetSocketAddress(options.host(), options.port()), timeoutMs);
-            LOG.info(() -> "viewer '" + options.name() + "' connected to the environment at " + options.peer());
-            return s;
-        } catch (IOException e) {
-            closeQuietly(s);
-            String why = e instanceof SocketTimeoutException ? "no answer within " + timeoutMs + " ms (connectTimeout)"
-                    : e.getClass().getSimpleName() + ": " + e.getMessage();
-            throw new ViewerException("cannot connect to the environment at " + options.peer() + ": " + why, e);
+    /** Connects, trying again every {@value #RETRY_MS} ms while nothing listens (an Environment starting), until the deadline. */
+    private Socket connect(long deadline) throws ViewerException {
+        while (true) {
+            int timeoutMs = Math.toIntExact(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+            Socket s = new Socket();
+            try {
+                s.connect(new InetSocketAddress(options.host(), options.port()), timeoutMs);
+                LOG.info(() -> "viewer '" + options.name() + "' connected to the environment at " + options.peer());
+                return s;
+            } catch (IOException e) {
+                closeQuietly(s);
+                boolean again = e instanceof ConnectException && !stopped
+                        && deadline - System.nanoTime() > TimeUnit.MILLISECONDS.toNanos(RETRY_MS);
+                if (again) {
+                    try {
+                        Thread.sleep(RETRY_MS);
+                        continue;
+                    } catch (InterruptedException ie) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
+                String why = e instanceof SocketTimeoutException ? "no answer within "
+                        + options.connectTimeout().toMillis() + " ms (connectTimeout)"
+                        : e.getClass().getSimpleName() + ": " + e.getMessage()
+                        + (e instanceof ConnectException ? " (tried for " + options.connectTimeout().toMillis()
+                        + " ms, connectTimeout)" : "");
+                throw new ViewerException("cannot connect to the environment at " + options.peer() + ": " + why, e);
+            }
         }
     }
 
@@ -152,7 +193,8 @@ public final class ViewerClient {
                 throw fail("closed the connection before sending the world description", null);
             }
             if (first instanceof Bye bye) {
-                throw fail("sent no world: " + bye.reason(), null);
+                throw new ViewerException("the environment at " + options.peer() + " sent no world: " + bye.reason(), null,
+                        bye.reason().startsWith(Bye.REFUSED) ? bye.reason() : null);
             }
             if (!(first instanceof WorldDescription description)) {
                 throw fail("broke the protocol: the first message must be a world description, not "
@@ -168,7 +210,7 @@ public final class ViewerClient {
                     }
                     closeListeners();
                     ViewerSummary summary = summary(reason);
-                    LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": " + summary);
+                    LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": " + summary.describe());
                     return summary;
                 } else if (m instanceof Snapshot snapshot) {
                     received++;

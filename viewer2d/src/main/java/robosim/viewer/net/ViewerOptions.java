@@ -10,7 +10,8 @@ import robosim.protocol.FrameReader;
  * @param host           the Environment's host
  * @param port           its viewer port, 1 to 65535
  * @param name           the name the viewer gives in its {@code ViewerHello}
- * @param connectTimeout the longest wait for the connection, positive
+ * @param connectTimeout the longest wait for the connection, positive; while nothing listens (an
+ *                       Environment starting) the client tries again within it
  * @param readTimeout    the longest wait for any one message, positive
  * @param maxFrame       the largest frame payload accepted, in bytes
  */

@@ -10,4 +10,9 @@ package robosim.viewer.net;
  */
 public record ViewerSummary(String world, long snapshotsReceived, long lastStep,
                             String endReason) {
+    /** @return the summary in words: {@code world maze-small, 120 snapshots up to step 119; ended: done: ...} */
+    public String describe() {
+        return "world " + world + ", " + snapshotsReceived + " snapshot" + (snapshotsReceived == 1 ? "" : "s")
+                + (lastStep >= 0 ? " up to step " + lastStep : "") + "; ended: " + endReason;
+    }
 }
