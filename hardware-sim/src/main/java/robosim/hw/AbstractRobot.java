@@ -97,19 +97,21 @@ public abstract class AbstractRobot {
      */
     private void connectFinding(HardwareOptions options, Supplier<EnvironmentLink> links) throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
-        String secret = RunSecret.find(null, host, port);
+        // found now too, so that a secret that breaks its rule is said before any connection
+        String first = RunSecret.find(null, host, port);
         while (true) {
+            SecretLookup lookup = new SecretLookup(host, port, first);
             try {
-                connect(options, links.get(), secret);
+                connect(options, links.get(), first, lookup);
                 return;
             } catch (RefusedException e) {
                 String now = RunSecret.findAgain(host, port);
-                if (!RunSecret.mayClear(e.reason(), secret, now) || System.nanoTime() - deadline > 0) {
+                if (!RunSecret.mayClear(e.reason(), lookup.given(), now) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
                 LOG.info(() -> "robot " + name + ": the Environment at " + host + ":" + port + " refused the run secret"
-                        + " found first, and another has appeared since (the Environment was starting); trying again");
-                secret = now;
+                        + " found, and another has appeared since; trying again");
+                first = now;
             }
         }
     }
@@ -144,8 +146,17 @@ public abstract class AbstractRobot {
     }
 
     private void connect(HardwareOptions options, EnvironmentLink link, String secret) throws IOException {
+        connect(options, link, secret, null);
+    }
+
+    /** @param lookup gives the secret once connected, or null to present {@code secret} */
+    private void connect(HardwareOptions options, EnvironmentLink link, String secret, Supplier<String> lookup)
+            throws IOException {
         HardwareSimulator hw = new HardwareSimulator(new RobotHello(name, robotType, parameters, secret),
                 this::responded, options);
+        if (lookup != null) {
+            hw.lookUpSecret(lookup);
+        }
         // the hardware may deliver the first step before connect returns; it waits for the first yield
         hardware = hw;
         Welcome w;

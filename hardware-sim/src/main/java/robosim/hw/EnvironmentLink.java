@@ -2,6 +2,7 @@ package robosim.hw;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.function.Supplier;
 import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
 
@@ -25,6 +26,20 @@ public interface EnvironmentLink {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     Welcome open(RobotHello hello, StepReceiver receiver) throws IOException;
+
+    /**
+     * Opens as {@link #open(RobotHello, StepReceiver)} does, presenting the secret {@code secret}
+     * gives once the connection is open (looked up then, not before).
+     *
+     * @param hello    the robot's name, type and parameters
+     * @param secret   gives the run secret to present; null to present the hello's own
+     * @param receiver where the steps go
+     * @return the welcome
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    default Welcome open(RobotHello hello, Supplier<String> secret, StepReceiver receiver) throws IOException {
+        return open(secret == null ? hello : hello.withToken(secret.get()), receiver);
+    }
 
     /**
      * Sends the robot's requests for a step.

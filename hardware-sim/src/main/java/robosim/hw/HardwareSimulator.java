@@ -9,6 +9,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.Consumer;
 import java.util.function.LongPredicate;
+import java.util.function.Supplier;
 import java.util.logging.Logger;
 import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
@@ -58,6 +59,8 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private volatile Thread keeper;
     private volatile long joinedNanos;
     private volatile boolean welcomed;
+    /** Gives the secret to present once connected; null to present the hello's own. */
+    private volatile Supplier<String> secret;
     /** The steps the run had run when the Environment welcomed the robot (written before {@link #welcomed}). */
     private volatile long welcomedAfterStep;
     private long warnedStep = -1;
@@ -102,7 +105,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         joinedNanos = System.nanoTime();
         RunEndWatch.joining(this);
         try {
-            Welcome w = link.open(hello, this);
+            Welcome w = link.open(hello, secret, this);
             welcomedAfterStep = w.state().step();
             welcomed = true;
             WATCHED.add(this);
@@ -116,6 +119,15 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
             }
             throw e;
         }
+    }
+
+    /**
+     * Has the secret looked up once the connection is open, instead of the hello's own.
+     *
+     * @param lookup gives the secret to present
+     */
+    void lookUpSecret(Supplier<String> lookup) {
+        this.secret = lookup;
     }
 
     @Override

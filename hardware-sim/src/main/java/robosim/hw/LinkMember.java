@@ -2,6 +2,7 @@ package robosim.hw;
 
 import java.io.IOException;
 import java.util.List;
+import java.util.function.Supplier;
 import robosim.protocol.Bye;
 import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
@@ -27,10 +28,15 @@ final class LinkMember extends ReleasedOnClose {
 
     @Override
     public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
+        return open(hello, null, receiver);
+    }
+
+    @Override
+    public Welcome open(RobotHello hello, Supplier<String> secret, StepReceiver receiver) throws IOException {
         this.name = hello.name();
         this.receiver = receiver;
         try {
-            link = SharedLink.to(host, port, options, hello.token());
+            link = SharedLink.to(host, port, options, secret != null ? secret : hello::token);
             return link.join(this, hello);
         } catch (IOException | RuntimeException e) {
             close();

@@ -16,6 +16,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -87,7 +88,7 @@ final class SharedLink {
         });
     }
 
-    private SharedLink(String host, int port, HardwareOptions options, String secret) throws IOException {
+    private SharedLink(String host, int port, HardwareOptions options, Supplier<String> secret) throws IOException {
         this.host = host;
         this.port = port;
         this.options = options;
@@ -96,7 +97,7 @@ final class SharedLink {
             socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), secret));
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), secret.get()));
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;
@@ -109,11 +110,11 @@ final class SharedLink {
      * @param host    the Environment's host
      * @param port    its robot port
      * @param options timeouts (the first robot's serve the whole link)
-     * @param secret  the run secret the link presents, found by the robot that opens it, or null
+     * @param secret  gives the run secret the link presents once connected (the opening robot's)
      * @return the link
      * @throws IOException if it cannot connect
      */
-    static SharedLink to(String host, int port, HardwareOptions options, String secret) throws IOException {
+    static SharedLink to(String host, int port, HardwareOptions options, Supplier<String> secret) throws IOException {
         String key = host + ":" + port;
         synchronized (CONNECTING) {
             SharedLink link = OPEN.get(key);

@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -110,12 +111,17 @@ final class SocketLink extends ReleasedOnClose {
 
     @Override
     public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
+        return open(hello, null, receiver);
+    }
+
+    @Override
+    public Welcome open(RobotHello hello, Supplier<String> secret, StepReceiver receiver) throws IOException {
         try {
             socket = connectSocket(host, port, options);
             socket.setSoTimeout((int) options.connectTimeoutMs());
             reader = new FrameReader(socket.getInputStream(), CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), CODEC);
-            writer.write(hello);
+            writer.write(secret == null ? hello : hello.withToken(secret.get()));
             Message first = reader.read();
             while (first instanceof KeepAlive) {
                 first = reader.read();

@@ -1,6 +1,9 @@
 package robosim.cli;
 
 import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -122,6 +125,44 @@ final class AccessOptions {
                 + " (only you can read it); clients of yours on this machine find it there, others need it as $"
                 + RunSecret.ENV + (tokenFile != null ? " or $" + RunSecret.FILE_ENV : ""));
         return files;
+    }
+
+    /**
+     * Writes the secret for the fixed ports the Environment is about to listen on, before it listens:
+     * a client that connects the moment it can then always finds this run's secret, never none or
+     * an earlier run's. A port another process listens on is left alone (its file is that run's;
+     * the Environment will fail to listen there anyway), and so is port 0, whose number no client
+     * can know before the Environment prints it.
+     *
+     * @param secret the run's secret
+     * @param bind   the address the Environment will listen on
+     * @param ports  the ports it will listen on
+     * @return the files written, to remove if the Environment cannot listen after all
+     * @throws IOException if a file cannot be written
+     */
+    List<Path> publishAhead(String secret, String bind, int... ports) throws IOException {
+        List<Path> files = new ArrayList<>();
+        if (tokenFile != null) {
+            return files;
+        }
+        for (int port : ports) {
+            if (port != 0 && free(bind, port)) {
+                Path f = RunSecret.fileFor(port);
+                RunSecret.write(f, secret);
+                files.add(f);
+            }
+        }
+        return files;
+    }
+
+    /** @return whether nothing listens on the port now (it can be bound) */
+    private static boolean free(String bind, int port) {
+        try (ServerSocket probe = new ServerSocket()) {
+            probe.bind(new InetSocketAddress(InetAddress.getByName(bind), port));
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /**

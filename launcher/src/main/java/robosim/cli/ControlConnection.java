@@ -61,11 +61,18 @@ final class ControlConnection {
     static <T> T exchange(ViewerPortOptions at, String name, String token, int timeoutMs, Exchange<T> exchange)
             throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        String presented = token;
+        String first = token;
+        String[] presented = {token};
         while (true) {
             ControlClient c;
+            String before = first;
             try {
-                c = ControlClient.open(at.host, at.port(), name, presented, timeoutMs);
+                c = ControlClient.open(at.host, at.port(), name, () -> {
+                    // looked up once connected: the Environment wrote its secret before it listened
+                    String now = RunSecret.findAgain(at.host, at.port());
+                    presented[0] = now != null ? now : before;
+                    return presented[0];
+                }, timeoutMs);
             } catch (ConnectException e) {
                 if (deadline - System.nanoTime() < TimeUnit.MILLISECONDS.toNanos(RETRY_MS)) {
                     throw new ConnectException(e.getMessage() + " (tried for " + timeoutMs / 1000 + " s, --timeout)");
@@ -77,10 +84,10 @@ final class ControlConnection {
                 return exchange.with(c);
             } catch (ControlClient.NoAnswerException e) {
                 String now = RunSecret.findAgain(at.host, at.port());
-                if (!RunSecret.mayClear(e.getMessage(), presented, now) || System.nanoTime() - deadline > 0) {
+                if (!RunSecret.mayClear(e.getMessage(), presented[0], now) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
-                presented = now;
+                first = now;
             }
         }
     }

@@ -157,6 +157,13 @@ final class EnvCommand implements Callable<Integer> {
         PioneerPorts pioneerPorts = null;
         try (EnvironmentServer server = made) {
             try {
+                // the secret is where clients look before anyone can connect (see publishAhead)
+                secretFiles = secret == null ? List.of() : access.publishAhead(secret, bind, port, viewerPort);
+            } catch (IOException e) {
+                err.println("robosim env: cannot write the run secret: " + e.getMessage());
+                return 1;
+            }
+            try {
                 server.bind();
             } catch (IllegalStateException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage() + " (leave out --no-token)");

@@ -86,4 +86,12 @@ public record RobotHello(String name, String robotType, RobotParameters paramete
     public static String quoted(String name) {
         return name == null ? printable(null) : "'" + printable(name) + "'";
     }
+
+    /**
+     * @param secret the run secret to present, or null
+     * @return this hello presenting it
+     */
+    public RobotHello withToken(String secret) {
+        return new RobotHello(name, robotType, parameters, secret);
+    }
 }

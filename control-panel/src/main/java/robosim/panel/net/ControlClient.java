@@ -6,6 +6,7 @@ import java.net.Socket;
 import java.util.List;
 import java.util.function.Consumer;
 import java.util.function.Predicate;
+import java.util.function.Supplier;
 import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlReply;
@@ -50,12 +51,29 @@ public final class ControlClient implements AutoCloseable {
      */
     public static ControlClient open(String host, int port, String name, String token, int timeoutMs)
             throws IOException {
+        return open(host, port, name, () -> token, timeoutMs);
+    }
+
+    /**
+     * Connects and says hello, presenting the secret {@code token} gives once the connection is open:
+     * an Environment writes its secret before it listens, so a secret looked up then is this run's.
+     *
+     * @param host      the Environment's host
+     * @param port      its viewer port
+     * @param name      the client's name, for the Environment's log
+     * @param token     gives the run secret, or null for none
+     * @param timeoutMs the longest wait for connecting (at most 10 s) and for each answer
+     * @return the connection, hello said
+     * @throws IOException if the Environment cannot be reached
+     */
+    public static ControlClient open(String host, int port, String name, Supplier<String> token, int timeoutMs)
+            throws IOException {
         Socket s = new Socket();
         try {
             s.connect(new InetSocketAddress(host, port), Math.min(timeoutMs, 10_000));
             s.setSoTimeout(timeoutMs);
             ControlClient c = new ControlClient(s);
-            c.send(new ControlHello(name, token));
+            c.send(new ControlHello(name, token.get()));
             return c;
         } catch (IOException | RuntimeException e) {
             s.close();

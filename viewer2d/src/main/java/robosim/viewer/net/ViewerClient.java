@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -89,30 +90,38 @@ public final class ViewerClient {
      */
     public ViewerSummary run() throws ViewerException {
         long deadline = System.nanoTime() + options.connectTimeout().toNanos();
-        String token;
+        String first;
         try {
-            token = RunSecret.find(null, options.host(), options.port());
+            // found now too, so that a secret that breaks its rule is said before any connection
+            first = RunSecret.find(null, options.host(), options.port());
         } catch (IllegalArgumentException e) {
             throw new ViewerException("cannot attach to the environment at " + options.peer() + ": " + e.getMessage(), e);
         }
         while (true) {
+            String[] presented = {first};
+            String before = first;
             try {
-                return attach(token, deadline);
+                return attach(() -> {
+                    // looked up once connected: the Environment wrote its secret before it listened
+                    String now = RunSecret.findAgain(options.host(), options.port());
+                    presented[0] = now != null ? now : before;
+                    return presented[0];
+                }, deadline);
             } catch (ViewerException e) {
                 // a refusal of a secret found before the Environment wrote its own clears (RunSecret.mayClear)
                 String now = e.refusal() == null ? null : RunSecret.findAgain(options.host(), options.port());
-                if (stopped || !RunSecret.mayClear(e.refusal(), token, now) || System.nanoTime() - deadline > 0) {
+                if (stopped || !RunSecret.mayClear(e.refusal(), presented[0], now) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
                 LOG.info(() -> "viewer '" + options.name() + "': the environment at " + options.peer() + " refused the"
-                        + " run secret found first, and another has appeared since; trying again");
-                token = now;
+                        + " run secret found, and another has appeared since; trying again");
+                first = now;
             }
         }
     }
 
     /** One attempt: connects (trying again until the deadline while nothing listens), says hello and follows the run. */
-    private ViewerSummary attach(String token, long deadline) throws ViewerException {
+    private ViewerSummary attach(Supplier<String> token, long deadline) throws ViewerException {
         Session session = new Session();
         try {
             socket = connect(deadline);
@@ -120,7 +129,7 @@ public final class ViewerClient {
                 closeQuietly(socket);
             }
             socket.setSoTimeout(Math.toIntExact(options.readTimeout().toMillis()));
-            new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name(), token));
+            new FrameWriter(socket.getOutputStream(), codec).write(new ViewerHello(options.name(), token.get()));
             return session.run(new FrameReader(socket.getInputStream(), codec, options.maxFrame()));
         } catch (ViewerException e) {
             if (e.refusal() == null) {
