@@ -12,6 +12,9 @@ import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.logging.Handler;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -30,11 +33,12 @@ import robosim.hw.RunEndWatch;
 import robosim.protocol.RunSecret;
 
 /**
- * Robots started before their Environment has written its run secret: they look for it again
- * when refused, and join; a secret that is refused again ends the robot at once, and the
- * Environment's waiting line names the refused robots. Each robot is known to have read its secret
- * (it appears in a {@link RunEndWatch}) before the Environment writes its own, so the race is the
- * same every time.
+ * Robots started before their Environment: they look their run secret up once connected, so an
+ * earlier run's file does not get them refused; a refusal of a secret that has changed since is
+ * tried again; a secret refused again ends the robot at once, and the Environment's waiting line
+ * names the refused robots. Each race is made the same every time: a robot is known to have begun
+ * (it appears in a {@link RunEndWatch}) before the Environment starts, and the file changes from
+ * the Environment's own log handler.
  */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)
 class StartRaceTest {
@@ -88,16 +92,16 @@ class StartRaceTest {
     }
 
     @Test
-    void robotsThatFoundAnEarlierRunsSecretJoinOnceTheEnvironmentHasWrittenItsOwn() throws Exception {
+    void robotsStartedBeforeTheEnvironmentFindItsSecretOnceConnectedAndAreNeverRefused() throws Exception {
         int port = freePort();
-        String stale = RunSecret.create();
         String secret = RunSecret.create();
-        RunSecret.write(RunSecret.fileFor(port), stale);
+        // an earlier run's file: what a robot started first finds before the Environment is there
+        RunSecret.write(RunSecret.fileFor(port), RunSecret.create());
         try (RunEndWatch watch = RunEndWatch.open()) {
             CompletableFuture<ArRobot> r1 = robot("r1", port);
             CompletableFuture<ArRobot> r2 = robot("r2", port);
             awaitConnecting(watch, List.of("r1", "r2"));
-            // the Environment starts now, as env does: its secret written before it reads a hello
+            // the Environment starts now, as env does: its secret written before it listens
             RunSecret.write(RunSecret.fileFor(port), secret);
             ServerOptions options = new ServerOptions("127.0.0.1", port, 0, 30, false, 10_000, 60_000, 0, 4 << 20)
                     .withAccess(Access.secret(secret));
@@ -107,11 +111,61 @@ class StartRaceTest {
                 assertEquals("step limit 30 reached", report.endReason());
                 for (CompletableFuture<ArRobot> r : List.of(r1, r2)) {
                     ArRobot robot = r.get(60, TimeUnit.SECONDS);
-                    assertNull(robot.getConnectionError(), "connected after the refusal of the stale secret");
+                    assertNull(robot.getConnectionError());
                     assertEquals(RunEnd.Kind.RUN_ENDED, robot.getRunEnd().kind());
                 }
+                assertTrue(log.warnings().stream().noneMatch(w -> w.contains("refusing")), "none refused: "
+                        + log.warnings());
+            }
+        }
+    }
+
+    /**
+     * The Environment refuses a robot's secret, and by the time the robot reads the refusal another
+     * secret is in the file (here written by the log handler that sees the refusal, before the bye
+     * goes out): the robot tries again with it and joins.
+     */
+    @Test
+    void aRefusalOfASecretThatHasChangedSinceIsTriedAgainAndTheRobotJoins() throws Exception {
+        String secret = RunSecret.create();
+        ServerOptions options = ServerOptions.loopback().withMaxSteps(10).withAccess(Access.secret(secret));
+        Logger envLog = Logger.getLogger("robosim.env.net");
+        try (LogCapture log = new LogCapture("robosim.env.net");
+             LocalEnvironment h = new LocalEnvironment(LocalEnvironment.shipped("empty-room.xml"), 1, options)) {
+            Path file = RunSecret.fileFor(h.robotPort());
+            RunSecret.write(file, RunSecret.create());
+            Handler writesTheSecret = new Handler() {
+                @Override
+                public void publish(LogRecord r) {
+                    if (r.getMessage().startsWith("refusing robot")) {
+                        try {
+                            RunSecret.write(file, secret);
+                        } catch (java.io.IOException e) {
+                            throw new java.io.UncheckedIOException(e);
+                        }
+                    }
+                }
+
+                @Override
+                public void flush() {
+                }
+
+                @Override
+                public void close() {
+                }
+            };
+            envLog.addHandler(writesTheSecret);
+            try {
+                CompletableFuture<ArRobot> r1 = robot("r1", h.robotPort());
+                CompletableFuture<ArRobot> r2 = robot("r2", h.robotPort());
+                assertEquals("step limit 10 reached", h.await().endReason());
+                for (CompletableFuture<ArRobot> r : List.of(r1, r2)) {
+                    assertEquals(RunEnd.Kind.RUN_ENDED, r.get(60, TimeUnit.SECONDS).getRunEnd().kind());
+                }
                 assertTrue(log.warnings().stream().anyMatch(w -> w.contains(RunSecret.REFUSED_WRONG)),
-                        "the stale secret was refused first: " + log.warnings());
+                        "a robot was refused first: " + log.warnings());
+            } finally {
+                envLog.removeHandler(writesTheSecret);
             }
         }
     }
