@@ -94,6 +94,23 @@ class RunStatusTest {
     }
 
     @Test
+    void aRealTimeRunSaysItsPaceBeforeItsFirstRobotJoins() throws Exception {
+        ServerOptions realtime = new ServerOptions("127.0.0.1", 0, 0, 0, true, 10_000, 60_000, 0, 4 << 20);
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", realtime)) {
+            StringWriter out = new StringWriter();
+            CommandLine cl = Main.commandLine();
+            cl.setOut(new PrintWriter(out, true));
+            cl.setErr(new PrintWriter(new StringWriter(), true));
+
+            assertEquals(0, cl.execute("control", "--viewer-port", Integer.toString(h.viewerPort()), "status"));
+
+            String line = out.toString().lines().findFirst().orElseThrow();
+            assertTrue(line.contains(" - pace real time - "), line);
+            assertTrue(line.endsWith("0 of 2 robots connected"), line);
+        }
+    }
+
+    @Test
     void theControlCommandPrintsTheRunLineAndATableOfTheRobots() throws Exception {
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback());
              ControlPeer control = new ControlPeer(h.viewerPort(), "ctl")) {

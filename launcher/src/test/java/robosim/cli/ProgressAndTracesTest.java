@@ -92,5 +92,9 @@ class ProgressAndTracesTest {
                 + " (it keeps trying while nothing listens there) - 2 s", RobotProgram.describe(List.of(
                         new RunEndWatch.BeforeFirstStep("r1", "localhost:5000", false, TimeUnit.SECONDS.toNanos(2))),
                 TimeUnit.SECONDS.toNanos(2)));
+        // a robot that joined a run under way does not wait for step 1 nor for the others
+        assertEquals("robosim robot: robot r9 is in the run at localhost:5000 since step 120, waiting for the next step"
+                + " (the run may be paused) - 3 s", RobotProgram.describe(List.of(new RunEndWatch.BeforeFirstStep("r9",
+                "localhost:5000", true, TimeUnit.SECONDS.toNanos(3), 120)), TimeUnit.SECONDS.toNanos(3)));
     }
 }
