@@ -10,4 +10,13 @@ package robosim.viewer.net;
  */
 public record ViewerSummary(String world, long snapshotsReceived, long lastStep,
                             String endReason) {
+    /**
+     * @return the summary in words, as a log line says it, for example {@code world 'small-maze',
+     *         601 snapshots up to step 600, ended: done: step limit 600 reached}
+     */
+    public String describe() {
+        String steps = snapshotsReceived == 0 ? "no snapshot"
+                : snapshotsReceived + (snapshotsReceived == 1 ? " snapshot" : " snapshots") + " up to step " + lastStep;
+        return (world == null ? "no world" : "world '" + world + "'") + ", " + steps + ", ended: " + endReason;
+    }
 }
