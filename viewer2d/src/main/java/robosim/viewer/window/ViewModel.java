@@ -45,13 +45,15 @@ public final class ViewModel {
     }
 
     /**
-     * A new world: the snapshot, the trails and the drawings are forgotten.
+     * A new world: the snapshot, the trails and the drawings are forgotten, and so is why the
+     * snapshots stopped before (a viewer that attaches again gets the world first).
      *
      * @param newWorld the world
      */
     public void world(WorldDescription newWorld) {
         world = newWorld;
         snapshot = null;
+        ended = null;
         trails.clear();
         drawings.clear();
         departures.clear();
