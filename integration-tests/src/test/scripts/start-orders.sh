@@ -15,6 +15,7 @@
 #   STEPS           steps per run (default 50)
 #   CASE_TIMEOUT    seconds any one command may take (default 300)
 #   PANEL           1 to add the ControlPanel case
+#   CASES           the cases to run, by name (default: all); e.g. CASES="env-0s robots-3s"
 #   PIONEER_CLIENT  a command, run as PIONEER_CLIENT HOST PORT, that does ARIA's handshake with ARIA's
 #                   patience, reads status packets and exits 0; set to add the Pioneer case
 # prints one line per case (how long its start took) and exits 0 only if every case passed.
@@ -98,6 +99,14 @@ run_case() {
 cases=("env-0s env 0" "env-1s env 1" "env-3s env 3" "robots-0s robots 0" "robots-1s robots 1.5" "robots-3s robots 3")
 [ "${PANEL:-}" = 1 ] && cases+=("panel env 1")
 [ -n "${PIONEER_CLIENT:-}" ] && cases+=("pioneer env 1")
+if [ -n "${CASES:-}" ]; then
+  chosen=()
+  for c in "${cases[@]}"; do
+    read -r name _ <<<"$c"
+    case " $CASES " in *" $name "*) chosen+=("$c") ;; esac
+  done
+  cases=("${chosen[@]}")
+fi
 if [ ${#PORTS[@]} -lt $((3 * ${#cases[@]})) ]; then
   echo "start-orders.sh: ${#cases[@]} cases need $((3 * ${#cases[@]})) free ports, got ${#PORTS[@]}" >&2
   exit 2

@@ -188,6 +188,10 @@ class ControlPanelWindowTest {
             RunReport report = h.await(60);
             assertEquals("stopped by control client control-panel", report.endReason());
             assertFalse(log().contains("refused"), log());
+            // the run's line says the run stopped, and the panel stops asking for statuses aloud
+            await("the line says stopped", () -> uncheck(() -> onEdt(() -> window.controls().line())
+                    .startsWith("stopped: ")));
+            assertFalse(log().contains("no status from"), log());
         }
     }
 

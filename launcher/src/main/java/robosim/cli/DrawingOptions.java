@@ -55,7 +55,9 @@ final class DrawingOptions {
 
     /** @return the 3D options; throws IllegalArgumentException naming a bad value */
     SceneOptions scene() {
-        return new SceneOptions(width, new Camera(azimuth, elevation, zoom), light(), !noNames, trails, true);
+        // as in 2D: laser scans always, sonar rays with --sonar, and the legend under the scene
+        return new SceneOptions(width, new Camera(azimuth, elevation, zoom), light(), !noNames, trails, true, sonar,
+                true, true);
     }
 
     private Light light() {

@@ -85,16 +85,44 @@ public record WorldDescription(String name, double width, double height, int ste
      * @param x         mm
      * @param y         mm
      * @param intensity its intensity at 1 m
+     * @param gold      whether it is the world's gold (GoldFinder's target, which glows), not a plain
+     *                  {@code <heat>}; absent (read as false) in recordings made before it was sent
      */
-    public record HeatSource(double x, double y, double intensity) { }
+    public record HeatSource(double x, double y, double intensity,
+                             @JsonInclude(JsonInclude.Include.NON_DEFAULT)
+                             @JsonSetter(nulls = Nulls.AS_EMPTY) boolean gold) {
+        /**
+         * A plain heat source, not the gold.
+         *
+         * @param x         mm
+         * @param y         mm
+         * @param intensity its intensity at 1 m
+         */
+        public HeatSource(double x, double y, double intensity) {
+            this(x, y, intensity, false);
+        }
+    }
 
     /**
      * A wall or obstacle.
      *
      * @param xy     the outer ring as x0, y0, x1, y1, ... (not closed)
      * @param height height in mm, for 3D views
+     * @param color  its colour as the world file names it (a name or {@code #rrggbb}, see
+     *               {@link Colors}), or null for none; absent in recordings made before it was sent
      */
-    public record Obstacle(double[] xy, double height) { }
+    public record Obstacle(double[] xy, double height,
+                           @JsonInclude(JsonInclude.Include.NON_NULL) String color) {
+        /**
+         * An obstacle without a colour of its own.
+         *
+         * @param xy     the outer ring as x0, y0, x1, y1, ... (not closed)
+         * @param height height in mm
+         */
+        public Obstacle(double[] xy, double height) {
+            this(xy, height, null);
+        }
+    }
 
     /**
      * A robot as the viewer draws it.

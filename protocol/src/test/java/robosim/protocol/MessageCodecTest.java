@@ -114,6 +114,31 @@ class MessageCodecTest {
 
     @ParameterizedTest
     @EnumSource(Format.class)
+    void worldDescriptionRoundTripsObstacleColoursAndTheGold(Format format) throws FrameException {
+        WorldDescription world = new WorldDescription("c", 6000, 6000, 100,
+                List.of(new WorldDescription.Obstacle(new double[] {0, 0, 10, 0, 10, 10}, 300, "red")), List.of(),
+                List.of(new WorldDescription.HeatSource(100, 200, 20), new WorldDescription.HeatSource(300, 400, 50, true)));
+
+        WorldDescription back = (WorldDescription) roundTrip(format, world);
+
+        assertEquals("red", back.obstacles().get(0).color());
+        assertEquals(List.of(false, true), back.heat().stream().map(WorldDescription.HeatSource::gold).toList());
+    }
+
+    @Test
+    void aWorldDescriptionWithoutColoursOrGoldReadsAsPlainObstaclesAndHeat() throws FrameException {
+        // as recordings made before obstacles' colours and the gold were sent hold it
+        String old = "{\"type\":\"world\",\"name\":\"w\",\"width\":100.0,\"height\":50.0,\"stepMs\":100,"
+                + "\"obstacles\":[{\"xy\":[0,0,10,0,10,10],\"height\":300}],\"robots\":[],"
+                + "\"heat\":[{\"x\":1,\"y\":2,\"intensity\":3}]}";
+        WorldDescription w = (WorldDescription) new MessageCodec(Format.JSON).decode(old.getBytes(StandardCharsets.UTF_8));
+
+        assertEquals(null, w.obstacles().get(0).color());
+        assertEquals(false, w.heat().get(0).gold());
+    }
+
+    @ParameterizedTest
+    @EnumSource(Format.class)
     void snapshotRoundTripsEveryRobotView(Format format) throws FrameException {
         Snapshot snapshot = Messages.snapshot();
 

@@ -3,6 +3,7 @@ package robosim.panel.model;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import robosim.protocol.RunStatus;
 
 /**
@@ -26,23 +27,37 @@ public final class RobotRows {
      * @return a row of {@link #COLUMNS} per robot, in the status's order
      */
     public static List<List<String>> of(RunStatus status) {
+        return of(status, Set.of());
+    }
+
+    /**
+     * @param status the run's status
+     * @param seen   the robots seen connected in this run so far (see {@link SeenRobots})
+     * @return a row of {@link #COLUMNS} per robot, in the status's order
+     */
+    public static List<List<String>> of(RunStatus status, Set<String> seen) {
         List<List<String>> rows = new ArrayList<>();
         for (RunStatus.RobotStatus r : status.robots()) {
             rows.add(List.of(r.name(), r.type(), r.drivenBy().isEmpty() ? "-" : r.drivenBy(),
                     String.format(Locale.ROOT, "%.0f, %.0f, %.0f", r.x(), r.y(), r.th()),
                     String.format(Locale.ROOT, "%.0f, %.1f", r.vel(), r.rotVel()),
                     r.stalled() ? "stalled" : "no", Long.toString(r.collisions()), Long.toString(r.sent()),
-                    Long.toString(r.received()), Long.toString(r.lastStep()), connection(r, status)));
+                    Long.toString(r.received()), Long.toString(r.lastStep()), connection(r, status, seen)));
         }
         return rows;
     }
 
-    /** @return the robot's connection as a user asks about it: is its program there, and is it keeping up */
-    static String connection(RunStatus.RobotStatus r, RunStatus status) {
+    /**
+     * @return the robot's connection as a user asks about it: is its program there, and is it keeping
+     *         up; a robot not connected has "gone" only if it was ever there (it answered a step, or the
+     *         panel saw it connected), else it is "not connected yet", as a robot of an open world that
+     *         never joined
+     */
+    static String connection(RunStatus.RobotStatus r, RunStatus status, Set<String> seen) {
         if (r.connected()) {
             return status.step() > 0 && r.lastStep() < status.step() ? "connected, behind" : "connected";
         }
-        return r.lastStep() > 0 || status.step() > 0 ? "gone" : "not connected";
+        return r.lastStep() > 0 || seen.contains(r.name()) ? "gone" : "not connected yet";
     }
 
     /**

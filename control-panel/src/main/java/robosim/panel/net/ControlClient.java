@@ -94,10 +94,25 @@ public final class ControlClient implements AutoCloseable {
     /** The Environment said bye, or closed the connection, before the answer came. */
     public static final class NoAnswerException extends IOException {
         private static final long serialVersionUID = 1L;
+        private final String byeReason;
 
         /** @param message why no answer came */
         public NoAnswerException(String message) {
+            this(message, null);
+        }
+
+        /**
+         * @param message   why no answer came
+         * @param byeReason the reason of the Environment's bye, or null when it closed without one
+         */
+        public NoAnswerException(String message, String byeReason) {
             super(message);
+            this.byeReason = byeReason;
+        }
+
+        /** @return the reason of the Environment's bye (such as {@code refused: ...}), or null if none came */
+        public String byeReason() {
+            return byeReason;
         }
     }
 
@@ -122,7 +137,7 @@ public final class ControlClient implements AutoCloseable {
                 continue;
             }
             if (m instanceof Bye bye) {
-                throw new NoAnswerException("the Environment " + bye.reason());
+                throw new NoAnswerException("the Environment " + bye.reason(), bye.reason());
             }
         }
         throw new NoAnswerException("the Environment closed the connection without an answer (its log says why)");

@@ -1,19 +1,26 @@
 package robosim.panel.net;
 
 import java.io.IOException;
+import java.net.SocketException;
+import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import java.util.logging.Logger;
+import robosim.panel.model.Reachability;
 import robosim.panel.model.Request;
+import robosim.protocol.Bye;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlReply;
 import robosim.protocol.LogLine;
+import robosim.protocol.RunSecret;
 import robosim.protocol.RunStatus;
 
 /**
@@ -21,6 +28,10 @@ import robosim.protocol.RunStatus;
  * caller (the window's event thread above all) ever waits on the network: one carries the user's
  * requests in the order given (a {@code step N} may take long to answer), the other asks for the
  * run's status every {@code periodMs}. Whoever calls {@link #close()} ends both.
+ *
+ * <p>The run secret is looked up again for every connection opened (see {@link RunSecret#find}), so
+ * that a panel attached before its Environment has started, or written its secret, picks it up once
+ * it is there; {@link Reachability} says how the status requests fare and when to ask again.
  */
 public final class PanelSession implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(PanelSession.class.getName());
@@ -31,7 +42,7 @@ public final class PanelSession implements AutoCloseable {
 
     private final String host;
     private final int port;
-    private final String token;
+    private final Supplier<String> secrets;
     private final ExecutorService requests = Executors.newSingleThreadExecutor(daemon("panel-requests"));
     private final ScheduledExecutorService polls = Executors.newSingleThreadScheduledExecutor(daemon("panel-status"));
     /**
@@ -44,18 +55,37 @@ public final class PanelSession implements AutoCloseable {
     private volatile ControlClient requestClient;
     private long requestUsedNanos;
     private volatile ControlClient statusClient;
+    private String statusSecret;
     private volatile boolean closed;
     private volatile Consumer<String> logLines;
 
     /**
      * @param host  the Environment's host
      * @param port  its viewer port
-     * @param token the run secret, or null
+     * @param token the run secret, or null to find it as every client does, again for each
+     *              connection ({@link RunSecret#find})
      */
     public PanelSession(String host, int port, String token) {
+        this(host, port, token != null ? (Supplier<String>) () -> token : () -> RunSecret.find(null, host, port));
+    }
+
+    private PanelSession(String host, int port, Supplier<String> secrets) {
         this.host = host;
         this.port = port;
-        this.token = token;
+        this.secrets = secrets;
+    }
+
+    /**
+     * A session that asks for the secret to present again for each connection.
+     *
+     * @param host    the Environment's host
+     * @param port    its viewer port
+     * @param secrets gives the secret, or null for none; it may throw {@link IllegalArgumentException}
+     *                saying why a secret found is unusable
+     * @return the session
+     */
+    public static PanelSession withSecrets(String host, int port, Supplier<String> secrets) {
+        return new PanelSession(host, port, secrets);
     }
 
     /** @return where the session's Environment is, host:port */
@@ -78,12 +108,12 @@ public final class PanelSession implements AutoCloseable {
                     requestClient = null;
                 }
                 if (requestClient == null) {
-                    requestClient = ControlClient.open(host, port, "control-panel", token, ANSWER_TIMEOUT_MS);
+                    requestClient = ControlClient.open(host, port, "control-panel", secrets.get(), ANSWER_TIMEOUT_MS);
                 }
                 ControlReply reply = requestClient.ask(r.op(), r.args().toArray(String[]::new));
                 requestUsedNanos = System.nanoTime();
                 return reply;
-            } catch (IOException e) {
+            } catch (IOException | IllegalArgumentException e) {
                 closeQuietly(requestClient);
                 requestClient = null;
                 throw new CompletionException(new IOException(r + ": " + e.getMessage(), e));
@@ -100,10 +130,10 @@ public final class PanelSession implements AutoCloseable {
      */
     public CompletableFuture<CommsUpdate> comms(CommsUpdate change) {
         return CompletableFuture.supplyAsync(() -> {
-            try (ControlClient c = ControlClient.open(host, port, "control-panel-comms", token, STATUS_TIMEOUT_MS)) {
+            try (ControlClient c = ControlClient.open(host, port, "control-panel-comms", secrets.get(), STATUS_TIMEOUT_MS)) {
                 c.send(change);
                 return c.answer(CommsUpdate.class, u -> true);
-            } catch (IOException e) {
+            } catch (IOException | IllegalArgumentException e) {
                 throw new CompletionException(new IOException("comms: " + e.getMessage(), e));
             }
         }, requests);
@@ -111,32 +141,103 @@ public final class PanelSession implements AutoCloseable {
 
     /**
      * Asks for the status now and then every {@code periodMs}, on the status thread, until closed.
-     * A failed ask is reported and retried on a fresh connection at the next period, so that a
-     * panel outlives an Environment that is restarted on the same port.
+     * A failed ask is retried on a fresh connection, with the secret looked up again, after the wait
+     * {@link Reachability} gives (longer while the Environment does not answer), so that a panel
+     * attached first, or outliving an Environment restarted on the same port, attaches without flooding
+     * the log: the log gets one line per change (waiting, gone, stopped, refused, answering again),
+     * the run's line says where things stand after every failed ask.
      *
-     * @param periodMs how often, ms
+     * @param periodMs how often, ms, while statuses come
      * @param status   gets each status
-     * @param failure  gets why a status did not come
+     * @param line     gets the run's line after each failed ask (why no status comes, and when it is tried again)
+     * @param log      gets what to log, once per change
      */
-    public void poll(long periodMs, Consumer<RunStatus> status, Consumer<String> failure) {
-        polls.scheduleWithFixedDelay(() -> {
-            if (closed) {
-                return;
+    public void poll(long periodMs, Consumer<RunStatus> status, Consumer<String> line, Consumer<String> log) {
+        Reachability reach = new Reachability(peer(), periodMs);
+        schedule(() -> pollOnce(reach, status, line, log), 0);
+    }
+
+    private void pollOnce(Reachability reach, Consumer<RunStatus> status, Consumer<String> line, Consumer<String> log) {
+        if (closed) {
+            return;
+        }
+        try {
+            if (statusClient == null) {
+                statusSecret = null;
+                statusSecret = secrets.get();
+                statusClient = ControlClient.open(host, port, "control-panel-status", statusSecret, STATUS_TIMEOUT_MS);
+                follow(statusClient, log);
             }
-            try {
-                if (statusClient == null) {
-                    statusClient = ControlClient.open(host, port, "control-panel-status", token, STATUS_TIMEOUT_MS);
-                    follow(statusClient, failure);
-                }
-                status.accept(statusClient.status());
-            } catch (IOException | RuntimeException e) {
-                closeQuietly(statusClient);
-                statusClient = null;
-                if (!closed) {
-                    failure.accept("no status from " + peer() + ": " + e.getMessage());
-                }
+            RunStatus st = statusClient.status();
+            String again = reach.reached();
+            if (again != null) {
+                log.accept(again);
             }
-        }, 0, periodMs, TimeUnit.MILLISECONDS);
+            status.accept(st);
+        } catch (IOException | RuntimeException e) {
+            closeQuietly(statusClient);
+            statusClient = null;
+            if (!closed) {
+                String say = reach.failed(classify(e, statusSecret), reason(e));
+                if (say != null) {
+                    log.accept(say);
+                }
+                line.accept(reach.line());
+            }
+        }
+        schedule(() -> pollOnce(reach, status, line, log), reach.nextDelayMs());
+    }
+
+    private void schedule(Runnable task, long delayMs) {
+        if (closed) {
+            return;
+        }
+        try {
+            polls.schedule(task, delayMs, TimeUnit.MILLISECONDS);
+        } catch (RejectedExecutionException e) {
+            // closed meanwhile: nothing more to ask
+        }
+    }
+
+    /**
+     * @param e         why a status did not come
+     * @param presented the secret that connection presented
+     * @return the kind of failure, with the secret found now compared with the one presented
+     */
+    Reachability.Failure classify(Exception e, String presented) {
+        String bye = e instanceof ControlClient.NoAnswerException n ? n.byeReason() : null;
+        if (bye != null && bye.startsWith(Bye.DONE)) {
+            return Reachability.Failure.ENDED;
+        }
+        String now;
+        try {
+            now = secrets.get();
+        } catch (IllegalArgumentException unusable) {
+            return Reachability.Failure.OTHER;
+        }
+        if (!Objects.equals(now, presented)) {
+            return Reachability.Failure.SECRET_CHANGED;
+        }
+        if (bye != null && bye.startsWith(Bye.REFUSED)) {
+            if (!bye.contains("run secret")) {
+                return Reachability.Failure.OTHER;
+            }
+            return now == null ? Reachability.Failure.NO_SECRET : Reachability.Failure.SECRET_REFUSED;
+        }
+        if (e instanceof SocketException || e instanceof ControlClient.NoAnswerException) {
+            return Reachability.Failure.UNREACHABLE;
+        }
+        return Reachability.Failure.OTHER;
+    }
+
+    /** @return why, in the Environment's words where it gave them */
+    private static String reason(Exception e) {
+        String bye = e instanceof ControlClient.NoAnswerException n ? n.byeReason() : null;
+        if (bye != null) {
+            return bye.startsWith(Bye.DONE) ? bye.substring(Bye.DONE.length())
+                    : bye.startsWith(Bye.REFUSED) ? bye.substring(Bye.REFUSED.length()) : bye;
+        }
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
     }
 
     /**
@@ -150,7 +251,7 @@ public final class PanelSession implements AutoCloseable {
         this.logLines = lines;
     }
 
-    private void follow(ControlClient c, Consumer<String> failure) throws IOException {
+    private void follow(ControlClient c, Consumer<String> log) throws IOException {
         Consumer<String> to = logLines;
         if (to == null) {
             return;
@@ -158,7 +259,7 @@ public final class PanelSession implements AutoCloseable {
         c.onLogLine(l -> to.accept(format(l)));
         ControlReply r = c.ask("log");
         if (!r.ok()) {
-            failure.accept("the Environment does not send its log: " + r.text());
+            log.accept("the Environment does not send its log: " + r.text());
         }
     }
 

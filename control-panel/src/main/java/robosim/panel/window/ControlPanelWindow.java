@@ -45,7 +45,7 @@ public final class ControlPanelWindow extends JFrame {
         ViewModel model = new ViewModel();
         view = new ViewerPane(model, new ViewState());
         // a method reference, not a lambda: the controls are made after the controller
-        controller = new PanelController(model, log::append, this::showStatus);
+        controller = new PanelController(model, log::append, this::showStatus, this::showLine);
         form = new RunForm(worlds, selected, controller::start,
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
@@ -106,6 +106,10 @@ public final class ControlPanelWindow extends JFrame {
     private void showStatus(RunStatus status) {
         robots.show(status);
         controls.show(status);
+    }
+
+    private void showLine(String line) {
+        controls.showLine(line);
     }
 
     private void error(String message) {

@@ -17,13 +17,12 @@ import robosim.panel.model.Request;
 import robosim.panel.model.RobotLaunch;
 import robosim.panel.model.RunSettings;
 import robosim.panel.net.PanelSession;
+import robosim.panel.net.PanelView;
 import robosim.panel.process.ChildJvm;
 import robosim.panel.process.RunProcesses;
 import robosim.protocol.CommsUpdate;
 import robosim.protocol.RunSecret;
 import robosim.protocol.RunStatus;
-import robosim.viewer.net.ViewerClient;
-import robosim.viewer.net.ViewerException;
 import robosim.viewer.net.ViewerOptions;
 import robosim.viewer.window.LiveFeed;
 import robosim.viewer.window.ViewModel;
@@ -44,13 +43,14 @@ final class PanelController implements AutoCloseable {
     private final RunProcesses processes;
     private final Consumer<String> log;
     private final Consumer<RunStatus> statuses;
+    private final Consumer<String> lines;
     private final ExecutorService work = Executors.newCachedThreadPool(r -> {
         Thread t = new Thread(r, "panel-work");
         t.setDaemon(true);
         return t;
     });
     private volatile PanelSession session;
-    private volatile ViewerClient viewer;
+    private volatile PanelView view;
     private volatile RunStatus last;
     private volatile String robotHost;
     private volatile int robotPort;
@@ -62,11 +62,13 @@ final class PanelController implements AutoCloseable {
      * @param model    the live view's model, fed by the viewer
      * @param log      the log (any thread)
      * @param statuses gets each status, on the event thread
+     * @param lines    gets the run's line while no status comes (waiting, gone, stopped), on the event thread
      */
-    PanelController(ViewModel model, Consumer<String> log, Consumer<RunStatus> statuses) {
+    PanelController(ViewModel model, Consumer<String> log, Consumer<RunStatus> statuses, Consumer<String> lines) {
         this.model = model;
         this.log = log;
         this.statuses = statuses;
+        this.lines = lines;
         this.processes = new RunProcesses(null, log);
     }
 
@@ -97,17 +99,20 @@ final class PanelController implements AutoCloseable {
         }
     }
 
-    /** Attaches to a running Environment: control connections and a viewer. */
+    /**
+     * Attaches to a running Environment, or one about to start: control connections and a viewer,
+     * each looking the run secret up again whenever it connects, and trying again until it answers.
+     */
     void attach(String host, int viewerPort, int robots, String token) {
         work.execute(() -> {
             detach();
             robotHost = host;
             robotPort = robots;
             this.viewerPort = viewerPort;
-            String t = token != null ? token : findToken(host, viewerPort);
-            PanelSession s = new PanelSession(host, viewerPort, t);
+            PanelSession s = new PanelSession(host, viewerPort, token);
             session = s;
             log.accept("panel: attached to the Environment at " + s.peer());
+            SwingUtilities.invokeLater(() -> lines.accept("attaching to the Environment at " + s.peer() + "..."));
             if (!processes.environmentRuns()) {
                 // an Environment this panel started writes its log to the pane already, through its output
                 s.followLog(line -> log.accept("env: " + line));
@@ -115,29 +120,12 @@ final class PanelController implements AutoCloseable {
             s.poll(STATUS_PERIOD_MS, st -> {
                 last = st;
                 SwingUtilities.invokeLater(() -> statuses.accept(st));
-            }, why -> log.accept("panel: " + why));
-            ViewerClient v = new ViewerClient(ViewerOptions.of(host, viewerPort).withName("control-panel"),
-                    List.of(new LiveFeed(model)));
-            viewer = v;
-            work.execute(() -> watch(v));
+            }, line -> SwingUtilities.invokeLater(() -> lines.accept(line)), why -> log.accept("panel: " + why));
+            PanelView v = new PanelView(ViewerOptions.of(host, viewerPort).withName("control-panel"),
+                    new LiveFeed(model), why -> log.accept("panel: view: " + why));
+            view = v;
+            work.execute(v::run);
         });
-    }
-
-    private String findToken(String host, int port) {
-        try {
-            return RunSecret.find(null, host, port);
-        } catch (IllegalArgumentException e) {
-            log.accept("panel: " + e.getMessage());
-            return null;
-        }
-    }
-
-    private void watch(ViewerClient v) {
-        try {
-            log.accept("panel: view ended: " + v.run().endReason());
-        } catch (ViewerException e) {
-            log.accept("panel: the view cannot attach: " + e.getMessage());
-        }
     }
 
     /** Sends a request; its answer goes to the log. */
@@ -291,8 +279,8 @@ final class PanelController implements AutoCloseable {
         if (s != null) {
             s.close();
         }
-        ViewerClient v = viewer;
-        viewer = null;
+        PanelView v = view;
+        view = null;
         if (v != null) {
             v.stop();
         }

@@ -11,6 +11,7 @@ import javax.swing.JTable;
 import javax.swing.ListSelectionModel;
 import javax.swing.table.AbstractTableModel;
 import robosim.panel.model.RobotRows;
+import robosim.panel.model.SeenRobots;
 import robosim.protocol.RunStatus;
 
 /**
@@ -20,6 +21,7 @@ import robosim.protocol.RunStatus;
 public final class RobotTable extends JPanel {
     private static final long serialVersionUID = 1L;
 
+    private final transient SeenRobots seen = new SeenRobots();
     private final Rows rows = new Rows();
     private final JTable table = new JTable(rows);
     final JButton remove = button("Remove", "remove");
@@ -57,7 +59,7 @@ public final class RobotTable extends JPanel {
      */
     public void show(RunStatus status) {
         String selected = selected();
-        rows.set(RobotRows.of(status));
+        rows.set(RobotRows.of(status, seen.update(status)));
         if (selected != null) {
             select(selected);
         }

@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
+import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
@@ -29,9 +30,17 @@ final class FakeEnvironment implements AutoCloseable {
     final List<String> requests = new CopyOnWriteArrayList<>();
     final CountDownLatch release = new CountDownLatch(1);
     private final List<Socket> sockets = new CopyOnWriteArrayList<>();
+    private final List<FrameWriter> writers = new CopyOnWriteArrayList<>();
     private final Thread acceptor;
+    private final String secret;
 
     FakeEnvironment() throws IOException {
+        this(null);
+    }
+
+    /** @param secret the run secret a hello must present, as the Environment asks it; null for none */
+    FakeEnvironment(String secret) throws IOException {
+        this.secret = secret;
         acceptor = new Thread(this::accept, "fake-environment");
         acceptor.setDaemon(true);
         acceptor.start();
@@ -60,10 +69,16 @@ final class FakeEnvironment implements AutoCloseable {
         try (s) {
             FrameReader in = new FrameReader(s.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
             FrameWriter out = new FrameWriter(s.getOutputStream(), codec);
+            writers.add(out);
             Message m;
             while ((m = in.read()) != null) {
                 if (m instanceof ControlHello h) {
                     hellos.add(h.name());
+                    if (secret != null && !secret.equals(h.token())) {
+                        out.write(new Bye(Bye.REFUSED + "control client '" + h.name() + "' presented "
+                                + (h.token() == null ? "no" : "a wrong") + " run secret"));
+                        return;
+                    }
                 } else if (m instanceof ControlRequest r && r.op().equals("status")) {
                     out.write(new RunStatus(r.id(), "fake", requests.size(), 0, false, 0, List.of()));
                 } else if (m instanceof ControlRequest r) {
@@ -82,6 +97,21 @@ final class FakeEnvironment implements AutoCloseable {
         } catch (IOException | InterruptedException e) {
             // the client went, or the test ended
         }
+    }
+
+    /**
+     * Ends the run as the Environment does: a bye with the reason to every connection, then it stops
+     * listening.
+     */
+    void end(String reason) throws IOException {
+        for (FrameWriter w : writers) {
+            try {
+                w.write(new Bye(Bye.DONE + reason));
+            } catch (IOException e) {
+                // that client went already
+            }
+        }
+        close();
     }
 
     @Override

@@ -30,7 +30,7 @@ final class Views {
     static WorldDescription description(World world, List<SimRobot> order) {
         List<WorldDescription.Obstacle> obs = new ArrayList<>();
         for (Obstacle o : world.obstacles()) {
-            obs.add(new WorldDescription.Obstacle(o.xy(), o.height()));
+            obs.add(new WorldDescription.Obstacle(o.xy(), o.height(), o.color()));
         }
         List<WorldDescription.RobotInfo> infos = new ArrayList<>();
         for (SimRobot r : order) {
@@ -38,7 +38,7 @@ final class Views {
         }
         List<WorldDescription.HeatSource> heat = new ArrayList<>();
         for (HeatSource h : world.heat()) {
-            heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity()));
+            heat.add(new WorldDescription.HeatSource(h.x(), h.y(), h.intensity(), h.equals(world.gold())));
         }
         List<WorldDescription.Zone> zones = new ArrayList<>();
         for (ForbiddenZone z : world.zones()) {

@@ -54,7 +54,7 @@ final class DrivePanel extends JPanel {
     }
 
     private JPanel buttons() {
-        JPanel grid = new JPanel(new GridLayout(4, 3, 4, 4));
+        JPanel grid = new JPanel(new GridLayout(3, 3, 4, 4));
         grid.add(new JLabel());
         grid.add(button("Forward", "forward", RemoteControl.Button.FORWARD));
         grid.add(new JLabel());
@@ -64,12 +64,22 @@ final class DrivePanel extends JPanel {
         grid.add(new JLabel());
         grid.add(button("Back", "back", RemoteControl.Button.BACK));
         grid.add(new JLabel());
-        // with keydrive each press steps ARIA's keydrive action; else the keys drive while held
-        grid.add(new JLabel(control.keydrive() ? "or press the" : "or hold the"));
-        grid.add(new JLabel(control.keydrive() ? "keys (keydrive);" : "arrow keys;"));
-        grid.add(new JLabel("space stops"));
-        grid.setBorder(BorderFactory.createTitledBorder("drive"));
-        return grid;
+        // one line under the buttons, so that it reads whole: not cut into the grid's cells
+        JLabel hint = new JLabel(hint(control.keydrive()), JLabel.CENTER);
+        hint.setName("driveHint");
+        JPanel drive = new JPanel(new BorderLayout(0, 4));
+        drive.add(grid, BorderLayout.CENTER);
+        drive.add(hint, BorderLayout.SOUTH);
+        drive.setBorder(BorderFactory.createTitledBorder("drive"));
+        return drive;
+    }
+
+    /**
+     * @param keydrive whether the keys feed ARIA's keydrive action
+     * @return the drive hint: with keydrive each press steps the action, else the keys drive while held
+     */
+    static String hint(boolean keydrive) {
+        return keydrive ? "or press the arrow keys (keydrive); space stops" : "or hold the arrow keys; space stops";
     }
 
     private JButton button(String text, String name, RemoteControl.Button which) {

@@ -183,6 +183,31 @@ class RemoteWindowTest {
         assertEquals(0, r1().vel());
     }
 
+    @Test
+    void atItsDefaultSizeEveryControlShowsWholeAndTheDriveHintReadsAsOneLine() throws Exception {
+        // the view's controls wrap onto a second row once the world arrives and the view lays out
+        assertTrue(LiveEnvironment.await(() -> onEdt(() -> ((javax.swing.JComboBox<?>) session.window().find("follow"))
+                .getItemCount() > 1), 10_000), "the view lists the robots to follow");
+        String[] names = {"forward", "back", "left", "right", "stop", "driveHint", "vel", "rotVel", "distance",
+            "heading", "move", "sonar", "laser", "status", "3D", "follow", "fit", "showSonar", "showLaser", "showNames",
+            "showTrails", "showGrid", "showDrawings"};
+        for (String name : names) {
+            String hidden = onEdt(() -> {
+                Component c = session.window().find(name);
+                if (c == null) {
+                    return name + ": not in the window";
+                }
+                Rectangle seen = ((javax.swing.JComponent) c).getVisibleRect();
+                return c.isShowing() && c.getWidth() > 0 && seen.width == c.getWidth() && seen.height == c.getHeight()
+                        ? null : name + ": " + seen.width + " x " + seen.height + " of " + c.getWidth() + " x "
+                        + c.getHeight() + " shows, in a window of " + session.window().frame().getSize();
+            });
+            assertEquals(null, hidden);
+        }
+        assertEquals("or hold the arrow keys; space stops",
+                onEdt(() -> ((javax.swing.JLabel) session.window().find("driveHint")).getText()));
+    }
+
     /** Saves the window, as on the screen, when {@code robosim.screenshots} names a folder. */
     private void screenshot() throws Exception {
         String folder = System.getProperty("robosim.screenshots");

@@ -4,6 +4,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.RadialGradientPaint;
+import java.awt.Shape;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Point2D;
 import java.util.List;
@@ -12,7 +13,7 @@ import robosim.protocol.WorldDescription.HeatSource;
 /**
  * Draws heat sources: a warm radial glow of one size for all, whose opacity follows the source's
  * intensity relative to the world's strongest, and a small marker of one size for all at the
- * source itself. The {@link WorldRenderer}'s helper.
+ * source itself: a round one for a plain heat source, a gold diamond for the world's gold. The {@link WorldRenderer}'s helper.
  */
 final class HeatPainter {
     /** Radius of the glow: the distance at which a source's intensity is given, mm. */
@@ -30,6 +31,8 @@ final class HeatPainter {
     private static final Color GLOW = new Color(255, 170, 40);
     private static final Color MARKER = new Color(230, 80, 0);
     private static final Color MARKER_RING = new Color(110, 35, 0);
+    /** The gold's marker: a gold diamond, so that it reads apart from a plain heat source. */
+    static final Color GOLD = new Color(255, 200, 0);
 
     /** Draws the glow of every source; call before the obstacles so that they stay crisp. */
     void drawGlow(Graphics2D g, ViewTransform view, List<HeatSource> heat) {
@@ -51,34 +54,39 @@ final class HeatPainter {
 
     /** Draws a marker at every source; call after the obstacles so that none hides one. */
     void drawMarkers(Graphics2D g, ViewTransform view, List<HeatSource> heat) {
-        double d = MARKER_PX;
-        g.setStroke(new BasicStroke(1f));
         for (HeatSource source : heat) {
             if (!drawable(source)) {
                 continue;
             }
-            Ellipse2D marker = new Ellipse2D.Double(view.px(source.x()) - d / 2, view.py(source.y()) - d / 2, d, d);
-            g.setColor(MARKER);
-            g.fill(marker);
-            g.setColor(MARKER_RING);
-            g.draw(marker);
+            drawMarker(g, view.px(source.x()), view.py(source.y()), source.gold());
         }
     }
 
-    /** Draws a source for the legend: a glow of the given diameter round a marker. */
-    static void drawSample(Graphics2D g, double cx, double cy, double diameter) {
+    /** A plain source's round marker, or the gold's larger diamond, centred on (cx, cy) px. */
+    private static void drawMarker(Graphics2D g, double cx, double cy, boolean gold) {
+        double d = MARKER_PX;
+        Shape marker;
+        if (gold) {
+            double r = d * 0.9;
+            marker = ClosedPath.of(4, i -> cx + (i == 0 ? r : i == 2 ? -r : 0), i -> cy + (i == 1 ? r : i == 3 ? -r : 0));
+        } else {
+            marker = new Ellipse2D.Double(cx - d / 2, cy - d / 2, d, d);
+        }
+        g.setStroke(new BasicStroke(1f));
+        g.setColor(gold ? GOLD : MARKER);
+        g.fill(marker);
+        g.setColor(MARKER_RING);
+        g.draw(marker);
+    }
+
+    /** Draws a source for the legend: a glow of the given diameter round a marker (the gold's, for the gold). */
+    static void drawSample(Graphics2D g, double cx, double cy, double diameter, boolean gold) {
         double r = diameter * 0.75;
         float[] stops = {0f, 0.3f, 1f};
         Color[] colours = {withAlpha(CORE, MAX_ALPHA), withAlpha(GLOW, MAX_ALPHA / 2), withAlpha(GLOW, 0)};
         g.setPaint(new RadialGradientPaint(new Point2D.Double(cx, cy), (float) r, stops, colours));
         g.fill(new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r));
-        double d = MARKER_PX;
-        Ellipse2D marker = new Ellipse2D.Double(cx - d / 2, cy - d / 2, d, d);
-        g.setStroke(new BasicStroke(1f));
-        g.setColor(MARKER);
-        g.fill(marker);
-        g.setColor(MARKER_RING);
-        g.draw(marker);
+        drawMarker(g, cx, cy, gold);
     }
 
     /**

@@ -41,25 +41,26 @@ final class KeyPainter {
         return new Font(Font.SANS_SERIF, Font.PLAIN, WorldRenderer.fontSize(width));
     }
 
-    static Layout layout(WorldDescription world, RenderOptions options, int width) {
+    static Layout layout(WorldDescription world, RenderOptions options, int width, boolean solid) {
         BufferedImage scratch = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = scratch.createGraphics();
         try {
             hints(g);
             g.setFont(font(width));
-            return layout(g.getFontMetrics(), Legend.entries(world, options), width);
+            return layout(g.getFontMetrics(), Legend.entries(world, options, solid), width, solid);
         } finally {
             g.dispose();
         }
     }
 
-    private static Layout layout(FontMetrics metrics, List<Legend.Entry> entries, int width) {
+    /** @param solid whether for the 3D view: no first row, since the scene carries its caption and has no scale */
+    private static Layout layout(FontMetrics metrics, List<Legend.Entry> entries, int width, boolean solid) {
         int row = metrics.getHeight() + 2 * PAD;
         double sampleW = metrics.getHeight() * 1.8;
         double sampleH = metrics.getHeight() * 0.8;
         List<Placed> placed = new ArrayList<>();
         double x = PAD;
-        int top = row;
+        int top = solid ? 0 : row;
         for (Legend.Entry entry : entries) {
             double w = sampleW + PAD + metrics.stringWidth(entry.label());
             if (x > PAD && x + w > width - PAD) {
@@ -71,26 +72,29 @@ final class KeyPainter {
                     top + PAD + metrics.getAscent()));
             x += w + GAP;
         }
-        return new Layout(entries.isEmpty() ? row : top + row, row, placed);
+        return new Layout(entries.isEmpty() ? (solid ? 0 : row) : top + row, row, placed);
     }
 
+    /** @param solid whether for the 3D view: the legend alone, without the caption and scale bar */
     static void draw(Graphics2D target, int top, int width, double scale, WorldDescription world,
-                     Snapshot snapshot, RenderOptions options) {
+                     Snapshot snapshot, RenderOptions options, boolean solid) {
         Graphics2D g = (Graphics2D) target.create();
         try {
             hints(g);
             g.setFont(font(width));
             FontMetrics metrics = g.getFontMetrics();
-            Layout layout = layout(metrics, Legend.entries(world, options), width);
+            Layout layout = layout(metrics, Legend.entries(world, options, solid), width, solid);
             g.translate(0, top);
             g.setColor(PAPER);
             g.fill(new Rectangle2D.Double(0, 0, width, layout.height()));
             int baseline = PAD + metrics.getAscent();
             g.setColor(INK);
-            if (snapshot != null && options.showCaption()) {
+            if (snapshot != null && options.showCaption() && !solid) {
                 g.drawString(WorldRenderer.caption(snapshot), PAD, baseline);
             }
-            drawScaleBar(g, metrics, width, scale, layout.rowHeight());
+            if (!solid) {
+                drawScaleBar(g, metrics, width, scale, layout.rowHeight());
+            }
             for (Placed p : layout.placed()) {
                 drawSample(g, p.entry(), p.sample(), scale);
                 g.setColor(INK);
@@ -129,6 +133,12 @@ final class KeyPainter {
             case ROBOT -> robot(g, body, RobotPalette.colour(entry.robotIndex()), WorldRenderer.OUTLINE, 1.5f, true);
             case FRONT -> robot(g, body, WorldRenderer.BACKGROUND, WorldRenderer.OUTLINE, 1.5f, true);
             case NOT_CONNECTED -> robot(g, body, RobotPalette.DISCONNECTED, WorldRenderer.DISCONNECTED_OUTLINE, 1.5f, true);
+            case GONE -> {
+                g.setColor(WorldRenderer.GONE_OUTLINE);
+                g.setStroke(WorldRenderer.GONE_STROKE);
+                g.draw(body);
+                g.draw(new Line2D.Double(body.getCenterX(), body.getCenterY(), body.getMaxX(), body.getCenterY()));
+            }
             case STALLED -> robot(g, body, WorldRenderer.BACKGROUND, RobotPalette.STALLED, 3f, false);
             case ODOMETRY -> {
                 g.setColor(INK);
@@ -165,7 +175,13 @@ final class KeyPainter {
                 g.fill(new Rectangle2D.Double(x, y, w / 2, h / 2));
                 g.fill(new Rectangle2D.Double(x + w / 2, y + h / 2, w / 2, h / 2));
             }
-            case HEAT -> HeatPainter.drawSample(g, x + w / 2, y + h / 2, h);
+            case HEAT -> HeatPainter.drawSample(g, x + w / 2, y + h / 2, h, false);
+            case GOLD -> HeatPainter.drawSample(g, x + w / 2, y + h / 2, h, true);
+            case FORBIDDEN -> {
+                g.setColor(WorldRenderer.FORBIDDEN);
+                g.setStroke(WorldRenderer.FORBIDDEN_STROKE);
+                g.draw(body);
+            }
             case WALL -> {
                 g.setColor(WorldRenderer.OBSTACLE);
                 g.fill(body);

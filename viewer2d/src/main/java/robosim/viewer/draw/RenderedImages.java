@@ -9,7 +9,8 @@ import robosim.protocol.recording.SnapshotListener;
  * Follows a run and hands images of it to a {@link ImageSink}: the snapshots whose step is a
  * multiple of {@code every}, and always the last one, so that the final state is kept. A reloaded
  * world draws the old world's last snapshot before it replaces the world. The robots' drawings are
- * folded forward from snapshot to snapshot, so each image shows them all. Used alike by the live
+ * folded forward from snapshot to snapshot, so each image shows them all, and so are the robots that
+ * have gone ({@link Departures}), so each image draws them as gone. Used alike by the live
  * viewer and the replay, so their images agree.
  */
 public final class RenderedImages implements SnapshotListener {
@@ -18,6 +19,7 @@ public final class RenderedImages implements SnapshotListener {
     private final int every;
     private final Trails trails;
     private final Drawings drawings = new Drawings();
+    private final Departures departures = new Departures();
     private WorldDescription world;
     private Snapshot last;
     private boolean lastWritten = true;
@@ -78,6 +80,7 @@ public final class RenderedImages implements SnapshotListener {
             trails.clear();
         }
         drawings.clear();
+        departures.clear();
         world = newWorld;
     }
 
@@ -101,7 +104,8 @@ public final class RenderedImages implements SnapshotListener {
             trails.add(snapshot);
         }
         drawings.add(snapshot);
-        last = drawings.over(snapshot);
+        departures.add(snapshot);
+        last = departures.over(drawings.over(snapshot));
         lastWritten = true;
     }
 

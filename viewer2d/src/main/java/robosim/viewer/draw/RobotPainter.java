@@ -11,10 +11,10 @@ import robosim.geometry.Pose2D;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
-import robosim.protocol.SonarUnit;
 
 /**
- * Draws one robot's body, heading line and mark, sonar rays, name and odometry ghost; the
+ * Draws one robot's body, heading line and mark (or, for a robot gone from the run, a dashed
+ * outline), name and odometry ghost; the
  * {@link WorldRenderer}'s helper.
  */
 final class RobotPainter {
@@ -40,6 +40,22 @@ final class RobotPainter {
         g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
                 view.px(pose.worldX(front, 0)), view.py(pose.worldY(front, 0))));
         g.fill(arrowhead(view, pose, front, BodyOutline.isRectangle(p) ? p.robotWidth() / 2 : BodyOutline.radius(p)));
+    }
+
+    /**
+     * Draws a robot that has gone from the run where it stopped (its body stays in the world): a
+     * dashed outline and a dashed heading line, unfilled, so that it reads apart from a robot whose
+     * program has not connected yet.
+     */
+    void drawGone(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color outline) {
+        Pose2D pose = pose(robot);
+        RobotParameters p = info == null ? null : info.parameters();
+        g.setColor(outline);
+        g.setStroke(WorldRenderer.GONE_STROKE);
+        g.draw(body(view, pose, p));
+        double front = BodyOutline.front(p);
+        g.draw(new Line2D.Double(view.px(robot.x()), view.py(robot.y()),
+                view.px(pose.worldX(front, 0)), view.py(pose.worldY(front, 0))));
     }
 
     /**
@@ -81,35 +97,6 @@ final class RobotPainter {
         // Written so that a NaN anywhere draws no ghost rather than a broken one.
         return Double.isFinite(apart) && Double.isFinite(turned)
                 && (apart > ODOMETRY_TOLERANCE_MM || turned > ODOMETRY_TOLERANCE_DEG);
-    }
-
-    /**
-     * Draws a ray from each transducer's mounting pose along its heading, as long as the range the
-     * snapshot reports for it. Transducers without a reading, or with a negative one, are skipped.
-     */
-    void drawSonar(Graphics2D g, ViewTransform view, RobotView robot, RobotInfo info, Color colour) {
-        int[] ranges = robot.sonar();
-        if (info == null || info.parameters() == null || ranges == null) {
-            return;
-        }
-        Pose2D pose = pose(robot);
-        g.setColor(colour);
-        g.setStroke(new BasicStroke(1.2f));
-        double dot = 3;
-        for (SonarUnit unit : info.parameters().sonarUnits()) {
-            int i = unit.index();
-            if (i < 0 || i >= ranges.length || ranges[i] < 0) {
-                continue;
-            }
-            double heading = Math.toRadians(unit.th());
-            double endX = unit.x() + ranges[i] * Math.cos(heading);
-            double endY = unit.y() + ranges[i] * Math.sin(heading);
-            double x1 = view.px(pose.worldX(endX, endY));
-            double y1 = view.py(pose.worldY(endX, endY));
-            g.draw(new Line2D.Double(view.px(pose.worldX(unit.x(), unit.y())),
-                    view.py(pose.worldY(unit.x(), unit.y())), x1, y1));
-            g.fill(new Ellipse2D.Double(x1 - dot / 2, y1 - dot / 2, dot, dot));
-        }
     }
 
     /**

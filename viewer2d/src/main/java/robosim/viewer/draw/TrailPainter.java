@@ -7,7 +7,8 @@ import java.awt.geom.Path2D;
 import java.util.function.Function;
 
 /**
- * Draws each robot's path as a thin line in its own colour, in any view: the caller says where a
+ * Draws each robot's path as a thin line in its own colour, each piece apart (no line across a
+ * jump), in any view: the caller says where a
  * point of the ground lands on the screen.
  */
 public final class TrailPainter {
@@ -37,14 +38,14 @@ public final class TrailPainter {
     public static void draw(Graphics2D g, Trails trails, Function<String, Color> colourOf, ToScreen toScreen) {
         g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         double[] screen = new double[2];
-        trails.forEach((robot, xy, size) -> {
-            if (size < 2) {
+        trails.forEach((robot, xy, from, to) -> {
+            if (to - from < 2) {
                 return;
             }
             Path2D.Double path = new Path2D.Double();
-            toScreen.map(xy[0], xy[1], screen);
+            toScreen.map(xy[2 * from], xy[2 * from + 1], screen);
             path.moveTo(screen[0], screen[1]);
-            for (int i = 1; i < size; i++) {
+            for (int i = from + 1; i < to; i++) {
                 toScreen.map(xy[2 * i], xy[2 * i + 1], screen);
                 path.lineTo(screen[0], screen[1]);
             }

@@ -14,6 +14,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import robosim.protocol.Colors;
 import robosim.protocol.Snapshot;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription;
@@ -21,10 +22,12 @@ import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 
 /**
- * Draws one snapshot of the world: background, optional grid, heat sources, obstacles, border,
+ * Draws one snapshot of the world: background, optional grid, heat sources, obstacles (in the
+ * colours the world gives them), a map's forbidden lines and areas, border,
  * optionally the robots' drawings the snapshot carries (see {@link Drawings}), optional trails,
  * the movable objects (pucks) where the snapshot puts them,
- * robots, optional laser scans, sonar rays, odometry ghosts and names; and under the world a key
+ * robots (one that has gone from the run, as the snapshot's events say, as a dashed outline; see
+ * {@link Departures}), optional laser scans, sonar rays, odometry ghosts and names; and under the world a key
  * with the step and the simulated time, a scale bar and a legend. Pure drawing: no I/O, no sockets, no clocks, no state between calls, so one
  * renderer may serve several threads, and the window, recorder and replay views can share it.
  *
@@ -44,13 +47,20 @@ public final class WorldRenderer {
 
     /** The dashed outline of a map's forbidden lines and areas. */
     public static final Color FORBIDDEN = new Color(200, 40, 40);
+    /** The dashes of a map's forbidden lines and areas. */
+    static final BasicStroke FORBIDDEN_STROKE = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+            new float[] {6f, 4f}, 0f);
     /** The outline of a robot's body. */
     static final Color OUTLINE = new Color(20, 20, 20);
     static final Color DISCONNECTED_OUTLINE = new Color(130, 130, 130);
+    /** The dashed outline of a robot gone from the run, where it stopped. */
+    public static final Color GONE_OUTLINE = DISCONNECTED_OUTLINE;
+    /** The dashes of a robot gone from the run. */
+    public static final BasicStroke GONE_STROKE = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND,
+            10f, new float[] {5f, 4f}, 0f);
     private static final Color CAPTION_BACKDROP = new Color(255, 255, 255, 200);
 
     private final RobotPainter robots = new RobotPainter();
-    private final LaserPainter lasers = new LaserPainter();
     private final CameraPainter cameras = new CameraPainter();
     private final HeatPainter heat = new HeatPainter();
 
@@ -172,7 +182,45 @@ public final class WorldRenderer {
      * @return its height, px
      */
     public static int keyHeight(WorldDescription world, RenderOptions options, int width) {
-        return KeyPainter.layout(world, options, width).height();
+        return KeyPainter.layout(world, options, width, false).height();
+    }
+
+    /**
+     * The height of the key drawn under a 3D scene: the legend alone (the scene carries its caption,
+     * and an oblique view has no one scale), without what only the 2D view draws (odometry ghosts,
+     * drawings, forbidden zones, the grid).
+     *
+     * @param world the world
+     * @param shown what the scene shows (see {@code SceneOptions.shown})
+     * @param width the key's width, px
+     * @return its height, px; 0 when there is nothing to explain
+     */
+    public static int solidKeyHeight(WorldDescription world, RenderOptions shown, int width) {
+        return KeyPainter.layout(world, shown, width, true).height();
+    }
+
+    /**
+     * Draws the key of a 3D scene, {@link #solidKeyHeight} high, across a surface.
+     *
+     * @param target where to draw; its settings are left as they were
+     * @param top    the key's top edge on the surface, px
+     * @param width  the key's width, px
+     * @param world  the world
+     * @param shown  what the scene shows
+     */
+    public void drawSolidKey(Graphics2D target, int top, int width, WorldDescription world, RenderOptions shown) {
+        KeyPainter.draw(target, top, width, 1, world, null, shown, true);
+    }
+
+    /**
+     * The words of the legend under a 3D scene, in order (see {@link #legend}).
+     *
+     * @param world the world
+     * @param shown what the scene shows
+     * @return the entries' words
+     */
+    public static List<String> solidLegend(WorldDescription world, RenderOptions shown) {
+        return Legend.entries(world, shown, true).stream().map(Legend.Entry::label).toList();
     }
 
     /**
@@ -189,7 +237,7 @@ public final class WorldRenderer {
      */
     public void drawKey(Graphics2D target, int top, int width, double scale, WorldDescription world,
                         Snapshot snapshot, RenderOptions options) {
-        KeyPainter.draw(target, top, width, scale, world, snapshot, options);
+        KeyPainter.draw(target, top, width, scale, world, snapshot, options, false);
     }
 
     /**
@@ -211,10 +259,10 @@ public final class WorldRenderer {
             drawGrid(g, view, world);
         }
         heat.drawGlow(g, view, world.heat());
-        g.setColor(OBSTACLE);
         for (Obstacle obstacle : world.obstacles()) {
             Path2D polygon = polygon(view, obstacle.xy());
             if (polygon != null) {
+                g.setColor(colourOf(obstacle));
                 g.fill(polygon);
             }
         }
@@ -249,7 +297,7 @@ public final class WorldRenderer {
             return;
         }
         g.setColor(FORBIDDEN);
-        g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f));
+        g.setStroke(FORBIDDEN_STROKE);
         for (WorldDescription.Zone zone : world.zones()) {
             double[] xy = zone.xy();
             if (xy == null || xy.length < 4) {
@@ -264,6 +312,25 @@ public final class WorldRenderer {
                 path.closePath();
             }
             g.draw(path);
+        }
+    }
+
+    /**
+     * An obstacle's colour as the views draw it: the colour its world file gives it (a name or
+     * {@code #rrggbb}, see {@link Colors}), or {@link #OBSTACLE} when it gives none (or one no
+     * viewer knows, from a newer Environment).
+     *
+     * @param obstacle the obstacle
+     * @return its colour
+     */
+    public static Color colourOf(Obstacle obstacle) {
+        if (obstacle.color() == null) {
+            return OBSTACLE;
+        }
+        try {
+            return new Color(Colors.parse(obstacle.color()));
+        } catch (IllegalArgumentException e) {
+            return OBSTACLE;
         }
     }
 
@@ -291,21 +358,39 @@ public final class WorldRenderer {
             colourIndex[i] = known != null ? known : infos.size() + i;
             info[i] = known != null ? infos.get(known) : null;
         }
-        if (options.showLaser()) {
-            for (int i = 0; i < views.size(); i++) {
-                lasers.drawScan(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]));
-            }
-        }
+        TrailPainter.ToScreen flat = (x, y, out) -> {
+            out[0] = view.px(x);
+            out[1] = view.py(y);
+        };
+        boolean[] gone = new boolean[views.size()];
         for (int i = 0; i < views.size(); i++) {
-            cameras.drawFieldOfView(g, view, views.get(i), robotColour(views.get(i), colourIndex[i]));
+            gone[i] = Departures.gone(snapshot, views.get(i));
+        }
+        // a robot gone from the run senses nothing: only its body is left
+        for (int i = 0; i < views.size(); i++) {
+            if (gone[i]) {
+                continue;
+            }
+            RobotView robot = views.get(i);
+            Color colour = robotColour(robot, colourIndex[i]);
+            if (options.showLaser()) {
+                LaserPainter.drawScan(g, flat, robot, info[i], colour);
+            }
+            cameras.drawFieldOfView(g, view, robot, colour);
         }
         if (options.showSonar()) {
             for (int i = 0; i < views.size(); i++) {
-                robots.drawSonar(g, view, views.get(i), info[i], rayColour(views.get(i), colourIndex[i]));
+                if (!gone[i]) {
+                    SonarPainter.drawRays(g, flat, views.get(i), info[i], rayColour(views.get(i), colourIndex[i]));
+                }
             }
         }
         for (int i = 0; i < views.size(); i++) {
             RobotView robot = views.get(i);
+            if (gone[i]) {
+                robots.drawGone(g, view, robot, info[i], GONE_OUTLINE);
+                continue;
+            }
             Color fill = robotColour(robot, colourIndex[i]);
             Color outline = robot.stalled() ? RobotPalette.STALLED
                     : robot.connected() ? OUTLINE : DISCONNECTED_OUTLINE;
@@ -313,7 +398,9 @@ public final class WorldRenderer {
         }
         if (options.showOdometry()) {
             for (int i = 0; i < views.size(); i++) {
-                robots.drawGhost(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]).darker());
+                if (!gone[i]) {
+                    robots.drawGhost(g, view, views.get(i), info[i], robotColour(views.get(i), colourIndex[i]).darker());
+                }
             }
         }
         if (options.showNames()) {
@@ -325,12 +412,22 @@ public final class WorldRenderer {
         }
     }
 
-    private static Color rayColour(RobotView robot, int colourIndex) {
+    /**
+     * @param robot       a robot
+     * @param colourIndex its index among the world's robots (its colour)
+     * @return the colour of its sonar rays: its own, a little see-through
+     */
+    public static Color rayColour(RobotView robot, int colourIndex) {
         Color c = robotColour(robot, colourIndex);
         return new Color(c.getRed(), c.getGreen(), c.getBlue(), 170);
     }
 
-    private static Color robotColour(RobotView robot, int colourIndex) {
+    /**
+     * @param robot       a robot
+     * @param colourIndex its index among the world's robots
+     * @return its colour: its own while connected, else grey
+     */
+    public static Color robotColour(RobotView robot, int colourIndex) {
         return robot.connected() ? RobotPalette.colour(colourIndex) : RobotPalette.DISCONNECTED;
     }
 

@@ -219,7 +219,8 @@ public final class ViewerClient {
                     }
                     closeListeners();
                     ViewerSummary summary = summary(reason);
-                    LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": " + summary.describe());
+                    LOG.info(() -> "viewer '" + options.name() + "' detached from " + options.peer() + ": "
+                            + summary.describe());
                     return summary;
                 } else if (m instanceof Snapshot snapshot) {
                     received++;

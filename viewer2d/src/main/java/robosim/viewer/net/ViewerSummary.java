@@ -10,9 +10,13 @@ package robosim.viewer.net;
  */
 public record ViewerSummary(String world, long snapshotsReceived, long lastStep,
                             String endReason) {
-    /** @return the summary in words: {@code world maze-small, 120 snapshots up to step 119; ended: done: ...} */
+    /**
+     * @return the summary in words, as a log line says it, for example {@code world 'small-maze',
+     *         601 snapshots up to step 600, ended: done: step limit 600 reached}
+     */
     public String describe() {
-        return "world " + world + ", " + snapshotsReceived + " snapshot" + (snapshotsReceived == 1 ? "" : "s")
-                + (lastStep >= 0 ? " up to step " + lastStep : "") + "; ended: " + endReason;
+        String steps = snapshotsReceived == 0 ? "no snapshot"
+                : snapshotsReceived + (snapshotsReceived == 1 ? " snapshot" : " snapshots") + " up to step " + lastStep;
+        return (world == null ? "no world" : "world '" + world + "'") + ", " + steps + ", ended: " + endReason;
     }
 }

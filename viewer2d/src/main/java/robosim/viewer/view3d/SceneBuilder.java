@@ -11,12 +11,13 @@ import robosim.protocol.WorldDescription.Obstacle;
 import robosim.protocol.WorldDescription.RobotInfo;
 import robosim.protocol.RobotParameters;
 import robosim.viewer.draw.BodyOutline;
+import robosim.viewer.draw.Departures;
 import robosim.viewer.draw.RobotPalette;
 import robosim.viewer.draw.WorldRenderer;
 
 /**
  * Builds the faces of the scene that the camera can see: each obstacle as a prism from the floor
- * to its height, each robot as a prism of its body's footprint, with its heading marked on its
+ * to its height, in the colour the world gives it, each robot (but one gone from the run) as a prism of its body's footprint, with its heading marked on its
  * roof. Faces turned from the camera are left out. Long faces are cut into pieces of at most
  * {@value #PIECE_MM} mm, so that sorting them by their centres draws them in the right order.
  */
@@ -36,13 +37,15 @@ final class SceneBuilder {
         List<Face> faces = new ArrayList<>();
         for (Obstacle o : world.obstacles()) {
             if (o.xy() != null && o.xy().length >= 6 && o.height() > 0 && Double.isFinite(o.height())) {
-                prism(faces, p, ring(o.xy()), 0, o.height(), WALL, null, null);
+                prism(faces, p, ring(o.xy()), 0, o.height(), colour(o), null, null);
             }
         }
         if (snapshot != null) {
             List<RobotInfo> infos = world.robots();
             for (RobotView r : snapshot.robots()) {
-                if (!Double.isFinite(r.x()) || !Double.isFinite(r.y()) || !Double.isFinite(r.th())) {
+                if (!Double.isFinite(r.x()) || !Double.isFinite(r.y()) || !Double.isFinite(r.th())
+                        || Departures.gone(snapshot, r)) {
+                    // a robot gone from the run is an outline on the floor (SolidRenderer), not a block
                     continue;
                 }
                 RobotInfo info = infos.stream().filter(i -> i.name().equals(r.name())).findFirst().orElse(null);
@@ -55,6 +58,20 @@ final class SceneBuilder {
             }
         }
         return faces;
+    }
+
+    /** @return an obstacle's colour before shading: the world's for it, or {@link #WALL} */
+    static Color colour(Obstacle o) {
+        return o.color() == null ? WALL : WorldRenderer.colourOf(o);
+    }
+
+    /**
+     * @param r    a robot
+     * @param info its parameters, or null
+     * @return its body's footprint on the floor as x, y pairs, counter-clockwise
+     */
+    static double[] footprint(RobotView r, RobotInfo info) {
+        return footprint(new Pose2D(r.x(), r.y(), Math.toRadians(r.th())), info == null ? null : info.parameters());
     }
 
     /** @return the ring as x, y pairs, counter-clockwise */

@@ -6,15 +6,18 @@ import robosim.viewer.draw.RenderOptions;
  * How a 3D image is drawn.
  *
  * @param width       image width in pixels, 1 to {@link RenderOptions#MAX_WIDTH}; the height
- *                    follows from the camera (see {@link Projection#heightFor})
+ *                    follows from the camera (see {@link Projection#heightFor}), and the key under it
  * @param camera      where the view looks from
  * @param light       where the light comes from
  * @param showNames   whether to label each robot with its name
  * @param showTrails  whether to draw the robots' paths on the floor, when given
  * @param showCaption whether to write the step and simulated time in the top left corner
+ * @param showSonar   whether to draw each robot's sonar rays on the floor
+ * @param showLaser   whether to draw each robot's laser scan on the floor
+ * @param showKey     whether to draw the legend under the scene, as under a 2D picture
  */
 public record SceneOptions(int width, Camera camera, Light light, boolean showNames, boolean showTrails,
-                           boolean showCaption) {
+                           boolean showCaption, boolean showSonar, boolean showLaser, boolean showKey) {
     /**
      * Checks the width and that camera and light are given.
      *
@@ -24,6 +27,9 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
      * @param showNames   whether to label robots
      * @param showTrails  whether to draw trails
      * @param showCaption whether to write the caption
+     * @param showSonar   whether to draw sonar rays
+     * @param showLaser   whether to draw laser scans
+     * @param showKey     whether to draw the legend
      * @throws IllegalArgumentException naming the bad value
      */
     public SceneOptions {
@@ -38,13 +44,31 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
     }
 
     /**
-     * The default camera and light, names and caption shown, no trails.
+     * Options without sensor readings and without the legend, for callers written before those
+     * could be drawn in 3D.
+     *
+     * @param width       image width
+     * @param camera      the camera
+     * @param light       the light
+     * @param showNames   whether to label robots
+     * @param showTrails  whether to draw trails
+     * @param showCaption whether to write the caption
+     * @throws IllegalArgumentException naming the bad value
+     */
+    public SceneOptions(int width, Camera camera, Light light, boolean showNames, boolean showTrails,
+                        boolean showCaption) {
+        this(width, camera, light, showNames, showTrails, showCaption, false, false, false);
+    }
+
+    /**
+     * The default camera and light, names, caption, laser scans and the legend shown; no trails, no
+     * sonar rays.
      *
      * @param width image width
      * @return the options
      */
     public static SceneOptions of(int width) {
-        return new SceneOptions(width, Camera.DEFAULT, Light.DEFAULT, true, false, true);
+        return new SceneOptions(width, Camera.DEFAULT, Light.DEFAULT, true, false, true, false, true, true);
     }
 
     /**
@@ -52,7 +76,8 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
      * @return these options with it
      */
     public SceneOptions withCamera(Camera newCamera) {
-        return new SceneOptions(width, newCamera, light, showNames, showTrails, showCaption);
+        return new SceneOptions(width, newCamera, light, showNames, showTrails, showCaption, showSonar, showLaser,
+                showKey);
     }
 
     /**
@@ -60,7 +85,8 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
      * @return these options with it
      */
     public SceneOptions withLight(Light newLight) {
-        return new SceneOptions(width, camera, newLight, showNames, showTrails, showCaption);
+        return new SceneOptions(width, camera, newLight, showNames, showTrails, showCaption, showSonar, showLaser,
+                showKey);
     }
 
     /**
@@ -70,6 +96,31 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
      * @return these options showing those
      */
     public SceneOptions showing(boolean names, boolean trails, boolean caption) {
-        return new SceneOptions(width, camera, light, names, trails, caption);
+        return new SceneOptions(width, camera, light, names, trails, caption, showSonar, showLaser, showKey);
+    }
+
+    /**
+     * @param sonar whether to draw sonar rays
+     * @param laser whether to draw laser scans
+     * @return these options drawing those readings, or not
+     */
+    public SceneOptions withSensors(boolean sonar, boolean laser) {
+        return new SceneOptions(width, camera, light, showNames, showTrails, showCaption, sonar, laser, showKey);
+    }
+
+    /**
+     * @param key whether to draw the legend under the scene
+     * @return these options with the legend drawn, or not
+     */
+    public SceneOptions withKey(boolean key) {
+        return new SceneOptions(width, camera, light, showNames, showTrails, showCaption, showSonar, showLaser, key);
+    }
+
+    /**
+     * @return what this scene shows, in the 2D options' terms, for the legend (see
+     *         {@code WorldRenderer.solidKeyHeight})
+     */
+    public RenderOptions shown() {
+        return new RenderOptions(width, showSonar, showNames, showLaser, false, showTrails, showCaption, false, false);
     }
 }

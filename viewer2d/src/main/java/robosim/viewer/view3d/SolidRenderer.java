@@ -22,15 +22,17 @@ import robosim.viewer.draw.Trails;
 import robosim.viewer.draw.WorldRenderer;
 
 /**
- * Draws the 3D view of a snapshot: the sky, the floor with its heat sources and the robots' trails,
- * then every visible face of the walls, obstacles and robots from the farthest to the nearest
+ * Draws the 3D view of a snapshot: the sky, the floor with its heat sources (the gold in gold), the
+ * robots' trails, their sonar rays and laser scans when shown, and the outlines of robots gone from
+ * the run, then every visible face of the walls, obstacles and robots from the farthest to the nearest
  * (the painter's algorithm), each in its colour shaded by the light, then the robots' names and
- * the caption. Pure drawing, no state between calls.
+ * the caption; under the scene, the legend. Pure drawing, no state between calls.
  */
 public final class SolidRenderer implements SnapshotPainter {
     /** The colour around the world. */
     public static final Color SKY = new Color(214, 224, 236);
     private static final Color HEAT = new Color(240, 110, 20);
+    private static final Color GOLD = new Color(255, 200, 0);
     private static final Color TEXT = new Color(20, 20, 20);
     private static final double[] UP = {0, 0, 1};
 
@@ -62,14 +64,43 @@ public final class SolidRenderer implements SnapshotPainter {
     public static BufferedImage render(WorldDescription world, Snapshot snapshot, SceneOptions options, Trails trails) {
         int height = Projection.heightFor(world, options.camera(), options.width());
         Projection p = Projection.fit(world, options.camera(), options.width(), height, Double.NaN, Double.NaN);
-        BufferedImage image = new BufferedImage(options.width(), height, BufferedImage.TYPE_INT_RGB);
+        BufferedImage image = new BufferedImage(options.width(), height + keyHeight(world, options),
+                BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         try {
             draw(g, p, world, snapshot, options, trails);
+            drawKey(g, height, options.width(), world, options);
         } finally {
             g.dispose();
         }
         return image;
+    }
+
+    /**
+     * The height of the legend drawn under the scene (see {@link SceneOptions#showKey}): it depends on
+     * the world and the options only, so every frame of a run is the same size.
+     *
+     * @param world   the world
+     * @param options what the scene shows
+     * @return its height, px; 0 without a legend
+     */
+    public static int keyHeight(WorldDescription world, SceneOptions options) {
+        return options.showKey() ? WorldRenderer.solidKeyHeight(world, options.shown(), options.width()) : 0;
+    }
+
+    /**
+     * Draws the legend under a scene, {@link #keyHeight} high; nothing when the options show none.
+     *
+     * @param target  where to draw; its settings are left as they were
+     * @param top     the legend's top edge, px
+     * @param width   its width, px
+     * @param world   the world
+     * @param options what the scene shows
+     */
+    public static void drawKey(Graphics2D target, int top, int width, WorldDescription world, SceneOptions options) {
+        if (options.showKey()) {
+            new WorldRenderer().drawSolidKey(target, top, width, world, options.shown().withWidth(Math.max(1, width)));
+        }
     }
 
     /**
@@ -101,6 +132,10 @@ public final class SolidRenderer implements SnapshotPainter {
             drawHeat(g, p, world.heat());
             if (trails != null && options.showTrails()) {
                 drawTrails(g, p, world, snapshot, trails);
+            }
+            if (snapshot != null) {
+                // on the floor, under the walls and robots, so that a wall hides what lies behind it
+                FloorMarks.draw(g, p, world, snapshot, options);
             }
             List<Face> faces = SceneBuilder.build(world, snapshot, p);
             faces.sort(Comparator.comparingDouble(f -> f.depth(p)));
@@ -139,10 +174,10 @@ public final class SolidRenderer implements SnapshotPainter {
     }
 
     private static void drawHeat(Graphics2D g, Projection p, List<HeatSource> heat) {
-        g.setColor(HEAT);
         double r = Math.max(3, 120 * p.scale());
         for (HeatSource h : heat) {
             if (h != null && Double.isFinite(h.x()) && Double.isFinite(h.y())) {
+                g.setColor(h.gold() ? GOLD : HEAT);
                 double x = p.px(h.x(), h.y(), 0);
                 double y = p.py(h.x(), h.y(), 0);
                 g.fill(new Ellipse2D.Double(x - r, y - r / 2, 2 * r, r));

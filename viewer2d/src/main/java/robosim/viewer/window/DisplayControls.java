@@ -37,7 +37,7 @@ public final class DisplayControls extends JPanel {
      * @param view  the drawing area to repaint
      */
     public DisplayControls(ViewModel model, ViewState state, WorldView view) {
-        super(new FlowLayout(FlowLayout.LEFT, 6, 2));
+        super(new WrapLayout(FlowLayout.LEFT, 6, 2));
         this.model = model;
         this.state = state;
         this.view = view;
@@ -49,13 +49,13 @@ public final class DisplayControls extends JPanel {
         toggle("Grid", r.showGrid(), (o, on) -> o.withGrid(on));
         toggle("Drawings", r.showDrawings(), (o, on) -> o.withDrawings(on));
         JCheckBox threeD = new JCheckBox("3D", state.threeD());
+        threeD.setName("3D");
         threeD.addActionListener(e -> {
             state.setThreeD(threeD.isSelected());
             view.repaint();
         });
         toggles.add(threeD);
         add(threeD);
-        add(new JLabel("Follow:"));
         follow.addItem(NOBODY);
         follow.addActionListener(e -> {
             if (!updating) {
@@ -64,8 +64,14 @@ public final class DisplayControls extends JPanel {
                 view.repaint();
             }
         });
-        add(follow);
+        follow.setName("follow");
+        // the label and its list wrap onto a new row together
+        JPanel following = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        following.add(new JLabel("Follow:"));
+        following.add(follow);
+        add(following);
         JButton fit = new JButton("Fit");
+        fit.setName("fit");
         fit.addActionListener(e -> {
             state.fit();
             view.repaint();
@@ -83,6 +89,7 @@ public final class DisplayControls extends JPanel {
 
     private void toggle(String label, boolean on, Change change) {
         JCheckBox box = new JCheckBox(label, on);
+        box.setName("show" + label);
         box.addActionListener(e -> {
             state.setRender(change.apply(state.render(), box.isSelected()));
             view.repaint();

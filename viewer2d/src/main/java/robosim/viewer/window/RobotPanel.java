@@ -13,6 +13,7 @@ import javax.swing.JTextArea;
 import robosim.protocol.Snapshot;
 import robosim.protocol.Snapshot.RobotView;
 import robosim.protocol.WorldDescription.RobotInfo;
+import robosim.viewer.draw.Departures;
 
 /**
  * The panel of the robot last clicked: its true and odometric pose and how far apart they are, its
@@ -90,7 +91,8 @@ public final class RobotPanel extends JPanel {
      */
     public static List<String> lines(ViewModel model, RobotView r) {
         List<String> lines = new ArrayList<>();
-        lines.add(r.name() + ": " + (r.connected() ? "connected" : "not connected yet")
+        boolean gone = model.snapshot() != null && Departures.gone(model.snapshot(), r);
+        lines.add(r.name() + ": " + (r.connected() ? "connected" : gone ? "gone from the run" : "not connected yet")
                 + (r.stalled() ? ", STALLED (pushing against something)" : ", moving freely"));
         lines.add(String.format(Locale.ROOT, "true pose: x %.0f mm, y %.0f mm, heading %.1f°", r.x(), r.y(), r.th()));
         lines.add(String.format(Locale.ROOT, "believed (odometry): x %.0f mm, y %.0f mm, heading %.1f°", r.odoX(),

@@ -8,6 +8,7 @@ import java.util.List;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
+import robosim.viewer.draw.Departures;
 import robosim.viewer.draw.Drawings;
 import robosim.viewer.draw.Trails;
 
@@ -20,6 +21,7 @@ public final class ViewModel {
     private final List<Runnable> observers = new ArrayList<>();
     private final Trails trails = new Trails();
     private final Drawings drawings = new Drawings();
+    private final Departures departures = new Departures();
     private WorldDescription world;
     private Snapshot snapshot;
     private final Deque<String> messages = new ArrayDeque<>();
@@ -43,15 +45,18 @@ public final class ViewModel {
     }
 
     /**
-     * A new world: the snapshot, the trails and the drawings are forgotten.
+     * A new world: the snapshot, the trails and the drawings are forgotten, and so is why the
+     * snapshots stopped before (a viewer that attaches again gets the world first).
      *
      * @param newWorld the world
      */
     public void world(WorldDescription newWorld) {
         world = newWorld;
         snapshot = null;
+        ended = null;
         trails.clear();
         drawings.clear();
+        departures.clear();
         messages.clear();
         changed();
     }
@@ -68,9 +73,10 @@ public final class ViewModel {
         for (Snapshot f : snapshots) {
             trails.add(f);
             drawings.add(f);
+            departures.add(f);
             keepMessages(f);
         }
-        snapshot = drawings.over(snapshots.get(snapshots.size() - 1));
+        snapshot = departures.over(drawings.over(snapshots.get(snapshots.size() - 1)));
         changed();
     }
 
@@ -83,13 +89,15 @@ public final class ViewModel {
     public void jump(List<Snapshot> history) {
         trails.clear();
         drawings.clear();
+        departures.clear();
         messages.clear();
         for (Snapshot f : history) {
             trails.add(f);
             drawings.add(f);
+            departures.add(f);
             keepMessages(f);
         }
-        snapshot = history.isEmpty() ? null : drawings.over(history.get(history.size() - 1));
+        snapshot = history.isEmpty() ? null : departures.over(drawings.over(history.get(history.size() - 1)));
         changed();
     }
 
@@ -179,7 +187,10 @@ public final class ViewModel {
         return world;
     }
 
-    /** @return the snapshot shown, carrying every robot's current drawings, or {@code null} */
+    /**
+     * @return the snapshot shown, carrying every robot's current drawings and the departures of the
+     *         robots gone (see {@link Departures#over}), or {@code null}
+     */
     public Snapshot snapshot() {
         return snapshot;
     }

@@ -156,7 +156,8 @@ public final class ViewState {
      * @return the 3D drawing options matching the 2D toggles
      */
     public SceneOptions scene(int width) {
-        return new SceneOptions(Math.max(1, width), camera, light, render.showNames(), render.showTrails(), true);
+        return new SceneOptions(Math.max(1, width), camera, light, render.showNames(), render.showTrails(), true,
+                render.showSonar(), render.showLaser(), true);
     }
 
     /**

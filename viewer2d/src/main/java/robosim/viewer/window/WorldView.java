@@ -70,7 +70,10 @@ public final class WorldView extends JComponent {
                 return;
             }
             if (state.threeD()) {
-                SolidRenderer.draw(g, state.project(world, snapshot, w, h), world, snapshot, state.scene(w), model.trails());
+                int scene = worldHeight(world);
+                SolidRenderer.draw(g, state.project(world, snapshot, w, scene), world, snapshot, state.scene(w),
+                        model.trails());
+                SolidRenderer.drawKey(g, scene, w, world, state.scene(w));
                 return;
             }
             g.setColor(SURROUND);
@@ -104,12 +107,16 @@ public final class WorldView extends JComponent {
     }
 
     /**
-     * The height of the part of the view the world is drawn in: in 2D the key (step, scale bar,
-     * legend) takes a strip at the bottom, as under the PNG images, so it never hides the world.
+     * The height of the part of the view the world is drawn in: the key (in 2D the step, scale bar
+     * and legend; in 3D the legend) takes a strip at the bottom, as under the PNG images, so it never
+     * hides the world.
      */
     private int worldHeight(WorldDescription world) {
-        if (state.threeD() || world == null) {
+        if (world == null) {
             return getHeight();
+        }
+        if (state.threeD()) {
+            return Math.max(1, getHeight() - SolidRenderer.keyHeight(world, state.scene(Math.max(1, getWidth()))));
         }
         return Math.max(1, getHeight() - WorldRenderer.keyHeight(world, state.render(), Math.max(1, getWidth())));
     }

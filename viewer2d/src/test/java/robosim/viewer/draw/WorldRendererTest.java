@@ -144,15 +144,31 @@ class WorldRendererTest {
 
     @Test
     void theLegendNamesEachRobotAndWhatTheStatesAndMarksMean() {
-        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet", "red edge: stalled",
+        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet",
+                        "dashed grey: gone (left, dropped or removed)", "red edge: stalled",
                         "dashed: where it believes it is (odometry)", "sonar rays", "laser scan", "wall"),
                 WorldRenderer.legend(Fixtures.world(), new RenderOptions(800, true, true)));
-        WorldDescription gold = Fixtures.world(Fixtures.params(150, 0, 0, 8000),
+        WorldDescription heat = Fixtures.world(Fixtures.params(150, 0, 0, 8000),
                 List.of(new WorldDescription.HeatSource(500, 500, 40)));
-        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet", "red edge: stalled", "laser scan",
-                        "trail", "heat source (the gold)", "wall", "grid: 500 mm squares"),
-                WorldRenderer.legend(gold, new RenderOptions(800, false, false).withOdometry(false).withTrails(true)
+        assertEquals(List.of("r1", "front (heading)", "grey: not connected yet",
+                        "dashed grey: gone (left, dropped or removed)", "red edge: stalled", "laser scan",
+                        "trail", "heat source", "wall", "grid: 500 mm squares"),
+                WorldRenderer.legend(heat, new RenderOptions(800, false, false).withOdometry(false).withTrails(true)
                         .withGrid(true)));
+    }
+
+    @Test
+    void theLegendSaysGoldOnlyForTheGold() {
+        WorldDescription gold = Fixtures.world(Fixtures.params(),
+                List.of(new WorldDescription.HeatSource(500, 500, 40, true)));
+        WorldDescription both = Fixtures.world(Fixtures.params(),
+                List.of(new WorldDescription.HeatSource(500, 500, 40, true), new WorldDescription.HeatSource(3500, 1500, 9)));
+        RenderOptions plain = new RenderOptions(800, false, false).withOdometry(false);
+
+        List<String> goldOnly = WorldRenderer.legend(gold, plain);
+        assertTrue(goldOnly.contains("gold (it glows with heat)") && !goldOnly.contains("heat source"), goldOnly.toString());
+        List<String> mixed = WorldRenderer.legend(both, plain);
+        assertTrue(mixed.contains("gold (it glows with heat)") && mixed.contains("heat source"), mixed.toString());
     }
 
     @Test

@@ -126,7 +126,8 @@ class SolidRendererTest {
     @Test
     void theImageIsAsWideAsAskedAndTheCaptionIsDrawn() {
         WorldDescription world = world(300);
-        BufferedImage plain = SolidRenderer.render(world, robotAt(3000, 1500), SceneOptions.of(640).showing(false, false, false), null);
+        BufferedImage plain = SolidRenderer.render(world, robotAt(3000, 1500),
+                SceneOptions.of(640).showing(false, false, false).withKey(false), null);
         BufferedImage captioned = SolidRenderer.render(world, robotAt(3000, 1500), SceneOptions.of(640), null);
         assertEquals(640, plain.getWidth());
         assertEquals(Projection.heightFor(world, Camera.DEFAULT, 640), plain.getHeight());
