@@ -83,6 +83,10 @@ run_case() {
   for r in r1 r2; do
     grep -q "^robot $r: .* ran to the end" "$dir/env.out" || failed+=("the report does not say $r ran to the end")
   done
+  if [ "$name" = panel ]; then
+    grep -q "detached from .* up to step $STEPS, ended: done" "$dir/panel.err" \
+      || failed+=("the panel did not follow the run to its end")
+  fi
   if grep -il "refus" "$dir"/*.out "$dir"/*.err >/dev/null 2>&1; then
     failed+=("refused: $(grep -ih "refus" "$dir"/*.out "$dir"/*.err | head -n 3 | tr '\n' ' ')")
   fi
