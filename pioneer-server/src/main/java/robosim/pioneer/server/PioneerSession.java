@@ -51,7 +51,8 @@ final class PioneerSession {
     private Consumer<PioneerSession> connected;
     private volatile CommandHandler handler;
     private volatile Supplier<ConfigPacket> config;
-    private volatile Runnable onEnd;
+    private volatile Consumer<String> onEnd;
+    private volatile String endReason;
     private final BlockingQueue<byte[]> outgoing = new ArrayBlockingQueue<>(MAX_QUEUED);
     private long drops;
     private long lastDropLogNanos;
@@ -86,18 +87,19 @@ final class PioneerSession {
     }
 
     /**
-     * Gives the session its robot, once the handshake is done.
+     * Gives the session its robot, at once when the handshake is done: from then the session answers
+     * OPEN, CONFIG, PULSE and the client's commands itself, whatever the Environment is doing.
      *
      * @param commands carries out the commands
-     * @param config   the answer to CONFIG, as the robot is now
-     * @param ended    run once when the session ends
+     * @param config   the answer to CONFIG, as the robot is now; it must not wait on anything
+     * @param ended    told once, with the reason, when the session ends
      */
-    void attach(CommandHandler commands, Supplier<ConfigPacket> config, Runnable ended) {
+    void attach(CommandHandler commands, Supplier<ConfigPacket> config, Consumer<String> ended) {
         this.handler = commands;
         this.config = config;
         this.onEnd = ended;
         if (this.ended) {
-            ended.run();
+            ended.accept(endReason);
         }
     }
 
@@ -279,6 +281,7 @@ final class PioneerSession {
             if (ended) {
                 return;
             }
+            endReason = reason;
             ended = true;
         }
         LOG.info(() -> "robot " + robot + ": the ARIA client at " + client + " left: " + reason);
@@ -287,9 +290,9 @@ final class PioneerSession {
         } catch (IOException e) {
             LOG.log(Level.FINE, "closing", e);
         }
-        Runnable r = onEnd;
+        Consumer<String> r = onEnd;
         if (r != null) {
-            r.run();
+            r.accept(reason);
         }
     }
 }
