@@ -127,6 +127,11 @@ final class PioneerPort implements Closeable {
                 break;
             }
         }
+        PioneerSession silent = current;
+        if (silent != null && !silent.isEnded() && silent.isGivingWay()) {
+            silent.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
+                    + s.getRemoteSocketAddress() + " wants the port");
+        }
         if (current != null && !current.isEnded()) {
             LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
                     + s.getRemoteSocketAddress() + " is closed (one client at a time)");

@@ -106,4 +106,30 @@ class PioneerPortHandshakeTest {
             assertEquals(0, ports.unattended("r1").map(String::length).orElse(0), "a client drives it");
         }
     }
+
+    @Test
+    void aClientSilentForLongKeepsItsPortUntilAnotherClientWantsIt() throws Exception {
+        int env = silentEnvironment();
+        // the robot waits for its welcome longer than the test lasts
+        HardwareOptions patient = new HardwareOptions(120_000, HardwareOptions.DEFAULT_LOST_AFTER_MS, 5_000);
+        try (PioneerPorts ports = PioneerPorts.open(List.of(robot(100)), new PioneerPortOptions("127.0.0.1", 0, false,
+                PioneerPortOptions.DEFAULT_WATCHDOG_MS, true, patient), "127.0.0.1", env, null, code -> { });
+             PioneerClient first = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
+            first.open(ARIA_REPLY_MS);
+            // no PULSE from here, as an ARIA program that has connected its robot but not yet run its cycle
+            long until = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PioneerSession.SILENT_MS + 2000);
+            while (System.nanoTime() < until) {
+                assertNotNull(first.nextSip(ARIA_ODOMETRY_MS), "the silent client is still sent its robot's status");
+            }
+            assertTrue(!first.isClosed(), "silence alone does not close a client");
+            try (PioneerClient second = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), 10_000)) {
+                assertEquals("SIM", second.open(ARIA_REPLY_MS).serial(), "the next client gets the port");
+                Sip s = first.nextSip(ARIA_ODOMETRY_MS);
+                for (int i = 0; i < 100 && s != null; i++) {
+                    s = first.nextSip(ARIA_ODOMETRY_MS);
+                }
+                assertTrue(first.isClosed(), "the silent client gave way");
+            }
+        }
+    }
 }
