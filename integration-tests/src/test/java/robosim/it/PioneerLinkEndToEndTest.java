@@ -58,7 +58,7 @@ class PioneerLinkEndToEndTest {
         RobotSummary pioneerTruth;
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 1, ServerOptions.loopback());
              PioneerPorts ports = PioneerPorts.open(
-                     List.of(new ServedRobot("r1", "pioneer", RobotParameterFiles.load("p3dx"), P3DX)),
+                     List.of(new ServedRobot("r1", "pioneer", RobotParameterFiles.load("p3dx"), P3DX, 100)),
                      new PioneerPortOptions("127.0.0.1", 0, false, 2000, true, HardwareOptions.defaults()),
                      "127.0.0.1", env.robotPort(), null, code -> { })) {
             int port = ports.portOf("r1");

@@ -45,7 +45,7 @@ final class PioneerRun implements AutoCloseable {
         List<ServedRobot> robots = new ArrayList<>();
         for (RobotSpec r : world.robots()) {
             robots.add(new ServedRobot(r.name(), r.type(), r.parameters(),
-                    RobotParameterFiles.conversionFactors(r.parameterFile().toString())));
+                    RobotParameterFiles.conversionFactors(r.parameterFile().toString()), world.stepMs()));
         }
         PioneerPorts opened = null;
         try {

@@ -5,7 +5,9 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.function.Function;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -222,7 +224,7 @@ final class EnvCommand implements Callable<Integer> {
                 err.println("robosim env: " + e.getMessage());
                 return 1;
             }
-            printReport(out, report);
+            printReport(out, report, pioneerPorts == null ? robot -> Optional.empty() : pioneerPorts::unattended);
             if (recorder != null) {
                 return recording.report(out, err, "env", recorder);
             }
@@ -253,6 +255,14 @@ final class EnvCommand implements Callable<Integer> {
     }
 
     static void printReport(PrintWriter out, RunReport report) {
+        printReport(out, report, robot -> Optional.empty());
+    }
+
+    /**
+     * @param unattended what the Pioneer ports say of a robot the run had to the end but whose ARIA
+     *                   client left before it (see {@link PioneerPorts#unattended(String)})
+     */
+    static void printReport(PrintWriter out, RunReport report, Function<String, Optional<String>> unattended) {
         out.printf(Locale.ROOT, "Run ended after %d steps (%.1f s simulated): %s%n", report.steps(),
                 report.timeMs() / 1000.0, report.endReason());
         if (report.find() != null) {
@@ -264,7 +274,7 @@ final class EnvCommand implements Callable<Integer> {
         }
         for (RobotSummary r : report.robots()) {
             out.printf(Locale.ROOT, "robot %s: pose (%.0f, %.0f, %.1f) travelled %.0f mm, collisions %d, %s%s%n",
-                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name()),
+                    r.name(), r.x(), r.y(), r.th(), r.distance(), r.collisions(), howItEnded(report, r.name(), unattended),
                     howItJoined(report, r.name()));
         }
         out.flush();
@@ -276,10 +286,19 @@ final class EnvCommand implements Callable<Integer> {
      *         or {@code lost}, the step and the reason
      */
     static String howItEnded(RunReport report, String robot) {
+        return howItEnded(report, robot, r -> Optional.empty());
+    }
+
+    /**
+     * @return as {@link #howItEnded(RunReport, String)}, but for a robot the run had to the end whose
+     *         ARIA client left before, what its Pioneer port says instead of {@code ran to the end}
+     */
+    static String howItEnded(RunReport report, String robot, Function<String, Optional<String>> unattended) {
         if (report.absent().contains(robot)) {
             return "never connected to this run";
         }
-        return report.departure(robot).map(Departure::describe).orElse("ran to the end");
+        return report.departure(robot).map(Departure::describe)
+                .or(() -> unattended.apply(robot)).orElse("ran to the end");
     }
 
     /** @return {@code ""} for a robot there from the start, else how it last joined, such as {@code " (rejoined at step 12)"} */

@@ -68,7 +68,7 @@ final class PioneerOptions {
             throws IOException {
         List<ServedRobot> robots = new ArrayList<>();
         for (RobotSpec r : world.robots()) {
-            robots.add(new ServedRobot(r.name(), r.type(), r.parameters(), factors(r)));
+            robots.add(new ServedRobot(r.name(), r.type(), r.parameters(), factors(r), world.stepMs()));
         }
         PioneerPortOptions options = new PioneerPortOptions(bind, firstPort, allowSimExit,
                 PioneerPortOptions.DEFAULT_WATCHDOG_MS, true, HardwareOptions.defaults());

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.List;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.Departure;
@@ -72,5 +73,22 @@ class RunReportLinesTest {
 
         assertEquals("never connected to this run", EnvCommand.howItEnded(report, "r2"));
         assertEquals("ran to the end", EnvCommand.howItEnded(report, "r1"));
+    }
+
+    @Test
+    void aRobotWhoseAriaClientLeftSaysSoRatherThanThatItRanToTheEnd() {
+        RunReport report = new RunReport(40, 4000, "step limit 40 reached", List.of(at("r1", 1000), at("r2", 2000)),
+                0, null, 0, List.of(new Departure("r2", Departure.Kind.DROPPED, 7, "it broke a rule")));
+        String left = "its ARIA client left after step 12 (the client sent CLOSE); the robot stood still from then to"
+                + " the end";
+        StringWriter out = new StringWriter();
+
+        EnvCommand.printReport(new PrintWriter(out), report, robot -> Optional.of(left));
+
+        assertEquals(List.of(
+                "Run ended after 40 steps (4.0 s simulated): step limit 40 reached",
+                "robot r1: pose (1000, 1000, 90.0) travelled 1234 mm, collisions 1, " + left,
+                "robot r2: pose (2000, 1000, 90.0) travelled 1234 mm, collisions 1, dropped at step 7: it broke a rule"),
+                out.toString().lines().toList(), "a departure the Environment saw comes first");
     }
 }

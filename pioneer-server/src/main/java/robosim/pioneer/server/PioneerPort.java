@@ -7,12 +7,11 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
+import java.util.Optional;
 import java.util.function.IntConsumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import robosim.hw.RunEnd;
 import robosim.pioneer.ConfigPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.RobotIdentity;
@@ -20,8 +19,10 @@ import robosim.pioneer.RobotIdentity;
 /**
  * One robot's Pioneer port. It accepts one ARIA client at a time (a second is closed at once with a
  * log line); the first client to finish the handshake brings the robot into the run as a
- * {@link BridgeRobot}, which stays for the clients after it. When a program on the Environment's robot port drives the robot already,
- * the Environment refuses the bridge and the client is closed with the reason in the log.
+ * {@link BridgeRobot}, which stays for the clients after it. The handshake and the client's commands
+ * are answered at once, whatever the Environment is doing. When a program on the Environment's robot
+ * port drives the robot already, the Environment refuses the bridge and the client is closed with
+ * the reason in the log.
  */
 final class PioneerPort implements Closeable {
     private static final Logger LOG = Logger.getLogger(PioneerPort.class.getName());
@@ -126,6 +127,11 @@ final class PioneerPort implements Closeable {
                 break;
             }
         }
+        PioneerSession silent = current;
+        if (silent != null && !silent.isEnded() && silent.isGivingWay()) {
+            silent.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
+                    + s.getRemoteSocketAddress() + " wants the port");
+        }
         if (current != null && !current.isEnded()) {
             LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
                     + s.getRemoteSocketAddress() + " is closed (one client at a time)");
@@ -138,43 +144,42 @@ final class PioneerPort implements Closeable {
         session.start(this::connected);
     }
 
-    /** A client finished the handshake: the robot joins the run if it has not, and the client drives it. */
+    /**
+     * A client finished the handshake: it is attached at once, on the session's reader, which never
+     * waits on the Environment, so OPEN and CONFIG are answered as they come. The robot joins the run
+     * on its own thread if it has not (a refusal ends the session, with the reason, and the next
+     * client may try again); a robot whose part in the run has ended is not served again.
+     */
     private void connected(PioneerSession session) {
-        if (closed) {
-            session.end("the Pioneer port closed");
-            return;
-        }
-        BridgeRobot b = bridge;
-        if (b == null || !b.isConnected()) {
-            if (b != null && b.getRunEnd() != null) {
-                session.end("robot " + served.name() + "'s part in the run has ended (" + b.getRunEnd().describe() + ")");
-                return;
-            }
-            b = new BridgeRobot(served, envHost, envPort, options);
-            try {
-                b.start(secret).get(options.hardware().connectTimeoutMs() + 1000, TimeUnit.MILLISECONDS);
-            } catch (ExecutionException e) {
-                session.end("the Environment did not take robot " + served.name() + " from Pioneer port " + port()
-                        + ": " + e.getCause().getMessage());
-                return;
-            } catch (TimeoutException e) {
-                b.cancel();
-                session.end("the Environment did not welcome robot " + served.name() + " in time");
-                return;
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                b.cancel();
-                session.end("interrupted");
-                return;
-            }
+        BridgeRobot b;
+        synchronized (this) {
             if (closed) {
-                b.disconnect();
                 session.end("the Pioneer port closed");
                 return;
             }
-            bridge = b;
+            b = bridge;
+            if (b != null && b.hasLeftRun()) {
+                RunEnd end = b.getRunEnd();
+                session.end("robot " + served.name() + "'s part in the run has ended"
+                        + (end == null ? "" : " (" + end.describe() + ")"));
+                return;
+            }
+            if (b == null || b.failedToJoin()) {
+                b = new BridgeRobot(served, envHost, envPort, options);
+                bridge = b;
+                b.start(secret);
+            }
         }
         b.attach(session, simExit);
+    }
+
+    /**
+     * @return how the robot stood without a client to the end, for the run report; empty while a
+     *         client drives it, or when no ARIA client brought it into the run
+     */
+    Optional<String> unattended() {
+        BridgeRobot b = bridge;
+        return b == null ? Optional.empty() : b.unattended();
     }
 
     private static void close(Socket s) {
@@ -187,7 +192,9 @@ final class PioneerPort implements Closeable {
 
     @Override
     public void close() {
-        closed = true;
+        synchronized (this) {
+            closed = true;
+        }
         try {
             server.close();
         } catch (IOException e) {
@@ -199,7 +206,7 @@ final class PioneerPort implements Closeable {
         }
         BridgeRobot b = bridge;
         if (b != null) {
-            b.disconnect();
+            b.cancel();
         }
     }
 }

@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.IntConsumer;
 
 /**
@@ -71,6 +72,25 @@ public final class PioneerPorts implements Closeable {
             }
         }
         return -1;
+    }
+
+    /**
+     * What the run report says of a robot whose ARIA client left while it was in the run and that no
+     * client drove again: the Environment counts such a robot as in the run to the end (it stood
+     * still there), which is not the whole truth.
+     *
+     * @param robot a robot's name
+     * @return for example {@code its ARIA client left after step 37 (the client sent CLOSE); the
+     *         robot stood still from then to the end}; empty if a client drove it to the end, or if
+     *         no ARIA client brought it into the run
+     */
+    public Optional<String> unattended(String robot) {
+        for (PioneerPort p : ports) {
+            if (p.robot().name().equals(robot)) {
+                return p.unattended();
+            }
+        }
+        return Optional.empty();
     }
 
     /** Stops listening; the robots of attached clients leave the run. */

@@ -24,14 +24,15 @@ import robosim.pioneer.RobotIdentity;
  * written back. The client's bytes are read by a thread of the session's own; garbage, bad lengths
  * and bad checksums are dropped with a log line (at most one a second, with a count), never ending
  * the session or the run. A client that has not finished the handshake within
- * {@value #HANDSHAKE_MS} ms, or has been silent for {@value #SILENT_MS} ms, is closed so that the
- * port is free again.
+ * {@value #HANDSHAKE_MS} ms is closed so that the port is free again; one that has been silent for
+ * {@value #SILENT_MS} ms gives way to the next client that connects ({@link #isGivingWay()}), since an
+ * ARIA program that has connected its robot but not yet started its cycle sends nothing at all.
  */
 final class PioneerSession {
     private static final Logger LOG = Logger.getLogger(PioneerSession.class.getName());
     /** How long a client may take over the SYNC handshake, ms. */
     static final int HANDSHAKE_MS = 10_000;
-    /** How long a client may be silent before its port is freed, ms. */
+    /** How long a client may be silent before it gives its port to the next client, ms. */
     static final int SILENT_MS = 15_000;
     private static final int CHECK_MS = 1000;
     /** The packets that may wait for a client that reads slowly. */
@@ -51,7 +52,8 @@ final class PioneerSession {
     private Consumer<PioneerSession> connected;
     private volatile CommandHandler handler;
     private volatile Supplier<ConfigPacket> config;
-    private volatile Runnable onEnd;
+    private volatile Consumer<String> onEnd;
+    private volatile String endReason;
     private final BlockingQueue<byte[]> outgoing = new ArrayBlockingQueue<>(MAX_QUEUED);
     private long drops;
     private long lastDropLogNanos;
@@ -86,18 +88,19 @@ final class PioneerSession {
     }
 
     /**
-     * Gives the session its robot, once the handshake is done.
+     * Gives the session its robot, at once when the handshake is done: from then the session answers
+     * OPEN, CONFIG, PULSE and the client's commands itself, whatever the Environment is doing.
      *
      * @param commands carries out the commands
-     * @param config   the answer to CONFIG, as the robot is now
-     * @param ended    run once when the session ends
+     * @param config   the answer to CONFIG, as the robot is now; it must not wait on anything
+     * @param ended    told once, with the reason, when the session ends
      */
-    void attach(CommandHandler commands, Supplier<ConfigPacket> config, Runnable ended) {
+    void attach(CommandHandler commands, Supplier<ConfigPacket> config, Consumer<String> ended) {
         this.handler = commands;
         this.config = config;
         this.onEnd = ended;
         if (this.ended) {
-            ended.run();
+            ended.accept(endReason);
         }
     }
 
@@ -168,8 +171,7 @@ final class PioneerSession {
     }
 
     /**
-     * A client that holds a port without a handshake, or that has gone silent for longer than ARIA
-     * itself waits before it drops a robot, is closed so that the port is free for the next.
+     * A client that holds a port without a handshake is closed so that the port is free for the next.
      *
      * @return why the client is closed, or null while it may stay
      */
@@ -177,11 +179,16 @@ final class PioneerSession {
         if (phase != Phase.CONNECTED && System.nanoTime() - started > HANDSHAKE_MS * 1_000_000L) {
             return "no handshake within " + HANDSHAKE_MS + " ms";
         }
-        if (silentMs() > SILENT_MS) {
-            return "silent for " + SILENT_MS + " ms (an ARIA program sends a PULSE every 500 ms, and gives a robot up"
-                    + " after 8 s)";
-        }
         return null;
+    }
+
+    /**
+     * @return whether the client has been silent for {@value #SILENT_MS} ms, longer than a running
+     *         ARIA program ever is (it sends a PULSE every 500 ms): the port goes to the next client
+     *         that connects, and this one is closed
+     */
+    boolean isGivingWay() {
+        return silentMs() > SILENT_MS;
     }
 
     private void take(PioneerPacket p) {
@@ -279,6 +286,7 @@ final class PioneerSession {
             if (ended) {
                 return;
             }
+            endReason = reason;
             ended = true;
         }
         LOG.info(() -> "robot " + robot + ": the ARIA client at " + client + " left: " + reason);
@@ -287,9 +295,9 @@ final class PioneerSession {
         } catch (IOException e) {
             LOG.log(Level.FINE, "closing", e);
         }
-        Runnable r = onEnd;
+        Consumer<String> r = onEnd;
         if (r != null) {
-            r.run();
+            r.accept(reason);
         }
     }
 }

@@ -11,7 +11,8 @@ import robosim.protocol.RobotState;
  * by the DistConvFactor (15 bits that wrap), the heading by the AngleConvFactor, wheel velocities
  * by the VelConvFactor, sonar ranges by the RangeConvFactor. At most 16 sonar readings go in one
  * SIP, cycling through the ring as MobileSim does, so a ring of more than 16 takes several SIPs.
- * The battery reads 13.0 V, as MobileSim's does.
+ * The battery reads 13.0 V, as MobileSim's does. Safe to use from the robot's thread and the
+ * thread that sends the SIPs of a robot standing by.
  */
 final class SipBuilder {
     /** The most sonar readings one SIP carries. */
@@ -37,18 +38,37 @@ final class SipBuilder {
      * @return the SIP
      */
     Sip build(RobotState state, OdometryFrame frame, boolean motorsEnabled, boolean sonarOn) {
+        return build(state, frame, motorsEnabled, sonarOn, false);
+    }
+
+    /**
+     * The SIP of a robot standing where the state puts it, while the run does not step: the state's
+     * pose, sonar and bumpers, velocities zero.
+     *
+     * @param state         the robot's latest state
+     * @param frame         its odometry frame
+     * @param motorsEnabled whether the client has enabled the motors
+     * @param sonarOn       whether the sonar is on
+     * @return the SIP
+     */
+    Sip standing(RobotState state, OdometryFrame frame, boolean motorsEnabled, boolean sonarOn) {
+        return build(state, frame, motorsEnabled, sonarOn, true);
+    }
+
+    private synchronized Sip build(RobotState state, OdometryFrame frame, boolean motorsEnabled, boolean sonarOn,
+                                   boolean standing) {
         double[] pose = frame.toRobot(state.x(), state.y(), state.th());
         int x = (int) Math.round(pose[0] / factors.distConvFactor());
         int y = (int) Math.round(pose[1] / factors.distConvFactor());
         int th = (int) Math.round(Math.toRadians(pose[2]) / factors.angleConvFactor());
-        int left = (int) Math.round(state.leftVel() / factors.velConvFactor());
-        int right = (int) Math.round(state.rightVel() / factors.velConvFactor());
+        int left = standing ? 0 : (int) Math.round(state.leftVel() / factors.velConvFactor());
+        int right = standing ? 0 : (int) Math.round(state.rightVel() / factors.velConvFactor());
         int stallBump = (state.stalled() ? Sip.LEFT_STALL | Sip.RIGHT_STALL : 0) | bumperBits(state.bumpers());
         int flags = (motorsEnabled ? Sip.FLAG_MOTORS : 0) | (sonarOn ? Sip.FLAG_SONARS : 0);
-        boolean moving = state.vel() != 0 || state.rotVel() != 0;
+        boolean moving = !standing && (state.vel() != 0 || state.rotVel() != 0);
+        int rotVel = standing ? 0 : (int) Math.round(state.rotVel() * 10);
         return new Sip(moving, x, y, th, left, right, BATTERY, stallBump, 0, flags, 0,
-                sonarOn ? sonar(state.sonar()) : List.of(), 0xff, 0xff, BATTERY, 0,
-                (int) Math.round(state.rotVel() * 10), 0, 0, -127, 0);
+                sonarOn ? sonar(state.sonar()) : List.of(), 0xff, 0xff, BATTERY, 0, rotVel, 0, 0, -127, 0);
     }
 
     private List<Sip.SonarReading> sonar(int[] ranges) {

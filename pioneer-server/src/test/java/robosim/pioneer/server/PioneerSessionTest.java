@@ -98,11 +98,11 @@ class PioneerSessionTest {
     void namesTooLongForAriasPacketsAreRefusedWhenThePortOpens() {
         RobotParameters p = new RobotParameters("Pioneer", "p".repeat(100), 250, 425, 210, 301, 2200, 500, 300, 300, 100,
                 100, 0.0056, 5000, List.of());
-        ServedRobot r = new ServedRobot("r".repeat(64), "pioneer", p, ConversionFactors.ARIA_DEFAULTS);
+        ServedRobot r = new ServedRobot("r".repeat(64), "pioneer", p, ConversionFactors.ARIA_DEFAULTS, 100);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> PioneerPort.requireFits(r));
         assertTrue(e.getMessage().contains("too long for the Pioneer protocol's 200-byte packets"), e.getMessage());
         ServedRobot ok = new ServedRobot("r1", "pioneer", new RobotParameters("Pioneer", "p3dx", 250, 425, 210, 301,
-                2200, 500, 300, 300, 100, 100, 0.0056, 5000, List.of()), ConversionFactors.ARIA_DEFAULTS);
+                2200, 500, 300, 300, 100, 100, 0.0056, 5000, List.of()), ConversionFactors.ARIA_DEFAULTS, 100);
         PioneerPort.requireFits(ok);
     }
 }

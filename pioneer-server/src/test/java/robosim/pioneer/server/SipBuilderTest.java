@@ -71,4 +71,18 @@ class SipBuilderTest {
         assertEquals(Sip.LEFT_STALL | Sip.RIGHT_STALL | 1 << 3, sip.stallBump(), "stall, and the front centre bumper");
         assertEquals(1 << 3 << 8, SipBuilder.bumperBits(1 << 3), "the rear centre bumper");
     }
+
+    @Test
+    void aRobotStandingKeepsItsPoseAndSonarWithItsVelocitiesZero() {
+        OdometryFrame frame = new OdometryFrame();
+        frame.resetAt(1000, 2000, 90);
+        Sip sip = new SipBuilder(P3DX).standing(state(1000, 2970, 90, 100, 120, false, new int[] {970}, 0), frame,
+                true, true);
+        assertEquals(2000, sip.xPos());
+        assertEquals(0, sip.leftVel());
+        assertEquals(0, sip.rightVel());
+        assertEquals(0, sip.rotVelX10());
+        assertEquals(false, sip.moving(), "a stopped SIP (0x32)");
+        assertEquals(List.of(new Sip.SonarReading(0, 970)), sip.sonar());
+    }
 }
