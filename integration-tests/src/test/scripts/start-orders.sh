@@ -9,15 +9,16 @@
 #
 # usage: start-orders.sh OUT_DIR PORT...
 #   OUT_DIR  a folder for each case's logs
-#   PORT...  free ports, three per case (robot, viewer, Pioneer); the cases take them in turn
+#   PORT...  free ports, three per case (robot, viewer, Pioneer: the Pioneer case takes that one and the next)
 # environment:
 #   ROBOSIM         the launcher (default: bin/robosim of this clone)
 #   STEPS           steps per run (default 50)
 #   CASE_TIMEOUT    seconds any one command may take (default 300)
 #   PANEL           1 to add the ControlPanel case
 #   CASES           the cases to run, by name (default: all); e.g. CASES="env-0s robots-3s"
-#   PIONEER_CLIENT  a command, run as PIONEER_CLIENT HOST PORT, that does ARIA's handshake with ARIA's
-#                   patience, reads status packets and exits 0; set to add the Pioneer case
+#   PIONEER_CLIENT  a program, run as PIONEER_CLIENT HOST PORT, that does ARIA's handshake with ARIA's
+#                   patience for robot r2 on its Pioneer port, reads status packets and exits 0; set to
+#                   add the Pioneer case
 # prints one line per case (how long its start took) and exits 0 only if every case passed.
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../../.." && pwd)"
@@ -41,7 +42,9 @@ run_case() {
   started="$(now)"
   start_env() {
     local extra=()
-    [ "$name" = pioneer ] && extra=(--pioneer-port "$pp" --robot pioneer:r2)
+    # every robot of the world is offered on a Pioneer port, r1 on PORT and r2 on PORT+1; r1's program
+    # takes it over the robot port instead
+    [ "$name" = pioneer ] && extra=(--pioneer-port "$pp")
     robosim env "$WORLD" --steps "$STEPS" --robot-port "$rp" --viewer-port "$vp" "${extra[@]}" \
       >"$dir/env.out" 2>"$dir/env.err" &
     env_pid=$!
@@ -49,7 +52,8 @@ run_case() {
   start_robots() {
     for r in r1 r2; do
       if [ "$name" = pioneer ] && [ "$r" = r2 ]; then
-        timeout --kill-after=10 "$CASE_TIMEOUT" $PIONEER_CLIENT 127.0.0.1 "$pp" >"$dir/$r.out" 2>"$dir/$r.err" &
+        timeout --kill-after=10 "$CASE_TIMEOUT" "$PIONEER_CLIENT" 127.0.0.1 "$((pp + 1))" >"$dir/$r.out" \
+          2>"$dir/$r.err" &
       else
         robosim robot robosim.examples.wander.Wander "$r" localhost "$rp" >"$dir/$r.out" 2>"$dir/$r.err" &
       fi
@@ -81,8 +85,13 @@ run_case() {
     kill "$panel_pid" 2>/dev/null; wait "$panel_pid" 2>/dev/null
   fi
   for r in r1 r2; do
+    # the ARIA client reads its status packets and leaves: its robot stands to the end
+    [ "$name" = pioneer ] && [ "$r" = r2 ] && continue
     grep -q "^robot $r: .* ran to the end" "$dir/env.out" || failed+=("the report does not say $r ran to the end")
   done
+  if [ "$name" = pioneer ]; then
+    grep -q "^robot r2: .* its ARIA client left" "$dir/env.out" || failed+=("the report does not say r2's client left")
+  fi
   if [ "$name" = panel ]; then
     grep -q "detached from .* up to step $STEPS, ended: done" "$dir/panel.err" \
       || failed+=("the panel did not follow the run to its end")

@@ -22,7 +22,8 @@ import robosim.cli.Main;
  * {@code src/test/scripts/start-orders.sh} starts an Environment and its two robots, each a JVM of
  * its own with the tour's command lines, in every order the tour allows (the Environment first or
  * the robots first, 0 to 3 s apart), all cases at once, and with a display a ControlPanel attached
- * before its Environment. Meanwhile twice as many processes as the machine has cores spin. Every
+ * before its Environment, and an ARIA client ({@link AriaHandshakeClient}, ARIA's patience for each
+ * answer) on a Pioneer port while the run waits for its other robot. Meanwhile twice as many processes as the machine has cores spin. Every
  * case must start, run its steps and end with no connection refused, and every order must give
  * the same run. The launcher is this JVM's classpath in a script of the same shape as
  * {@code bin/robosim}, which would otherwise build the project again.
@@ -40,15 +41,17 @@ class StartOrdersUnderLoadTest {
             System.err.println("StartOrdersUnderLoadTest: no DISPLAY, so the ControlPanel case is SKIPPED;"
                     + " run under xvfb-run (as .ci/run does) to include it");
         }
-        int cases = 6 + (display ? 1 : 0);
+        int cases = 7 + (display ? 1 : 0);
         List<String> cmd = new ArrayList<>(List.of("bash",
                 LocalEnvironment.root().resolve("integration-tests/src/test/scripts/start-orders.sh").toString(),
                 dir.resolve("out").toString()));
+        // the Pioneer case comes last: its third port and the one after it are the two robots' Pioneer ports
         for (int port : freePorts(3 * cases)) {
             cmd.add(Integer.toString(port));
         }
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
         pb.environment().put("ROBOSIM", launcher.toString());
+        pb.environment().put("PIONEER_CLIENT", java("aria-client", AriaHandshakeClient.class.getName()).toString());
         pb.environment().put("ROBOSIM_TOKEN_DIR", dir.resolve("tokens").toString());
         pb.environment().put("CASE_TIMEOUT", "240");
         pb.environment().remove("ROBOSIM_TOKEN");
@@ -78,11 +81,16 @@ class StartOrdersUnderLoadTest {
 
     /** @return a script that runs the launcher on this JVM's classpath, as {@code bin/robosim} runs it */
     private Path launcher() throws IOException {
-        Path script = dir.resolve("robosim");
+        return java("robosim", Main.class.getName());
+    }
+
+    /** @return a script named {@code name} that runs a main class on this JVM's classpath with its arguments */
+    private Path java(String name, String mainClass) throws IOException {
+        Path script = dir.resolve(name);
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Files.writeString(script, "#!/usr/bin/env bash\nexec '" + java + "' -Djava.awt.headless=true '-Drobosim.root="
-                + LocalEnvironment.root() + "' -cp '" + System.getProperty("java.class.path") + "' "
-                + Main.class.getName() + " \"$@\"\n");
+                + LocalEnvironment.root() + "' -cp '" + System.getProperty("java.class.path") + "' " + mainClass
+                + " \"$@\"\n");
         assertTrue(script.toFile().setExecutable(true));
         return script;
     }
@@ -96,14 +104,33 @@ class StartOrdersUnderLoadTest {
         return spinners;
     }
 
-    /** @return ports free now on loopback, all different */
+    /**
+     * @return ports free now on loopback, all different, the last of which has a free port after it
+     *         too (also different from the others)
+     */
     private static List<Integer> freePorts(int count) throws IOException {
         List<ServerSocket> held = new ArrayList<>();
+        List<ServerSocket> passedOver = new ArrayList<>();
         try {
-            for (int i = 0; i < count; i++) {
-                held.add(new ServerSocket(0, 1, InetAddress.getLoopbackAddress()));
+            List<Integer> ports = new ArrayList<>();
+            for (int i = 0; i < count - 1; i++) {
+                ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+                held.add(s);
+                ports.add(s.getLocalPort());
             }
-            return held.stream().map(ServerSocket::getLocalPort).toList();
+            for (int tries = 0; tries < 100; tries++) {
+                ServerSocket last = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+                held.add(last);
+                try {
+                    held.add(new ServerSocket(last.getLocalPort() + 1, 1, InetAddress.getLoopbackAddress()));
+                    ports.add(last.getLocalPort());
+                    return ports;
+                } catch (IOException | IllegalArgumentException taken) {
+                    // the next port is taken (or past 65535): held on to, so that it is not given again
+                    passedOver.add(last);
+                }
+            }
+            throw new IOException("no free port with a free port after it in 100 tries");
         } finally {
             for (ServerSocket s : held) {
                 s.close();
