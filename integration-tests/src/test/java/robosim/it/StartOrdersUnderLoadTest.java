@@ -110,7 +110,6 @@ class StartOrdersUnderLoadTest {
      */
     private static List<Integer> freePorts(int count) throws IOException {
         List<ServerSocket> held = new ArrayList<>();
-        List<ServerSocket> passedOver = new ArrayList<>();
         try {
             List<Integer> ports = new ArrayList<>();
             for (int i = 0; i < count - 1; i++) {
@@ -127,7 +126,6 @@ class StartOrdersUnderLoadTest {
                     return ports;
                 } catch (IOException | IllegalArgumentException taken) {
                     // the next port is taken (or past 65535): held on to, so that it is not given again
-                    passedOver.add(last);
                 }
             }
             throw new IOException("no free port with a free port after it in 100 tries");
