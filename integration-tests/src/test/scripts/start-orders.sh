@@ -52,6 +52,12 @@ run_case() {
   start_robots() {
     for r in r1 r2; do
       if [ "$name" = pioneer ] && [ "$r" = r2 ]; then
+        # as with MobileSim, an ARIA program is started once the simulator says its ports are open:
+        # ARIA connects once and does not try again
+        until grep -q "^Pioneer ports on" "$dir/env.out" 2>/dev/null; do
+          kill -0 "$env_pid" 2>/dev/null || break
+          sleep 0.1
+        done
         timeout --kill-after=10 "$CASE_TIMEOUT" "$PIONEER_CLIENT" 127.0.0.1 "$((pp + 1))" >"$dir/$r.out" \
           2>"$dir/$r.err" &
       else
