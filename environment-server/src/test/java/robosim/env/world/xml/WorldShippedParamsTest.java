@@ -54,6 +54,18 @@ class WorldShippedParamsTest {
     }
 
     @Test
+    void theSecondExampleInTheFormatDocumentLoadsWithItsShippedNames() throws Exception {
+        String doc = Files.readString(WorldFixtures.root().resolve("docs/WORLD-FORMAT.md"));
+        int section = doc.indexOf("## A second example");
+        int start = doc.indexOf("```xml\n", section) + "```xml\n".length();
+        World w = fixtures.read("example.xml", doc.substring(start, doc.indexOf("```", start)));
+        assertEquals("example", w.name());
+        assertEquals(shipped("p3dx.p"), w.robots().get(0).parameterFile());
+        assertEquals(shipped("p3dx.xml"), w.robots().get(1).parameterFile());
+        assertEquals(5000, w.gold().x());
+    }
+
+    @Test
     void aPathKeepsMeaningAPathRelativeToTheWorldFile() {
         World w = fixtures.read("path.xml", """
                 <world name="path" width="6000" height="6000">
