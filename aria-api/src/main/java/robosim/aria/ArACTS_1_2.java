@@ -11,7 +11,7 @@ import robosim.protocol.RobotState;
  * ACTS colour-blob tracking with ARIA's {@code ArACTS_1_2} names (ArACTS.h): channels 1 to
  * {@value #NUM_CHANNELS}, blobs numbered from 1, largest first, at most {@value #MAX_BLOBS} a
  * channel, in a {@value #WIDTH} × {@value #HEIGHT} image. The Environment computes the blobs each
- * step from what the robot's camera sees (see the README's camera model), so there is no ACTS
+ * step from what the robot's camera sees (see the camera model in docs/SIMULATION.md), so there is no ACTS
  * server to reach: {@link #openPort(ArRobot)} starts the tracking.
  *
  * <p>The channels start bound to red (1), green (2), blue (3), yellow (4), cyan (5), magenta (6),

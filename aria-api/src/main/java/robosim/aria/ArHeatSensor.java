@@ -8,7 +8,7 @@ import robosim.protocol.RobotState;
  * A heat sensor (a RoboSim addition; real Pioneers have none): it senses the strongest heat source
  * in its field of view, centred on the robot's heading, out to its range. A source of intensity
  * I is felt as I·(1000/d)², d its distance in mm (at least 250 mm); walls and obstacles block
- * heat, robots do not. See the README's heat model.
+ * heat, robots do not. See the heat model in docs/SIMULATION.md.
  *
  * <pre>{@code
  * ArHeatSensor heat = new ArHeatSensor(90, 6000);

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The README's "Depending on RoboSim": a project of one's own, with a {@code pom.xml} that depends
+ * The "Depending on RoboSim" of docs/BUILDING.md: a project of one's own, with a {@code pom.xml} that depends
  * on {@code robosim:aria-api}, builds against RoboSim's artifacts as {@code mvn install} puts them
  * in a local repository. The test lays the artifacts out so in a local repository of its own (the
  * poms, and each module's jar, or one packed from its classes when the jars were not built),
@@ -76,7 +76,7 @@ class DependOnRoboSimTest {
                 "aria-api's libraries came along as dependencies of its dependencies");
     }
 
-    /** The README's pom.xml and a program using the ARIA API. */
+    /** The pom.xml of docs/BUILDING.md and a program using the ARIA API. */
     private static Path project(Path project) throws IOException {
         Files.createDirectories(project.resolve("src/main/java/my/robot"));
         Files.writeString(project.resolve("pom.xml"), """

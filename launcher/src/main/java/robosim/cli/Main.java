@@ -8,7 +8,8 @@ import picocli.CommandLine.Command;
 @Command(name = "robosim", mixinStandardHelpOptions = true, version = "RoboSim 0.1.0",
         description = "RoboSim, a multi-robot simulator: an Environment server, robot clients and viewers.",
         subcommands = {EnvCommand.class, RobotCommand.class, ViewerCommand.class, ReplayCommand.class, DemoCommand.class,
-                BenchCommand.class, MazeCommand.class, GoldfinderCommand.class, CommsCommand.class, ControlCommand.class, RemoteCommand.class, PanelCommand.class, CommandLine.HelpCommand.class})
+                BenchCommand.class, MazeCommand.class, GoldfinderCommand.class, CommsCommand.class, ControlCommand.class,
+                RemoteCommand.class, PanelCommand.class, ClasspathCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

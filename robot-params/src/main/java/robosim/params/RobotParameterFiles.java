@@ -3,14 +3,16 @@ package robosim.params;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.List;
+import java.util.Optional;
 import robosim.protocol.RobotParameters;
 
 /**
  * Finds and reads a robot parameter file, in either form ({@code .p} or {@code .xml}; see
  * {@link RobotParametersReader}). A path that exists is read as given; a bare name such as
  * {@code p3dx}, {@code p3dx.p} or {@code p3dx.xml} is also looked for in
- * {@code testLoadFiles/robots/} under the RoboSim root (system property {@code robosim.root},
- * else the working directory). A name without an extension means ARIA's {@code .p} form.
+ * {@code testLoadFiles/robots/} under the RoboSim root ({@link #root()}). A name without an
+ * extension means ARIA's {@code .p} form.
  */
 public final class RobotParameterFiles {
     private RobotParameterFiles() {
@@ -101,10 +103,40 @@ public final class RobotParameterFiles {
     }
 
     /**
-     * @return the RoboSim root: system property {@code robosim.root}, else the working directory
+     * @return the RoboSim root: the system property {@code robosim.root}; else the working directory
+     *         when it holds {@code testLoadFiles/robots}; else the clone RoboSim's jars were loaded
+     *         from (a program run with plain {@code java} from a folder of its own); else the working
+     *         directory
      */
     public static Path root() {
-        return Paths.get(System.getProperty("robosim.root", "."));
+        return ShippedFiles.root();
+    }
+
+    /**
+     * Finds a shipped parameter file by its bare name, as {@code ArRobot}, {@code env --robot} and a
+     * world's {@code params} take it.
+     *
+     * @param name for example {@code p3dx}, {@code p3dx.p} or {@code scout.xml}: a name without an
+     *             extension means ARIA's {@code .p} form; a name with a path separator is no shipped name
+     * @return the file in {@code testLoadFiles/robots/} under the {@link #root()}, or empty
+     */
+    public static Optional<Path> shipped(String name) {
+        return ShippedFiles.find(name);
+    }
+
+    /**
+     * @return the names {@link #shipped} finds, sorted: each {@code .p} file's name without its
+     *         extension ({@code p3dx}), each {@code .xml} file's with it ({@code p3dx.xml}); for messages
+     */
+    public static List<String> shippedNames() {
+        return ShippedFiles.names();
+    }
+
+    /**
+     * @return the folder {@link #shipped} looks in: {@code testLoadFiles/robots} under the {@link #root()}
+     */
+    public static Path shippedFolder() {
+        return ShippedFiles.robots(root());
     }
 
     /**
@@ -117,13 +149,12 @@ public final class RobotParameterFiles {
         if (Files.isRegularFile(given)) {
             return given;
         }
-        String name = file.endsWith(".p") || file.endsWith(".xml") ? file : file + ".p";
-        Path root = root();
-        Path shipped = root.resolve("testLoadFiles").resolve("robots").resolve(name);
-        if (Files.isRegularFile(shipped)) {
-            return shipped;
+        Optional<Path> shipped = shipped(file);
+        if (shipped.isPresent()) {
+            return shipped.get();
         }
         throw new IllegalArgumentException("robot parameter file '" + file + "' not found (looked at "
-                + given.toAbsolutePath() + " and " + shipped.toAbsolutePath() + ")");
+                + given.toAbsolutePath() + " and " + shippedFolder().resolve(ShippedFiles.withExtension(file))
+                .toAbsolutePath() + ")");
     }
 }

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.GeometryFactory;
@@ -25,8 +26,8 @@ import robosim.protocol.RobotHello;
 
 /**
  * Turns {@code <robot>} elements into {@link RobotSpec}s: reads each robot's parameter file
- * (relative to the world file) and checks that its body, as that file sizes it, starts inside
- * the world and clear of the obstacles and of the robots placed before it.
+ * (relative to the world file, or a shipped one named as {@code p3dx}) and checks that its body,
+ * as that file sizes it, starts inside the world and clear of the obstacles and of the robots placed before it.
  */
 final class RobotPlacer {
     /** The robot types a world may name; {@code scout} is reserved for the Scout API. */
@@ -81,8 +82,26 @@ final class RobotPlacer {
         double y = attributes.number(e, "y", e.y);
         double th = attributes.number(e, "th", e.th, 0);
         String params = attributes.text(e, "params", e.params);
-        Path file = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
-        return place(e, name, type, x, y, th, params, file);
+        return place(e, name, type, x, y, th, params, parameterFile(e, name, params));
+    }
+
+    /**
+     * The file a {@code params} attribute names: a path relative to the world file's directory, or,
+     * when there is no such file, a shipped name such as {@code p3dx}.
+     */
+    private Path parameterFile(Element e, String name, String params) {
+        Path relative = attributes.file().toAbsolutePath().getParent().resolve(params).normalize();
+        if (Files.exists(relative)) {
+            return relative;
+        }
+        Optional<Path> shipped = RobotParameterFiles.shipped(params);
+        if (shipped.isPresent()) {
+            return shipped.get().toAbsolutePath().normalize();
+        }
+        throw attributes.error(e, "robot '" + name + "': parameter file " + params + " does not exist (looked for "
+                + relative + ") and is no shipped name: params is a path relative to the world file's directory,"
+                + " or the name of a file in " + RobotParameterFiles.shippedFolder().toAbsolutePath().normalize()
+                + " (" + String.join(", ", RobotParameterFiles.shippedNames()) + ")");
     }
 
     /**

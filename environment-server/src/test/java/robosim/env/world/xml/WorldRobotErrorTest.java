@@ -1,5 +1,7 @@
 package robosim.env.world.xml;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -82,6 +84,16 @@ class WorldRobotErrorTest {
         fixtures.fails("noparams.xml", world(robot("r2", "pioneer", 4000, 4000, "../robots/p4.p")), 4,
                 "robot 'r2': parameter file ../robots/p4.p does not exist",
                 dir.resolve("robots/p4.p").toString());
+    }
+
+    @Test
+    void aNameThatIsNeitherAFileNorShippedSaysBothRules() {
+        WorldFileException e = fixtures.fails("unknown.xml", world(robot("r2", "pioneer", 4000, 4000, "p9dx")), 4,
+                "robot 'r2': parameter file p9dx does not exist (looked for " + dir.resolve("environment/p9dx") + ")",
+                "params is a path relative to the world file's directory, or the name of a file in "
+                        + WorldFixtures.root().resolve("testLoadFiles/robots"),
+                "p3at, ", "p3dx, ", "scout");
+        assertEquals(4, e.line());
     }
 
     @Test
