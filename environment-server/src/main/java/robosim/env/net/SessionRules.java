@@ -406,10 +406,7 @@ final class SessionRules {
         if (reason != null) {
             departed(name, Departure.Kind.DROPPED, reason);
         }
-        Connection c = robots.remove(name);
-        waiting.remove(name);
-        sim().halt(name);
-        sim().setConnected(name, false);
+        Connection c = takeOut(name);
         if (c == null) {
             return;
         }
@@ -423,15 +420,21 @@ final class SessionRules {
         }
     }
 
+    /** Takes a robot out of the run's connected robots, its body halted. @return its connection, or null */
+    private Connection takeOut(String name) {
+        Connection c = robots.remove(name);
+        waiting.remove(name);
+        sim().halt(name);
+        sim().setConnected(name, false);
+        return c;
+    }
+
     /**
      * Ends a robot's part because its run ends (a restart or load): it is told so with a
      * {@link Bye#DONE} bye, as at a run's end, not dropped.
      */
     private void endFor(String name, String why) {
-        Connection c = robots.remove(name);
-        waiting.remove(name);
-        sim().halt(name);
-        sim().setConnected(name, false);
+        Connection c = takeOut(name);
         if (c == null) {
             return;
         }
