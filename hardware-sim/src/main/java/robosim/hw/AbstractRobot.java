@@ -106,7 +106,9 @@ public abstract class AbstractRobot {
                 return;
             } catch (RefusedException e) {
                 String now = RunSecret.findAgain(host, port);
-                if (!RunSecret.mayClear(e.reason(), lookup.given(), now) || System.nanoTime() - deadline > 0) {
+                // a shared link's refusal is of the secret the robot that opened the link presented
+                String presented = e.presented() != null ? e.presented() : lookup.given();
+                if (!RunSecret.mayClear(e.reason(), presented, now) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
                 LOG.info(() -> "robot " + name + ": the Environment at " + host + ":" + port + " refused the run secret"

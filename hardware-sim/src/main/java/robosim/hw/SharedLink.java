@@ -72,6 +72,8 @@ final class SharedLink {
     private List<LinkRequests.ForRobot> batch = new ArrayList<>();
     private long batchOpenedNanos;
     private volatile String endReason;
+    /** The secret the link's hello presented. */
+    private String presented;
 
     private record Joining(LinkMember member, CompletableFuture<Welcome> welcome) {
     }
@@ -97,7 +99,8 @@ final class SharedLink {
             socket.setSoTimeout((int) options.lostAfterMs());
             reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
             writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), secret.get()));
+            presented = secret.get();
+            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), presented));
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;
@@ -325,7 +328,7 @@ final class SharedLink {
         }
         for (Joining j : joining.values()) {
             // a link refused (its secret) refuses the robots that were joining on it
-            j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? new RefusedException(endReason, reason)
+            j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? new RefusedException(endReason, reason, presented)
                     : new IOException(endReason));
         }
         for (LinkMember m : members.values()) {

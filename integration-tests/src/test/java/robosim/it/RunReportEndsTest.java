@@ -92,7 +92,9 @@ class RunReportEndsTest {
                   <robot name="r4" type="pioneer" x="6500" y="6500" params="%1$s"/>
                 </world>
                 """.formatted(p3dx));
-        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 500, 30_000, 0, 4 << 20);
+        // r4 stops answering in its second step: no first steps' allowance here
+        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, STEPS, false, 500, 30_000, 0, 4 << 20)
+                .withFirstStepsTimeoutMs(500);
         try (LocalEnvironment h = new LocalEnvironment(WorldReader.read(world), 1, options);
              RawPeer r2 = new RawPeer(h.robotPort());
              RawPeer r3 = new RawPeer(h.robotPort());
@@ -111,7 +113,8 @@ class RunReportEndsTest {
             r2.send(new Bye("its work is done"));
             r3.close(); // gone without a bye, as a robot program that died
             // r4 says nothing: it misses step 2's deadline
-            assertEquals(new Bye("it did not send its requests for step 2 within 500 ms"), nextStepOrWelcome(r4));
+            assertEquals(new Bye("it did not send its requests for step 2 within 500 ms (env --step-timeout gives it longer)"),
+                    nextStepOrWelcome(r4));
 
             RunReport report = h.await();
             assertEquals("step limit " + STEPS + " reached", report.endReason());
@@ -121,7 +124,8 @@ class RunReportEndsTest {
             assertEquals(Optional.of(new Departure("r3", Departure.Kind.LOST, 2, "the connection closed without a bye")),
                     report.departure("r3"));
             assertEquals(Optional.of(new Departure("r4", Departure.Kind.DROPPED, 2,
-                    "it did not send its requests for step 2 within 500 ms")), report.departure("r4"));
+                    "it did not send its requests for step 2 within 500 ms (env --step-timeout gives it longer)")),
+                    report.departure("r4"));
             assertEquals(3, report.departures().size(), report.departures().toString());
             r1.join(10_000);
         }

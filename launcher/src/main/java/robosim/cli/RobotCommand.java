@@ -70,6 +70,12 @@ final class RobotCommand implements Callable<Integer> {
                     + " (a Pioneer server: MS ms without a status packet)")
     Long lostAfterMs;
 
+    @Option(names = "--connect-timeout", paramLabel = "MS",
+            description = "wait up to MS ms for the Environment to listen and welcome the robot (it may be started"
+                    + " after its robots); default: the system property " + HardwareOptions.CONNECT_TIMEOUT_PROPERTY
+                    + " if set, else " + HardwareOptions.DEFAULT_CONNECT_TIMEOUT_MS)
+    Long connectTimeoutMs;
+
     @Mixin
     SecretOption secret;
 
@@ -115,9 +121,13 @@ final class RobotCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), lostAfterMs + " was supplied for --lost-after: it is 1 to "
                     + Integer.MAX_VALUE + " ms");
         }
-        if (lostAfterMs == null) {
+        if (connectTimeoutMs != null && (connectTimeoutMs < 1 || connectTimeoutMs > Integer.MAX_VALUE)) {
+            throw new ParameterException(spec.commandLine(), connectTimeoutMs + " was supplied for --connect-timeout: it"
+                    + " is 1 to " + Integer.MAX_VALUE + " ms");
+        }
+        if (lostAfterMs == null || connectTimeoutMs == null) {
             try {
-                HardwareOptions.configuredLostAfterMs();
+                HardwareOptions.defaults();
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
@@ -163,12 +173,15 @@ final class RobotCommand implements Callable<Integer> {
         // the program's robots read the lost time and the Pioneer server when they connect, without code of their own
         String lostBefore = set(HardwareOptions.LOST_AFTER_PROPERTY, lostAfterMs == null ? null : Long.toString(lostAfterMs));
         String pioneerBefore = set(EnvironmentLinks.PIONEER_PROPERTY, pioneer);
+        String connectBefore = set(HardwareOptions.CONNECT_TIMEOUT_PROPERTY,
+                connectTimeoutMs == null ? null : Long.toString(connectTimeoutMs));
         try {
             return new RobotProgram(main, args.toArray(new String[0]), loader, name, quiet.quiet)
                     .run(spec.commandLine().getOut(), spec.commandLine().getErr());
         } finally {
             restore(HardwareOptions.LOST_AFTER_PROPERTY, lostAfterMs, lostBefore);
             restore(EnvironmentLinks.PIONEER_PROPERTY, pioneer, pioneerBefore);
+            restore(HardwareOptions.CONNECT_TIMEOUT_PROPERTY, connectTimeoutMs, connectBefore);
         }
     }
 
