@@ -2,8 +2,8 @@
 # Starts the README tour's run in every order the tour allows and checks that each starts, runs and
 # ends the same, with no connection refused: an Environment on empty-room.xml and two Wander robots,
 # each a JVM of its own, started as the tour starts them (`robosim env WORLD &`, `robosim robot ... &`),
-# the Environment first or the robots first, 0 to 3 s apart. Every case runs at once, beside the
-# others, so the machine is busy while they start. Optional cases: a ControlPanel attached before its
+# the Environment first or the robots first, 0 to 3 s apart. The cases run one after the other, or
+# TOGETHER=N of them at once (a harsher load: each case is three JVMs starting). Optional cases: a ControlPanel attached before its
 # Environment starts (PANEL=1, needs a display), and an ARIA client doing ARIA's handshake on a
 # Pioneer port (PIONEER_CLIENT).
 #
@@ -16,6 +16,7 @@
 #   CASE_TIMEOUT    seconds any one command may take (default 300)
 #   PANEL           1 to add the ControlPanel case
 #   CASES           the cases to run, by name (default: all); e.g. CASES="env-0s robots-3s"
+#   TOGETHER        how many cases run at once (default 1)
 #   PIONEER_CLIENT  a program, run as PIONEER_CLIENT HOST PORT, that does ARIA's handshake with ARIA's
 #                   patience for robot r2 on its Pioneer port, reads status packets and exits 0; set to
 #                   add the Pioneer case
@@ -112,6 +113,12 @@ run_case() {
     printf 'case %-10s ok: the run began %s s after the first command\n' "$name" "$took" >"$dir/result"
   else
     printf 'case %-10s FAILED: %s (logs in %s)\n' "$name" "$(IFS='; '; echo "${failed[*]}")" "$dir" >"$dir/result"
+    # the end of every log of the case, so that a failure far away (CI) can be read from the output
+    for f in "$dir"/*.out "$dir"/*.err; do
+      [ -s "$f" ] || continue
+      echo "  --- $(basename "$f"), last lines:" >>"$dir/result"
+      tail -n 6 "$f" | cut -c1-400 | sed 's/^/  | /' >>"$dir/result"
+    done
   fi
 }
 
@@ -136,9 +143,13 @@ for c in "${cases[@]}"; do
   read -r name first delay <<<"$c"
   run_case "$name" "$first" "$delay" "${PORTS[$k]}" "${PORTS[$((k + 1))]}" "${PORTS[$((k + 2))]}" &
   jobs_+=($!)
+  if [ ${#jobs_[@]} -ge "${TOGETHER:-1}" ]; then
+    for j in "${jobs_[@]}"; do wait "$j"; done
+    jobs_=()
+  fi
   k=$((k + 3))
 done
-for j in "${jobs_[@]}"; do wait "$j"; done
+for j in "${jobs_[@]+"${jobs_[@]}"}"; do wait "$j"; done
 status=0
 reference=""
 for c in "${cases[@]}"; do

@@ -8,6 +8,7 @@ import java.util.OptionalDouble;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
@@ -85,7 +86,7 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connect(HardwareOptions options) throws IOException {
-        connectFinding(options, () -> EnvironmentLinks.to(host, port, options));
+        connectFinding(options, o -> EnvironmentLinks.to(host, port, o));
     }
 
     /**
@@ -95,19 +96,24 @@ public abstract class AbstractRobot {
      * left. Any other refusal, or the same secret refused again, ends the attempt at once. The
      * connect timeout bounds the whole.
      */
-    private void connectFinding(HardwareOptions options, Supplier<EnvironmentLink> links) throws IOException {
+    private void connectFinding(HardwareOptions options, Function<HardwareOptions, EnvironmentLink> links)
+            throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         // found now too, so that a secret that breaks its rule is said before any connection
         String first = RunSecret.find(null, host, port);
         while (true) {
             SecretLookup lookup = new SecretLookup(host, port, first);
             try {
-                connect(options, links.get(), first, lookup);
+                // a later attempt has what is left of the connect timeout, which bounds the whole
+                long leftMs = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
+                HardwareOptions attempt = leftMs >= options.connectTimeoutMs() ? options
+                        : new HardwareOptions(Math.max(1, leftMs), options.lostAfterMs(), options.yieldWarningMs());
+                connect(attempt, links.apply(attempt), first, lookup);
                 return;
             } catch (RefusedException e) {
                 String now = RunSecret.findAgain(host, port);
                 // a shared link's refusal is of the secret the robot that opened the link presented
-                String presented = e.presented() != null ? e.presented() : lookup.given();
+                String presented = e.byLink() ? e.linkSecret() : lookup.given();
                 if (!RunSecret.mayClear(e.reason(), presented, now) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
@@ -140,10 +146,10 @@ public abstract class AbstractRobot {
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
         EnvironmentLink[] first = {link};
-        connectFinding(options, () -> {
+        connectFinding(options, o -> {
             EnvironmentLink l = first[0];
             first[0] = null;
-            return l != null ? l : EnvironmentLinks.to(host, port, options);
+            return l != null ? l : EnvironmentLinks.to(host, port, o);
         });
     }
 

@@ -6,32 +6,48 @@ import java.io.IOException;
 final class RefusedException extends IOException {
     private static final long serialVersionUID = 1L;
     private final String reason;
-    /** The secret the refused hello presented, when it was not the robot's own (a shared link's). */
-    private final String presented;
+    /** Whether the hello refused was a shared link's (said by the robot that opened the link). */
+    private final boolean byLink;
+    /** The secret the link's hello presented, when {@link #byLink}. */
+    private final String linkSecret;
 
     /**
      * @param message what the robot's program is told (its connection error)
      * @param reason  the Environment's reason, without the prefix that marks a refusal
      */
     RefusedException(String message, String reason) {
-        this(message, reason, null);
+        super(message);
+        this.reason = reason;
+        this.byLink = false;
+        this.linkSecret = null;
     }
 
     /**
-     * @param message   what the robot's program is told
-     * @param reason    the Environment's reason, without the prefix that marks a refusal
-     * @param presented the secret the refused hello presented, when it was another's (a shared link's
-     *                  hello, said by the robot that opened the link); null for the robot's own
+     * A refusal of the shared link the robot joined: of the link's hello, not the robot's own.
+     *
+     * @param message    what the robot's program is told
+     * @param reason     the Environment's reason, without the prefix that marks a refusal
+     * @param linkSecret the secret the link's hello presented, or null if it presented none
      */
-    RefusedException(String message, String reason, String presented) {
-        super(message);
-        this.reason = reason;
-        this.presented = presented;
+    static RefusedException ofLink(String message, String reason, String linkSecret) {
+        return new RefusedException(message, reason, linkSecret);
     }
 
-    /** @return the secret the refused hello presented when it was not the robot's own, else null */
-    String presented() {
-        return presented;
+    private RefusedException(String message, String reason, String linkSecret) {
+        super(message);
+        this.reason = reason;
+        this.byLink = true;
+        this.linkSecret = linkSecret;
+    }
+
+    /** @return whether the hello refused was the shared link's, not the robot's own */
+    boolean byLink() {
+        return byLink;
+    }
+
+    /** @return the secret the link's hello presented, when {@link #byLink()}; else null */
+    String linkSecret() {
+        return linkSecret;
     }
 
     /** @return the Environment's reason */

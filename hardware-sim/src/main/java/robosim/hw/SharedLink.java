@@ -74,6 +74,8 @@ final class SharedLink {
     private volatile String endReason;
     /** The secret the link's hello presented. */
     private String presented;
+    /** The Environment's reason, when it refused the link. */
+    private volatile String refusal;
 
     private record Joining(LinkMember member, CompletableFuture<Welcome> welcome) {
     }
@@ -153,7 +155,8 @@ final class SharedLink {
         }
         try {
             if (endReason != null) {
-                throw new IOException(endReason);
+                // the link ended just before this robot's hello: a refusal of the link is the robot's too
+                throw refusal != null ? RefusedException.ofLink(endReason, refusal, presented) : new IOException(endReason);
             }
             writer.write(hello);
             return j.welcome().get(options.connectTimeoutMs(), TimeUnit.MILLISECONDS);
@@ -318,6 +321,9 @@ final class SharedLink {
             if (endReason != null) {
                 return;
             }
+            if (kind == RunEnd.Kind.REFUSED) {
+                refusal = reason;
+            }
             endReason = "the Environment at " + host + ":" + port + ": " + reason;
         }
         OPEN.remove(host + ":" + port, this);
@@ -328,7 +334,7 @@ final class SharedLink {
         }
         for (Joining j : joining.values()) {
             // a link refused (its secret) refuses the robots that were joining on it
-            j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? new RefusedException(endReason, reason, presented)
+            j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? RefusedException.ofLink(endReason, reason, presented)
                     : new IOException(endReason));
         }
         for (LinkMember m : members.values()) {

@@ -18,6 +18,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import robosim.cli.Main;
@@ -42,6 +43,7 @@ import robosim.protocol.Welcome;
  * cap on connections that have not said hello; no listening beyond loopback without a secret.
  */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)
+@ExtendWith(NoSecretProperty.class)
 class AccessAndCapsTest {
     private static final String SECRET = RunSecret.create();
 

@@ -82,7 +82,6 @@ class PioneerHandshakeAtOnceTest {
                     }
                 }
             }
-            assertTrue(busy.threads() >= 2);
         }
     }
 

@@ -21,7 +21,7 @@ import robosim.cli.Main;
  * The README tour's start, run as a user runs it, while the machine is kept busy on purpose:
  * {@code src/test/scripts/start-orders.sh} starts an Environment and its two robots, each a JVM of
  * its own with the tour's command lines, in every order the tour allows (the Environment first or
- * the robots first, 0 to 3 s apart), all cases at once, and with a display a ControlPanel attached
+ * the robots first, 0 to 3 s apart), two cases at a time, and with a display a ControlPanel attached
  * before its Environment, and an ARIA client ({@link AriaHandshakeClient}, ARIA's patience for each
  * answer) on a Pioneer port while the run waits for its other robot. Meanwhile twice as many processes as the machine has cores spin. Every
  * case must start, run its steps and end with no connection refused, and every order must give
@@ -49,11 +49,14 @@ class StartOrdersUnderLoadTest {
         for (int port : freePorts(3 * cases)) {
             cmd.add(Integer.toString(port));
         }
-        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
+        Path output = dir.resolve("start-orders.out");
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(output.toFile());
         pb.environment().put("ROBOSIM", launcher.toString());
         pb.environment().put("PIONEER_CLIENT", java("aria-client", AriaHandshakeClient.class.getName()).toString());
         pb.environment().put("ROBOSIM_TOKEN_DIR", dir.resolve("tokens").toString());
         pb.environment().put("CASE_TIMEOUT", "240");
+        // two cases at once: six JVMs starting beside the spinners
+        pb.environment().put("TOGETHER", "2");
         pb.environment().remove("ROBOSIM_TOKEN");
         if (display) {
             pb.environment().put("PANEL", "1");
@@ -62,7 +65,7 @@ class StartOrdersUnderLoadTest {
         Process script = pb.start();
         try {
             boolean ended = script.waitFor(6, TimeUnit.MINUTES);
-            String out = new String(script.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            String out = Files.readString(output, StandardCharsets.UTF_8);
             System.err.println("start orders under load:\n" + out);
             assertTrue(ended, "the cases ended within 6 minutes:\n" + out);
             assertEquals(0, script.exitValue(), out);
@@ -95,11 +98,16 @@ class StartOrdersUnderLoadTest {
         return script;
     }
 
-    /** @return processes that spin on a core each until destroyed */
+    /**
+     * @return processes that spin on a core each until destroyed; should this JVM die first, each
+     *         stops by itself once it sees the JVM gone, and after 7 minutes at the latest
+     */
     private static List<Process> busy(int count) throws IOException {
         List<Process> spinners = new ArrayList<>();
+        long jvm = ProcessHandle.current().pid();
         for (int i = 0; i < count; i++) {
-            spinners.add(new ProcessBuilder("sh", "-c", "while :; do :; done").start());
+            spinners.add(new ProcessBuilder("timeout", "420", "sh", "-c", "while kill -0 " + jvm + " 2>/dev/null; do :;"
+                    + " done").redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start());
         }
         return spinners;
     }

@@ -19,6 +19,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.aria.ArRobot;
 import robosim.cli.Background;
@@ -41,6 +42,7 @@ import robosim.protocol.RunSecret;
  * the Environment's own log handler.
  */
 @Timeout(value = 2, unit = TimeUnit.MINUTES)
+@ExtendWith(NoSecretProperty.class)
 class StartRaceTest {
     @TempDir
     Path dir;

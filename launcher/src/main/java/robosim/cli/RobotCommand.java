@@ -70,11 +70,11 @@ final class RobotCommand implements Callable<Integer> {
                     + " (a Pioneer server: MS ms without a status packet)")
     Long lostAfterMs;
 
-    @Option(names = "--connect-timeout", paramLabel = "MS",
-            description = "wait up to MS ms for the Environment to listen and welcome the robot (it may be started"
-                    + " after its robots); default: the system property " + HardwareOptions.CONNECT_TIMEOUT_PROPERTY
-                    + " if set, else " + HardwareOptions.DEFAULT_CONNECT_TIMEOUT_MS)
-    Long connectTimeoutMs;
+    @Option(names = "--environment-timeout", paramLabel = "S",
+            description = "seconds to wait for the Environment to listen and welcome the robots (it may be started"
+                    + " after them); default: the system property " + HardwareOptions.CONNECT_TIMEOUT_PROPERTY
+                    + " (ms) if set, else " + HardwareOptions.DEFAULT_CONNECT_TIMEOUT_MS / 1000)
+    Long environmentTimeoutS;
 
     @Mixin
     SecretOption secret;
@@ -121,11 +121,11 @@ final class RobotCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), lostAfterMs + " was supplied for --lost-after: it is 1 to "
                     + Integer.MAX_VALUE + " ms");
         }
-        if (connectTimeoutMs != null && (connectTimeoutMs < 1 || connectTimeoutMs > Integer.MAX_VALUE)) {
-            throw new ParameterException(spec.commandLine(), connectTimeoutMs + " was supplied for --connect-timeout: it"
-                    + " is 1 to " + Integer.MAX_VALUE + " ms");
+        if (environmentTimeoutS != null && (environmentTimeoutS < 1 || environmentTimeoutS > Integer.MAX_VALUE / 1000)) {
+            throw new ParameterException(spec.commandLine(), environmentTimeoutS + " was supplied for"
+                    + " --environment-timeout: it is 1 to " + Integer.MAX_VALUE / 1000 + " s");
         }
-        if (lostAfterMs == null || connectTimeoutMs == null) {
+        if (lostAfterMs == null || environmentTimeoutS == null) {
             try {
                 HardwareOptions.defaults();
             } catch (IllegalArgumentException e) {
@@ -174,14 +174,14 @@ final class RobotCommand implements Callable<Integer> {
         String lostBefore = set(HardwareOptions.LOST_AFTER_PROPERTY, lostAfterMs == null ? null : Long.toString(lostAfterMs));
         String pioneerBefore = set(EnvironmentLinks.PIONEER_PROPERTY, pioneer);
         String connectBefore = set(HardwareOptions.CONNECT_TIMEOUT_PROPERTY,
-                connectTimeoutMs == null ? null : Long.toString(connectTimeoutMs));
+                environmentTimeoutS == null ? null : Long.toString(environmentTimeoutS * 1000));
         try {
             return new RobotProgram(main, args.toArray(new String[0]), loader, name, quiet.quiet)
                     .run(spec.commandLine().getOut(), spec.commandLine().getErr());
         } finally {
             restore(HardwareOptions.LOST_AFTER_PROPERTY, lostAfterMs, lostBefore);
             restore(EnvironmentLinks.PIONEER_PROPERTY, pioneer, pioneerBefore);
-            restore(HardwareOptions.CONNECT_TIMEOUT_PROPERTY, connectTimeoutMs, connectBefore);
+            restore(HardwareOptions.CONNECT_TIMEOUT_PROPERTY, environmentTimeoutS, connectBefore);
         }
     }
 

@@ -159,8 +159,12 @@ final class RobotProgram {
         Map<String, RunEnd> last = new LinkedHashMap<>();
         for (RunEnd e : ends) {
             last.put(e.robot(), e);
-            // a robot that could not connect: its program's connect call said why, and the log too
-            if (e.kind() == RunEnd.Kind.NOT_CONNECTED) {
+        }
+        for (RunEnd e : ends) {
+            // a robot that could not connect: its program's connect call said why, and the log too;
+            // a refusal followed by another end was tried again (a secret found before the
+            // Environment wrote its own), and what came of that is said instead
+            if (e.kind() == RunEnd.Kind.NOT_CONNECTED || e.kind() == RunEnd.Kind.REFUSED && last.get(e.robot()) != e) {
                 continue;
             }
             if (e.kind().isFailure()) {

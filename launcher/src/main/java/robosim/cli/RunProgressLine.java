@@ -229,8 +229,12 @@ final class RunProgressLine implements RunProgress, AutoCloseable {
         b.append(of);
         if (!s.refused().isEmpty()) {
             b.append("; refused: ").append(refusals(s.refused()));
+            // a shared link's robots are unnamed until it is admitted: a refused link may hold any of them
+            boolean linkRefused = s.refused().keySet().stream().anyMatch(who -> who.startsWith("a shared link"));
             if (!missing.isEmpty() && s.refused().keySet().containsAll(missing)) {
                 b.append(". Every robot waited for was refused: ").append(advice(s.refused()));
+            } else if (linkRefused) {
+                b.append(". The robots of a refused shared link are not named here: ").append(advice(s.refused()));
             }
         }
         return b.toString();

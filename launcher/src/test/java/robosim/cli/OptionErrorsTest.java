@@ -143,7 +143,7 @@ class OptionErrorsTest {
         Logger hw = Logger.getLogger("robosim.hw");
         hw.addHandler(capture);
         try {
-            Run r = execute("robot", "--lost-after", "1000", "--connect-timeout", "1000", DemoCommand.WANDER, "r1",
+            Run r = execute("robot", "--lost-after", "1000", "--environment-timeout", "1", DemoCommand.WANDER, "r1",
                     "127.0.0.1", Integer.toString(closed));
             assertEquals(1, r.exit(), r.err());
             long told = logged.stream().filter(m -> m.contains("could not connect")).count()

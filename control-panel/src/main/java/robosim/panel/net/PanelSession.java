@@ -108,7 +108,7 @@ public final class PanelSession implements AutoCloseable {
                     requestClient = null;
                 }
                 if (requestClient == null) {
-                    requestClient = ControlClient.open(host, port, "control-panel", secrets.get(), ANSWER_TIMEOUT_MS);
+                    requestClient = ControlClient.open(host, port, "control-panel", secrets, ANSWER_TIMEOUT_MS);
                 }
                 ControlReply reply = requestClient.ask(r.op(), r.args().toArray(String[]::new));
                 requestUsedNanos = System.nanoTime();
@@ -130,7 +130,7 @@ public final class PanelSession implements AutoCloseable {
      */
     public CompletableFuture<CommsUpdate> comms(CommsUpdate change) {
         return CompletableFuture.supplyAsync(() -> {
-            try (ControlClient c = ControlClient.open(host, port, "control-panel-comms", secrets.get(), STATUS_TIMEOUT_MS)) {
+            try (ControlClient c = ControlClient.open(host, port, "control-panel-comms", secrets, STATUS_TIMEOUT_MS)) {
                 c.send(change);
                 return c.answer(CommsUpdate.class, u -> true);
             } catch (IOException | IllegalArgumentException e) {
@@ -164,8 +164,11 @@ public final class PanelSession implements AutoCloseable {
         try {
             if (statusClient == null) {
                 statusSecret = null;
-                statusSecret = secrets.get();
-                statusClient = ControlClient.open(host, port, "control-panel-status", statusSecret, STATUS_TIMEOUT_MS);
+                // looked up once connected: an Environment writes its secret before it listens
+                statusClient = ControlClient.open(host, port, "control-panel-status", () -> {
+                    statusSecret = secrets.get();
+                    return statusSecret;
+                }, STATUS_TIMEOUT_MS);
                 follow(statusClient, log);
             }
             RunStatus st = statusClient.status();

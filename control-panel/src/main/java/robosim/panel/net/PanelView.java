@@ -5,6 +5,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import robosim.panel.model.Reachability;
+import robosim.protocol.RunSecret;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.viewer.net.ViewerClient;
 import robosim.viewer.net.ViewerException;
@@ -74,7 +75,11 @@ public final class PanelView {
                 || m.contains("closed the connection before")) {
             return Reachability.Failure.UNREACHABLE;
         }
-        if (m.contains("refused:") && m.contains("run secret")) {
+        // the viewer client has already tried again a secret that changed since: a refusal here stands
+        if (m.contains("refused:") && m.contains(RunSecret.REFUSED_WRONG)) {
+            return Reachability.Failure.SECRET_REFUSED;
+        }
+        if (m.contains("refused:") && m.contains(RunSecret.REFUSED_NONE)) {
             return Reachability.Failure.NO_SECRET;
         }
         return Reachability.Failure.OTHER;

@@ -231,7 +231,7 @@ public final class EnvironmentServer implements AutoCloseable {
         while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
             long now = System.nanoTime();
             progress.reportIfDue(RunProgress.Phase.CONNECTING, now);
-            if (now >= deadline) {
+            if (now - deadline >= 0) {
                 String who = rules.missing().isEmpty() ? "no robot (open world " + sim().world().name() + ")"
                         : "robots " + rules.missing();
                 String why = who + " and " + Math.max(0,
@@ -331,11 +331,11 @@ public final class EnvironmentServer implements AutoCloseable {
         sender.send(sim(), rules.connectedRobots(), current);
         long opened = System.nanoTime();
         progress.waitingSince(opened);
-        // the deadline counts from the later of the step's opening and the last welcome
-        long from = rules.lastWelcomedNanos() - opened > 0 ? rules.lastWelcomedNanos() : opened;
-        long deadline = from + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
+        // welcomes are said on this thread before a step opens (a robot welcomed during a step takes
+        // part from the next), so the deadline counts from after the last welcome
+        long deadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs());
         // robots in their first steps (loading classes, warming up) may take longer: see ServerOptions
-        long firstDeadline = from + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs(1));
+        long firstDeadline = opened + TimeUnit.MILLISECONDS.toNanos(options.stepTimeoutMs(1));
         while (!rules.waitingFor().isEmpty()) {
             long now = System.nanoTime();
             progress.reportIfDue(RunProgress.Phase.STEP_HELD, now);
@@ -354,6 +354,7 @@ public final class EnvironmentServer implements AutoCloseable {
                     break;
                 }
                 deadline = firstDeadline;
+                progress.stepLimit(options.stepTimeoutMs(1));
             }
             pump(deadline);
         }

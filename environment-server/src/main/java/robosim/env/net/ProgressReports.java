@@ -24,6 +24,8 @@ final class ProgressReports {
     /** Whether a wait for robots counts against the connect timeout. */
     private boolean connectTimed = true;
     private long runStartedNanos;
+    /** How long the step held now may wait, ms: the step timeout, or the first steps' when a robot has it. */
+    private long stepLimitMs;
 
     ProgressReports(SessionRules rules, ServerOptions options) {
         this.rules = rules;
@@ -53,6 +55,12 @@ final class ProgressReports {
     void waitingSince(long now) {
         waitStartedNanos = now;
         connectTimed = true;
+        stepLimitMs = options.stepTimeoutMs();
+    }
+
+    /** @param ms how long the step held now may wait in all: longer while a robot in its first steps is waited for */
+    void stepLimit(long ms) {
+        stepLimitMs = ms;
     }
 
     /**
@@ -91,7 +99,7 @@ final class ProgressReports {
         };
         long limitMs = switch (phase) {
             case CONNECTING -> connectTimed ? options.connectTimeoutMs() : 0;
-            case STEP_HELD -> options.stepTimeoutMs();
+            case STEP_HELD -> stepLimitMs;
             case RUNNING -> 0;
         };
         long runNanos = phase == RunProgress.Phase.CONNECTING ? 0 : now - runStartedNanos;

@@ -31,7 +31,18 @@ final class Refusals {
         byWho.put(who, shortReason(who, reason));
     }
 
-    /** @param who a robot that connected: it is no longer refused */
+    /**
+     * @param client how a shared link's client calls itself (its process, {@code pid 1234})
+     * @return how a shared link of that client is listed: its robots are not named until it is admitted
+     */
+    static String linkOf(String client) {
+        return LINK + " (" + client + ")";
+    }
+
+    /** How the refusals of shared links begin. */
+    static final String LINK = "a shared link";
+
+    /** @param who a robot that connected, or a link admitted: it is no longer refused */
     void admitted(String who) {
         byWho.remove(who);
     }
@@ -52,7 +63,7 @@ final class Refusals {
      */
     static String shortReason(String who, String reason) {
         String r = reason;
-        for (String prefix : new String[] {"robot " + who + " ", "robot " + who + "'s ", who + " "}) {
+        for (String prefix : new String[] {"robot " + who + " ", "robot " + who + "'s ", who + " ", LINK + " "}) {
             if (r.startsWith(prefix)) {
                 r = r.substring(prefix.length());
                 break;

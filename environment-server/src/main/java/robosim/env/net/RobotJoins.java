@@ -27,7 +27,6 @@ final class RobotJoins {
     private final Refusals refusals;
     /** The first step each robot took part in since it was last welcomed. */
     private final Map<String, Long> firstSteps = new HashMap<>();
-    private long lastWelcomedNanos = System.nanoTime();
     private boolean worldChanged;
 
     RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures, Refusals refusals) {
@@ -49,11 +48,6 @@ final class RobotJoins {
      */
     long robotStep(String robot, long step) {
         return step - firstSteps.getOrDefault(robot, 1L) + 1;
-    }
-
-    /** @return when the last robot was welcomed, {@link System#nanoTime()} */
-    long lastWelcomedNanos() {
-        return lastWelcomedNanos;
     }
 
     /** @return whether a robot was added to the world since the last call */
@@ -100,7 +94,6 @@ final class RobotJoins {
         sim().setConnected(hello.name(), true);
         c.send(new Welcome(hello.name(), sim().world().stepMs(), sim().state(hello.name()), sim().world().properties(),
                 sim().seed()));
-        lastWelcomedNanos = System.nanoTime();
         long first = openStep > 0 ? openStep + 1 : sim().stepCount() + 1;
         firstSteps.put(hello.name(), first);
         String on = c.isLink() ? " on a shared link (" + c.peer() + ")" : "";

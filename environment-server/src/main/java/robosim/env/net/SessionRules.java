@@ -148,11 +148,6 @@ final class SessionRules {
         return joins.robotStep(robot, step);
     }
 
-    /** @see RobotJoins#lastWelcomedNanos */
-    long lastWelcomedNanos() {
-        return joins.lastWelcomedNanos();
-    }
-
     Set<String> waitingFor() {
         return waiting;
     }
@@ -249,11 +244,12 @@ final class SessionRules {
             } else if (m instanceof LinkHello hello) {
                 String refusal = access.refusal("a shared link", hello.token());
                 if (refusal != null) {
-                    refusals.refused("a shared link (" + c.peer() + ")", refusal);
+                    refusals.refused(Refusals.linkOf(printable(hello.client())), refusal);
                     c.refuse(refusal);
                     return;
                 }
                 c.becomeLink(hello.client());
+                refusals.admitted(Refusals.linkOf(printable(hello.client())));
                 LOG.fine(() -> "a shared link opened: " + c.peer());
             } else {
                 c.close("expected robotHello or linkHello as its first message, got " + typeOf(m));

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.IntConsumer;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.hw.AbstractRobot;
 import robosim.hw.RobotSensorResponse;
@@ -29,6 +30,9 @@ import robosim.protocol.RobotState;
  * where it is ({@link Standby}), and its commands wait for the robot's first step.
  */
 final class BridgeRobot extends AbstractRobot {
+    /** What a client attached before the welcome is sent: standing at the odometry's origin, nothing sensed. */
+    private static final RobotState BEFORE_WELCOME = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+
     private static final Logger LOG = Logger.getLogger(BridgeRobot.class.getName());
     /** How long the run may go without a step before the client gets the status of its robot standing, ms. */
     static final long STANDBY_AFTER_MS = 1000;
@@ -137,16 +141,22 @@ final class BridgeRobot extends AbstractRobot {
             }
         }
         joined.complete(null);
-        while (isConnected()) {
-            Attached a = attached;
-            pace(a);
-            watchdog(a);
-            sleepSimulated(getStepMs());
-            RobotState s = state();
-            latest = s;
-            if (a != null && a == attached && a.session().isOpen()) {
-                report(a, s);
+        try {
+            while (isConnected()) {
+                Attached a = attached;
+                pace(a);
+                watchdog(a);
+                sleepSimulated(getStepMs());
+                RobotState s = state();
+                latest = s;
+                if (a != null && a == attached && a.session().isOpen()) {
+                    report(a, s);
+                }
             }
+        } catch (RuntimeException e) {
+            // the bridge must not die silently: the robot leaves the run and its client is told below
+            LOG.log(Level.WARNING, "robot " + served.name() + ": the bridge failed; the robot leaves the run", e);
+            disconnect();
         }
         Attached a;
         synchronized (lock) {
@@ -267,7 +277,9 @@ final class BridgeRobot extends AbstractRobot {
         }
         RobotState s = latest;
         if (s == null) {
-            s = state(); // before the welcome: the odometry's origin, nothing sensed yet
+            // before the welcome is handled: the odometry's origin, nothing sensed yet (not state(),
+            // which may already hold the welcome's pose while the frame is still at the origin)
+            s = BEFORE_WELCOME;
         }
         a.session().send(a.sips().standing(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()),
                 a.handler().sonarOn()).toPacket());

@@ -111,6 +111,9 @@ public final class ViewerClient {
                 // a refusal of a secret found before the Environment wrote its own clears (RunSecret.mayClear)
                 String now = e.refusal() == null ? null : RunSecret.findAgain(options.host(), options.port());
                 if (stopped || !RunSecret.mayClear(e.refusal(), presented[0], now) || System.nanoTime() - deadline > 0) {
+                    if (e.refusal() != null) {
+                        new Session().abandon(); // kept open for a retry that does not come: closed now
+                    }
                     throw e;
                 }
                 LOG.info(() -> "viewer '" + options.name() + "': the environment at " + options.peer() + " refused the"
