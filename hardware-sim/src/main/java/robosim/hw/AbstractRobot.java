@@ -101,12 +101,12 @@ public abstract class AbstractRobot {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         // found now too, so that a secret that breaks its rule is said before any connection
         String first = RunSecret.find(null, host, port);
-        while (true) {
+        for (int tries = 1; ; tries++) {
             SecretLookup lookup = new SecretLookup(host, port, first);
             try {
                 // a later attempt has what is left of the connect timeout, which bounds the whole
                 long leftMs = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
-                HardwareOptions attempt = leftMs >= options.connectTimeoutMs() ? options
+                HardwareOptions attempt = tries == 1 ? options
                         : new HardwareOptions(Math.max(1, leftMs), options.lostAfterMs(), options.yieldWarningMs());
                 connect(attempt, links.apply(attempt), first, lookup);
                 return;
