@@ -3,7 +3,7 @@ package robosim.cli;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
+import java.net.Socket;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -155,9 +155,15 @@ final class AccessOptions {
         return files;
     }
 
-    /** @return whether nothing listens on the port now (it can be bound) */
+    /**
+     * @return whether nothing listens on the port now. The probe binds a plain socket, which does not
+     *         listen: a client that tries the port meanwhile is refused and tries again, where a
+     *         listening probe would take its connection and reset it on closing
+     */
     private static boolean free(String bind, int port) {
-        try (ServerSocket probe = new ServerSocket()) {
+        try (Socket probe = new Socket()) {
+            // past connections of an earlier run on the port (TIME_WAIT) do not count; a listener does
+            probe.setReuseAddress(true);
             probe.bind(new InetSocketAddress(InetAddress.getByName(bind), port));
             return true;
         } catch (IOException e) {
