@@ -39,6 +39,7 @@ class WorldPropertiesEndToEndTest {
                 String seen = robot.getWorldProperty("cellSize", 0) + " " + robot.getWorldProperty("goal") + " "
                         + robot.getWorldProperty("absent") + " " + robot.getWorldProperties().keySet() + " "
                         + robot.getRunSeed();
+                robot.sleepSimulated(100); // the run has begun: both robots are in it before either leaves
                 robot.disconnect();
                 return seen;
             });
@@ -48,6 +49,7 @@ class WorldPropertiesEndToEndTest {
                     throw new IllegalStateException(robot.getConnectionError());
                 }
                 String seen = robot.getWorldNumber("cellSize").getAsDouble() + " " + robot.getRunSeed();
+                robot.sleepSimulated(100);
                 robot.disconnect_robot();
                 return seen;
             });

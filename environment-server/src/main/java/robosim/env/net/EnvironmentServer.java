@@ -329,6 +329,8 @@ public final class EnvironmentServer implements AutoCloseable {
     private Map<String, List<Command>> collect(long current) throws InterruptedException {
         rules.openStep(current);
         sender.send(sim(), rules.connectedRobots(), current);
+        // a robot whose connection failed as its state was sent is lost now, not waited for
+        rules.reapClosed();
         long opened = System.nanoTime();
         progress.waitingSince(opened);
         // welcomes are said on this thread before a step opens (a robot welcomed during a step takes

@@ -416,6 +416,22 @@ final class SessionRules {
         }
     }
 
+    /**
+     * Takes out, as lost, the robots whose connection closed by itself since they were last served
+     * (a write to it failed, or it fell too far behind), so that no step waits for a robot that can
+     * no longer answer. Called once a step, after its states are sent.
+     */
+    void reapClosed() {
+        for (Map.Entry<String, Connection> e : List.copyOf(robots.entrySet())) {
+            if (e.getValue().isClosed()) {
+                String robot = e.getKey();
+                departed(robot, Departure.Kind.LOST, "its connection closed (the log says why)");
+                takeOut(robot);
+                LOG.info(() -> "robot " + robot + " lost at step " + sim().stepCount() + ": its connection closed");
+            }
+        }
+    }
+
     /** Takes a robot out of the run's connected robots, its body halted. @return its connection, or null */
     private Connection takeOut(String name) {
         Connection c = robots.remove(name);
