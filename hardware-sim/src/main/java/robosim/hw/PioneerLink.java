@@ -67,7 +67,7 @@ public final class PioneerLink extends ReleasedOnClose {
             ConversionFactors factors = RobotParameterFiles.conversionFactorsOfSubclass(c.identity().subclass());
             LOG.info(() -> "robot " + hello.name() + " drives the " + c.identity().robotClass() + " "
                     + c.identity().subclass() + " '" + c.identity().name() + "' at " + environment()
-                    + ", status every " + config.sipCycle() + " ms, conversion factors " + factors);
+                    + ", status every " + config.sipCycle() + " ms, conversion factors: " + factors.describe());
             states = new SipToState(factors, hello.parameters().sonarUnits().size(), hello.parameters().sonarMaxRange());
             commands = new CommandToPackets(factors, environment());
             c.startPulses();

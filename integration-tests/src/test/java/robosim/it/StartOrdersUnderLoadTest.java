@@ -74,6 +74,7 @@ class StartOrdersUnderLoadTest {
             script.descendants().forEach(ProcessHandle::destroyForcibly);
             script.destroyForcibly();
             for (Process p : load) {
+                p.descendants().forEach(ProcessHandle::destroyForcibly);
                 p.destroyForcibly();
             }
             for (Process p : load) {
@@ -99,15 +100,17 @@ class StartOrdersUnderLoadTest {
     }
 
     /**
-     * @return processes that spin on a core each until destroyed; should this JVM die first, each
-     *         stops by itself once it sees the JVM gone, and after 7 minutes at the latest
+     * @return processes that spin on a core each until destroyed (each is the shell itself, so that
+     *         destroying it stops the spinning); should this JVM die first, each stops by itself
+     *         once it sees the JVM gone
      */
     private static List<Process> busy(int count) throws IOException {
         List<Process> spinners = new ArrayList<>();
         long jvm = ProcessHandle.current().pid();
         for (int i = 0; i < count; i++) {
-            spinners.add(new ProcessBuilder("timeout", "420", "sh", "-c", "while kill -0 " + jvm + " 2>/dev/null; do :;"
-                    + " done").redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start());
+            spinners.add(new ProcessBuilder("sh", "-c", "while kill -0 " + jvm + " 2>/dev/null; do i=0;"
+                    + " while [ $i -lt 20000 ]; do i=$((i + 1)); done; done")
+                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start());
         }
         return spinners;
     }

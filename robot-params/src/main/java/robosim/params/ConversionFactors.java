@@ -78,4 +78,14 @@ public record ConversionFactors(double angleConvFactor, double distConvFactor, d
                 found.getOrDefault(KEYS.get(3), d.rangeConvFactor), found.getOrDefault(KEYS.get(4), d.diffConvFactor),
                 found.getOrDefault(KEYS.get(5), d.vel2Divisor));
     }
+
+    /**
+     * @return the factors as ARIA's parameter files name them, for a log line: {@code AngleConvFactor
+     *         0.001534, DistConvFactor 0.485, ...}
+     */
+    public String describe() {
+        return String.format(java.util.Locale.ROOT, "AngleConvFactor %s, DistConvFactor %s, VelConvFactor %s,"
+                + " RangeConvFactor %s, DiffConvFactor %s, Vel2Divisor %s", angleConvFactor, distConvFactor,
+                velConvFactor, rangeConvFactor, diffConvFactor, vel2Divisor);
+    }
 }
