@@ -16,6 +16,7 @@ import robosim.protocol.Figure;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RunSecret;
+import robosim.protocol.SecretLookup;
 import robosim.protocol.RobotState;
 import robosim.protocol.Welcome;
 import robosim.protocol.RobotParameters;
@@ -100,26 +101,23 @@ public abstract class AbstractRobot {
             throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         // found now too, so that a secret that breaks its rule is said before any connection
-        String first = RunSecret.find(null, host, port);
+        SecretLookup lookup = new SecretLookup(host, port, RunSecret.find(null, host, port));
         for (int tries = 1; ; tries++) {
-            SecretLookup lookup = new SecretLookup(host, port, first);
             try {
                 // a later attempt has what is left of the connect timeout, which bounds the whole
                 long leftMs = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
                 HardwareOptions attempt = tries == 1 ? options
                         : new HardwareOptions(Math.max(1, leftMs), options.lostAfterMs(), options.yieldWarningMs());
-                connect(attempt, links.apply(attempt), first, lookup);
+                connect(attempt, links.apply(attempt), lookup.given(), lookup);
                 return;
             } catch (RefusedException e) {
-                String now = RunSecret.findAgain(host, port);
                 // a shared link's refusal is of the secret the robot that opened the link presented
                 String presented = e.byLink() ? e.linkSecret() : lookup.given();
-                if (!RunSecret.mayClear(e.reason(), presented, now) || System.nanoTime() - deadline > 0) {
+                if (!lookup.clears(e.reason(), presented) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
                 LOG.info(() -> "robot " + name + ": the Environment at " + host + ":" + port + " refused the run secret"
                         + " found, and another has appeared since; trying again");
-                first = now;
             }
         }
     }

@@ -8,6 +8,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.ParameterException;
 import robosim.panel.net.ControlClient;
 import robosim.protocol.RunSecret;
+import robosim.protocol.SecretLookup;
 
 /**
  * How {@code robosim comms} and {@code robosim control} reach a running Environment's viewer port:
@@ -61,18 +62,12 @@ final class ControlConnection {
     static <T> T exchange(ViewerPortOptions at, String name, String token, int timeoutMs, Exchange<T> exchange)
             throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        String first = token;
-        String[] presented = {token};
+        // looked up once connected: the Environment wrote its secret before it listened
+        SecretLookup lookup = new SecretLookup(at.host, at.port(), token);
         while (true) {
             ControlClient c;
-            String before = first;
             try {
-                c = ControlClient.open(at.host, at.port(), name, () -> {
-                    // looked up once connected: the Environment wrote its secret before it listened
-                    String now = RunSecret.findAgain(at.host, at.port());
-                    presented[0] = now != null ? now : before;
-                    return presented[0];
-                }, timeoutMs);
+                c = ControlClient.open(at.host, at.port(), name, lookup, timeoutMs);
             } catch (ConnectException e) {
                 if (deadline - System.nanoTime() < TimeUnit.MILLISECONDS.toNanos(RETRY_MS)) {
                     throw new ConnectException(e.getMessage() + " (tried for " + timeoutMs / 1000 + " s, --timeout)");
@@ -83,11 +78,9 @@ final class ControlConnection {
             try (c) {
                 return exchange.with(c);
             } catch (ControlClient.NoAnswerException e) {
-                String now = RunSecret.findAgain(at.host, at.port());
-                if (!RunSecret.mayClear(e.getMessage(), presented[0], now) || System.nanoTime() - deadline > 0) {
+                if (!lookup.clears(e.getMessage()) || System.nanoTime() - deadline > 0) {
                     throw e;
                 }
-                first = now;
             }
         }
     }

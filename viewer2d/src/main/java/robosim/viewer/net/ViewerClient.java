@@ -7,7 +7,6 @@ import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
@@ -18,6 +17,7 @@ import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.RunSecret;
+import robosim.protocol.SecretLookup;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
@@ -90,27 +90,20 @@ public final class ViewerClient {
      */
     public ViewerSummary run() throws ViewerException {
         long deadline = System.nanoTime() + options.connectTimeout().toNanos();
-        String first;
+        SecretLookup lookup;
         try {
             // found now too, so that a secret that breaks its rule is said before any connection
-            first = RunSecret.find(null, options.host(), options.port());
+            String first = RunSecret.find(null, options.host(), options.port());
+            lookup = new SecretLookup(options.host(), options.port(), first);
         } catch (IllegalArgumentException e) {
             throw new ViewerException("cannot attach to the environment at " + options.peer() + ": " + e.getMessage(), e);
         }
         while (true) {
-            String[] presented = {first};
-            String before = first;
             try {
-                return attach(() -> {
-                    // looked up once connected: the Environment wrote its secret before it listened
-                    String now = RunSecret.findAgain(options.host(), options.port());
-                    presented[0] = now != null ? now : before;
-                    return presented[0];
-                }, deadline);
+                return attach(lookup, deadline);
             } catch (ViewerException e) {
                 // a refusal of a secret found before the Environment wrote its own clears (RunSecret.mayClear)
-                String now = e.refusal() == null ? null : RunSecret.findAgain(options.host(), options.port());
-                if (stopped || !RunSecret.mayClear(e.refusal(), presented[0], now) || System.nanoTime() - deadline > 0) {
+                if (stopped || e.refusal() == null || !lookup.clears(e.refusal()) || System.nanoTime() - deadline > 0) {
                     if (e.refusal() != null) {
                         new Session().abandon(); // kept open for a retry that does not come: closed now
                     }
@@ -118,13 +111,12 @@ public final class ViewerClient {
                 }
                 LOG.info(() -> "viewer '" + options.name() + "': the environment at " + options.peer() + " refused the"
                         + " run secret found, and another has appeared since; trying again");
-                first = now;
             }
         }
     }
 
     /** One attempt: connects (trying again until the deadline while nothing listens), says hello and follows the run. */
-    private ViewerSummary attach(Supplier<String> token, long deadline) throws ViewerException {
+    private ViewerSummary attach(SecretLookup token, long deadline) throws ViewerException {
         Session session = new Session();
         try {
             socket = connect(deadline);
