@@ -218,6 +218,10 @@ class PioneerPortTest {
             }
             c.send(Commands.comInt(Commands.ENABLE, 1));
             c.send(Commands.comInt(Commands.MOVE, 200));
+            // the flood is read no faster than the input budget: the move comes after it
+            for (int i = 0; i < 100 && c.nextSip(2000).leftVel() == 0; i++) {
+                assertFalse(c.isClosed());
+            }
             assertEquals(200, x(settled(c)), 10, "the commands after the garbage are carried out");
             assertFalse(c.isClosed());
             Sip s = latest(other);

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.IntConsumer;
+import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.hw.AbstractRobot;
@@ -12,6 +13,7 @@ import robosim.pioneer.LaserPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.SimStat;
 import robosim.protocol.Command;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotState;
 
 /**
@@ -34,6 +36,7 @@ final class BridgeRobot extends AbstractRobot {
     private static final RobotState BEFORE_WELCOME = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
 
     private static final Logger LOG = Logger.getLogger(BridgeRobot.class.getName());
+    private static final LogLimiter LIMITED = new LogLimiter(LOG);
     /** How long the run may go without a step before the client gets the status of its robot standing, ms. */
     static final long STANDBY_AFTER_MS = 1000;
 
@@ -176,7 +179,7 @@ final class BridgeRobot extends AbstractRobot {
             failure = why;
             a = attached;
         }
-        LOG.warning(() -> "robot " + served.name() + ": " + why);
+        LIMITED.warning("failures of robot " + served.name() + "'s bridge", () -> "robot " + served.name() + ": " + why);
         if (a != null) {
             a.session().end(why);
         }
@@ -422,14 +425,15 @@ final class BridgeRobot extends AbstractRobot {
                 LOG.warning(() -> "robot " + served.name() + ": the ARIA client sent SIM_EXIT " + code + "; the run ends");
                 simExit.accept(code);
             } else {
-                LOG.warning(() -> "robot " + served.name() + ": the ARIA client sent SIM_EXIT " + code
-                        + "; refused (env --allow-sim-exit lets a client end the run)");
+                LIMITED.warning("refused SIM_EXITs of robot " + served.name(), () -> "robot " + served.name()
+                        + ": the ARIA client sent SIM_EXIT " + code + "; refused (env --allow-sim-exit lets a client"
+                        + " end the run)");
             }
         }
 
         @Override
-        public void log(String line) {
-            LOG.info(line);
+        public void log(String kind, Supplier<String> line) {
+            LIMITED.info(kind, line);
         }
     }
 }

@@ -2,6 +2,7 @@ package robosim.pioneer.server;
 
 import java.util.HashSet;
 import java.util.Set;
+import java.util.function.Supplier;
 import robosim.params.ConversionFactors;
 import robosim.pioneer.Commands;
 import robosim.pioneer.ConfigPacket;
@@ -54,8 +55,14 @@ final class CommandHandler {
         /** @param code the client asks the simulator to end, with this exit code */
         void simExit(int code);
 
-        /** @param line something for the Environment's log */
-        void log(String line);
+        /**
+         * Something for the Environment's log, which the client's input causes: at most a line a
+         * second of each kind.
+         *
+         * @param kind what lines of this kind are about, for the count of those not logged
+         * @param line the line
+         */
+        void log(String kind, Supplier<String> line);
     }
 
     private final String robot;
@@ -136,7 +143,8 @@ final class CommandHandler {
         try {
             dispatch(p, p.reader());
         } catch (PacketFormatException e) {
-            effects.log("robot " + robot + ": dropped a malformed command: " + e.getMessage());
+            effects.log("malformed commands from robot " + robot + "'s ARIA clients",
+                    () -> "robot " + robot + ": dropped a malformed command: " + e.getMessage());
         }
     }
 
@@ -179,11 +187,12 @@ final class CommandHandler {
                 once(id, "robot " + robot + ": BUMPSTALL " + bumpStall + " noted; a RoboSim robot stalls on any"
                         + " contact, whatever the setting");
             }
-            case Commands.SAY -> effects.log("robot " + robot + " plays a sound (SAY, " + p.length() + " bytes)");
+            case Commands.SAY -> effects.log("sounds (SAY) of robot " + robot, () -> "robot " + robot
+                    + " plays a sound (SAY, " + p.length() + " bytes)");
             case Commands.SIM_MESSAGE -> {
-                String text = d.stringArgument("message");
-                effects.log("robot " + robot + ": " + printable(text));
-                effects.request(new Command.Say(printable(text)));
+                String text = printable(d.stringArgument("message"));
+                effects.log("messages (SIM_MESSAGE) of robot " + robot, () -> "robot " + robot + ": " + text);
+                effects.request(new Command.Say(text));
             }
             case Commands.SIM_SET_POSE -> {
                 d.u8("unused");
@@ -233,7 +242,7 @@ final class CommandHandler {
 
     private void once(int key, String line) {
         if (loggedOnce.add(key)) {
-            effects.log(line);
+            effects.log("notes on robot " + robot + "'s commands", () -> line);
         }
     }
 

@@ -8,6 +8,10 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
 import java.util.Optional;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
 import java.util.function.IntConsumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -15,10 +19,11 @@ import robosim.hw.RunEnd;
 import robosim.pioneer.ConfigPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.RobotIdentity;
+import robosim.protocol.LogLimiter;
 
 /**
- * One robot's Pioneer port. It accepts one ARIA client at a time (a second is closed at once with a
- * log line); the first client to finish the handshake brings the robot into the run as a
+ * One robot's Pioneer port. It accepts one ARIA client at a time (a second is refused at once, with a
+ * log line at most once a second, after a moment's wait when the first may be leaving); the first client to finish the handshake brings the robot into the run as a
  * {@link BridgeRobot}, which stays for the clients after it. The handshake and the client's commands
  * are answered at once, whatever the Environment is doing. When a program on the Environment's robot
  * port drives the robot already, the Environment refuses the bridge and the client is closed with
@@ -26,6 +31,22 @@ import robosim.pioneer.RobotIdentity;
  */
 final class PioneerPort implements Closeable {
     private static final Logger LOG = Logger.getLogger(PioneerPort.class.getName());
+    private static final LogLimiter LIMITED = new LogLimiter(LOG);
+    /**
+     * Connections the system holds until they are accepted: a burst of connections beyond it waits a
+     * second for the system to take it again, so it is deep enough for a flood to be refused at the
+     * rate it comes.
+     */
+    static final int BACKLOG = 1024;
+    /** How long a connection that finds the port taken may wait for it, ms. */
+    static final int WAIT_MS = 500;
+    private static final int WAIT_CHECK_MS = 20;
+    /** Checks the waiting connections of every port. */
+    private static final ScheduledExecutorService WAITS = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "pioneer-port-waits");
+        t.setDaemon(true);
+        return t;
+    });
 
     private final ServedRobot served;
     private final ServerSocket server;
@@ -37,6 +58,10 @@ final class PioneerPort implements Closeable {
     private volatile boolean closed;
     private volatile BridgeRobot bridge;
     private volatile PioneerSession current;
+    /** A connection that found the port taken and waits a moment for it; guarded by this. */
+    private Socket waiting;
+    private long waitingUntilNanos;
+    private ScheduledFuture<?> waitingCheck;
 
     PioneerPort(ServedRobot served, InetAddress bind, int port, PioneerPortOptions options, String envHost, int envPort,
                 String secret, IntConsumer simExit) throws IOException {
@@ -49,7 +74,7 @@ final class PioneerPort implements Closeable {
         requireFits(served);
         server = new ServerSocket();
         try {
-            server.bind(new InetSocketAddress(bind, port));
+            server.bind(new InetSocketAddress(bind, port), BACKLOG);
         } catch (IOException e) {
             server.close();
             throw new IOException("robot " + served.name() + "'s Pioneer port " + bind.getHostAddress() + ":" + port
@@ -107,41 +132,100 @@ final class PioneerPort implements Closeable {
                 return;
             }
             try {
-                serve(s);
+                admit(s);
             } catch (IOException | RuntimeException e) {
-                LOG.warning(() -> "robot " + served.name() + ": could not serve the ARIA client at "
-                        + s.getRemoteSocketAddress() + ": " + e.getMessage());
+                LIMITED.warning("failures to serve robot " + served.name() + "'s ARIA clients", () -> "robot "
+                        + served.name() + ": could not serve the ARIA client at " + s.getRemoteSocketAddress() + ": "
+                        + e.getMessage());
                 close(s);
             }
         }
     }
 
-    private void serve(Socket s) throws IOException {
-        s.setTcpNoDelay(true);
-        // a client that has just said CLOSE may not have been seen off yet: give it a moment
-        for (int i = 0; i < 10 && current != null && !current.isEnded(); i++) {
-            try {
-                Thread.sleep(50);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                break;
+    /**
+     * Takes a connection without waiting: it is served at once when the port is free, or when the
+     * client there has not begun its handshake or has been silent for long ({@link
+     * PioneerSession#isGivingWay()}). Else it waits for the port, for at most {@value #WAIT_MS} ms,
+     * in case the client there has just said CLOSE and is not yet seen off; only the latest such
+     * connection waits, and the one it replaces is refused at once, so a flood of connections is
+     * refused as fast as it comes.
+     */
+    private synchronized void admit(Socket s) throws IOException {
+        PioneerSession there = current;
+        if (there != null && !there.isEnded()) {
+            if (!there.isHeard()) {
+                there.end("it sent nothing, and the ARIA client from " + s.getRemoteSocketAddress()
+                        + " wants the port");
+            } else if (there.isGivingWay()) {
+                there.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
+                        + s.getRemoteSocketAddress() + " wants the port");
+            } else {
+                letWait(s);
+                return;
             }
         }
-        PioneerSession silent = current;
-        if (silent != null && !silent.isEnded() && silent.isGivingWay()) {
-            silent.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
-                    + s.getRemoteSocketAddress() + " wants the port");
-        }
-        if (current != null && !current.isEnded()) {
-            LOG.warning(() -> "robot " + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
-                    + s.getRemoteSocketAddress() + " is closed (one client at a time)");
-            close(s);
-            return;
-        }
+        serve(s);
+    }
+
+    /** Serves a connection as the port's client. */
+    private void serve(Socket s) throws IOException {
+        s.setTcpNoDelay(true);
         PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
                 served.parameters().robotClass(), served.parameters().subclass()));
         current = session;
         session.start(this::connected);
+    }
+
+    /** Lets a connection wait for the port, in place of the one waiting, which is refused. */
+    private void letWait(Socket s) {
+        if (waiting != null) {
+            refuse(waiting);
+        }
+        waiting = s;
+        waitingUntilNanos = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
+        if (waitingCheck == null) {
+            waitingCheck = WAITS.scheduleWithFixedDelay(this::checkWaiting, WAIT_CHECK_MS, WAIT_CHECK_MS,
+                    TimeUnit.MILLISECONDS);
+        }
+    }
+
+    /** Serves the waiting connection once the port is free, or refuses it when its wait is over. */
+    private synchronized void checkWaiting() {
+        Socket s = waiting;
+        PioneerSession there = current;
+        boolean free = there == null || there.isEnded() || there.isGivingWay();
+        if (s != null && !closed && !free && System.nanoTime() - waitingUntilNanos < 0) {
+            return;
+        }
+        waiting = null;
+        waitingCheck.cancel(false);
+        waitingCheck = null;
+        if (s == null) {
+            return;
+        }
+        if (closed || !free) {
+            refuse(s);
+            return;
+        }
+        try {
+            if (there != null && !there.isEnded()) {
+                there.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
+                        + s.getRemoteSocketAddress() + " wants the port");
+            }
+            serve(s);
+        } catch (IOException | RuntimeException e) {
+            LIMITED.warning("failures to serve robot " + served.name() + "'s ARIA clients", () -> "robot "
+                    + served.name() + ": could not serve the ARIA client at " + s.getRemoteSocketAddress() + ": "
+                    + e.getMessage());
+            close(s);
+        }
+    }
+
+    private void refuse(Socket s) {
+        LIMITED.warning("connections refused by robot " + served.name() + "'s Pioneer port", () -> "robot "
+                + served.name() + ": Pioneer port " + port() + " has a client already; the one from "
+                + s.getRemoteSocketAddress() + " is closed (one client at a time)");
+        close(s);
     }
 
     /**
@@ -155,6 +239,10 @@ final class PioneerPort implements Closeable {
         synchronized (this) {
             if (closed) {
                 session.end("the Pioneer port closed");
+                return;
+            }
+            if (session != current || session.isEnded()) {
+                session.end("another ARIA client took the port");
                 return;
             }
             b = bridge;
@@ -194,6 +282,10 @@ final class PioneerPort implements Closeable {
     public void close() {
         synchronized (this) {
             closed = true;
+            if (waiting != null) {
+                refuse(waiting);
+                waiting = null;
+            }
         }
         try {
             server.close();

@@ -2,6 +2,7 @@ package robosim.pioneer.server;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.InterruptedIOException;
 import java.io.OutputStream;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
@@ -17,19 +18,23 @@ import robosim.pioneer.ConfigPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.PacketDecoder;
 import robosim.pioneer.RobotIdentity;
+import robosim.protocol.LogLimiter;
 
 /**
  * One ARIA client's connection to a robot's Pioneer port: the SYNC0, SYNC1, SYNC2 handshake, then
  * the client's commands handed to the robot's {@link CommandHandler}, and the robot's packets
- * written back. The client's bytes are read by a thread of the session's own; garbage, bad lengths
- * and bad checksums are dropped with a log line (at most one a second, with a count), never ending
- * the session or the run. A client that has not finished the handshake within
+ * written back. The client's bytes are read by a thread of the session's own, no faster than its
+ * {@link InputBudget} allows; garbage, bad lengths and bad checksums are dropped with a log line (at
+ * most one a second, with a count), never ending the session or the run. A client that has not finished the handshake within
  * {@value #HANDSHAKE_MS} ms is closed so that the port is free again; one that has been silent for
  * {@value #SILENT_MS} ms gives way to the next client that connects ({@link #isGivingWay()}), since an
  * ARIA program that has connected its robot but not yet started its cycle sends nothing at all.
  */
 final class PioneerSession {
     private static final Logger LOG = Logger.getLogger(PioneerSession.class.getName());
+    private static final LogLimiter LIMITED = new LogLimiter(LOG);
+    /** The most read at once, so that the budget is kept to within a few packets. */
+    private static final int READ_BYTES = 512;
     /** How long a client may take over the SYNC handshake, ms. */
     static final int HANDSHAKE_MS = 10_000;
     /** How long a client may be silent before it gives its port to the next client, ms. */
@@ -49,14 +54,15 @@ final class PioneerSession {
     private volatile boolean opened;
     private volatile boolean ended;
     private volatile long lastPacketNanos = System.nanoTime();
+    /** Whether a whole packet has come from the client. */
+    private volatile boolean heard;
+    private int packetsTaken;
     private Consumer<PioneerSession> connected;
     private volatile CommandHandler handler;
     private volatile Supplier<ConfigPacket> config;
     private volatile Consumer<String> onEnd;
     private volatile String endReason;
     private final BlockingQueue<byte[]> outgoing = new ArrayBlockingQueue<>(MAX_QUEUED);
-    private long drops;
-    private long lastDropLogNanos;
 
     /**
      * @param socket   the client's connection
@@ -116,9 +122,10 @@ final class PioneerSession {
                 drop(reason);
             }
         });
-        byte[] buf = new byte[4096];
+        byte[] buf = new byte[READ_BYTES];
         String why = "the client closed the connection";
         long started = System.nanoTime();
+        InputBudget budget = new InputBudget(started);
         try (InputStream in = socket.getInputStream()) {
             socket.setSoTimeout(CHECK_MS);
             while (!ended) {
@@ -132,7 +139,9 @@ final class PioneerSession {
                     break;
                 }
                 if (n > 0) {
+                    int before = packetsTaken;
                     decoder.feed(buf, 0, n);
+                    holdBack(budget.spent(n, packetsTaken - before, System.nanoTime()));
                 }
                 // checked after every read: bytes that never make a packet do not keep a client in
                 String late = late(started);
@@ -148,6 +157,22 @@ final class PioneerSession {
             LOG.log(Level.WARNING, "robot " + robot + ": serving the ARIA client at " + client + " failed", e);
         } finally {
             end(why);
+        }
+    }
+
+    /** Waits out the rest of a cycle in which the client sent more than its budget: it slows only itself. */
+    private void holdBack(long nanos) throws InterruptedIOException {
+        if (nanos <= 0) {
+            return;
+        }
+        LIMITED.warning("input budgets exceeded by robot " + robot + "'s ARIA clients", () -> "robot " + robot
+                + ": the ARIA client at " + client + " sends more than " + InputBudget.MAX_PACKETS + " packets or "
+                + InputBudget.MAX_BYTES + " bytes in " + InputBudget.CYCLE_MS + " ms; it is read no faster than that");
+        try {
+            TimeUnit.NANOSECONDS.sleep(nanos);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new InterruptedIOException("interrupted");
         }
     }
 
@@ -193,6 +218,8 @@ final class PioneerSession {
 
     private void take(PioneerPacket p) {
         lastPacketNanos = System.nanoTime();
+        heard = true;
+        packetsTaken++;
         switch (phase) {
             case SYNC0, SYNC1, SYNC2 -> handshake(p);
             case CONNECTED -> {
@@ -217,7 +244,8 @@ final class PioneerSession {
             send(expected == Commands.SYNC2 ? identity.toPacket() : PioneerPacket.of(expected));
             phase = Phase.values()[expected + 1];
             if (phase == Phase.CONNECTED) {
-                LOG.info(() -> "robot " + robot + ": an ARIA client connected from " + client);
+                LIMITED.info("handshakes with robot " + robot + "'s ARIA clients", () -> "robot " + robot
+                        + ": an ARIA client connected from " + client);
                 connected.accept(this);
             }
         } else if (p.id() == Commands.SYNC0) {
@@ -230,15 +258,18 @@ final class PioneerSession {
     }
 
     private void drop(String reason) {
-        drops++;
-        long now = System.nanoTime();
-        if (now - lastDropLogNanos > 1_000_000_000L) {
-            long n = drops;
-            drops = 0;
-            lastDropLogNanos = now;
-            LOG.warning(() -> "robot " + robot + ": dropped from the ARIA client at " + client + ": " + reason
-                    + (n > 1 ? " (and " + (n - 1) + " more drops since the last line)" : ""));
-        }
+        LIMITED.warning("packets dropped from robot " + robot + "'s ARIA clients", () -> "robot " + robot
+                + ": dropped from the ARIA client at " + client + ": " + reason);
+    }
+
+    /** @return whether a whole packet has come from the client: it has begun the handshake, at least */
+    boolean isHeard() {
+        return heard;
+    }
+
+    /** @return whether the handshake is done */
+    boolean isConnected() {
+        return phase == Phase.CONNECTED;
     }
 
     /** @return whether the client has sent OPEN: status packets flow */
@@ -289,7 +320,8 @@ final class PioneerSession {
             endReason = reason;
             ended = true;
         }
-        LOG.info(() -> "robot " + robot + ": the ARIA client at " + client + " left: " + reason);
+        LIMITED.info("departures of robot " + robot + "'s ARIA clients", () -> "robot " + robot + ": the ARIA client at "
+                + client + " left: " + reason);
         try {
             socket.close();
         } catch (IOException e) {

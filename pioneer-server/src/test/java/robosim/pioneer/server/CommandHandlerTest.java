@@ -56,8 +56,8 @@ class CommandHandlerTest {
                 }
 
                 @Override
-                public void log(String line) {
-                    log.add(line);
+                public void log(String kind, java.util.function.Supplier<String> line) {
+                    log.add(line.get());
                 }
             });
 

@@ -5,24 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import robosim.hw.HardwareOptions;
-import robosim.params.ConversionFactors;
 import robosim.pioneer.Commands;
 import robosim.pioneer.ConfigPacket;
 import robosim.pioneer.PioneerClient;
 import robosim.pioneer.Sip;
-import robosim.protocol.RobotParameters;
 
 /**
  * The port answers ARIA's handshake and keeps its link alive without waiting on the Environment: here
@@ -35,30 +27,11 @@ class PioneerPortHandshakeTest {
     /** ARIA drops a robot whose status has not come for this long, ms. */
     static final int ARIA_ODOMETRY_MS = 8000;
 
-    private final List<Socket> held = new CopyOnWriteArrayList<>();
-    private final CountDownLatch hello = new CountDownLatch(1);
-    private ServerSocket silentEnvironment;
+    private SilentEnvironment silentEnvironment;
 
-    /** Takes robots' connections, reads their hello, and says nothing. */
     private int silentEnvironment() throws IOException {
-        silentEnvironment = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
-        Thread t = new Thread(() -> {
-            try {
-                while (true) {
-                    Socket s = silentEnvironment.accept();
-                    held.add(s);
-                    InputStream in = s.getInputStream();
-                    if (in.read() >= 0) {
-                        hello.countDown();
-                    }
-                }
-            } catch (IOException closed) {
-                // the test is over
-            }
-        }, "silent-environment");
-        t.setDaemon(true);
-        t.start();
-        return silentEnvironment.getLocalPort();
+        silentEnvironment = new SilentEnvironment();
+        return silentEnvironment.port();
     }
 
     @AfterEach
@@ -66,15 +39,10 @@ class PioneerPortHandshakeTest {
         if (silentEnvironment != null) {
             silentEnvironment.close();
         }
-        for (Socket s : held) {
-            s.close();
-        }
     }
 
     private static ServedRobot robot(int stepMs) {
-        return new ServedRobot("r1", "pioneer", new RobotParameters("Pioneer", "p3dx", 250, 425, 210, 301, 2200, 500,
-                300, 300, 100, 100, 0.0056, 5000, List.of()), new ConversionFactors(0.001534, 0.485, 1, 1, 0.0056, 20),
-                stepMs);
+        return SilentEnvironment.robot(stepMs);
     }
 
     @Test
@@ -88,7 +56,7 @@ class PioneerPortHandshakeTest {
             ConfigPacket config = c.open(ARIA_REPLY_MS);
             assertEquals("SIM", config.serial(), "ARIA learns that the robot is simulated");
             assertEquals(50, config.sipCycle(), "the world's step length, before the Environment says it");
-            assertTrue(hello.await(30, TimeUnit.SECONDS), "the robot asked the Environment to join meanwhile");
+            assertTrue(silentEnvironment.heardFrom(30, TimeUnit.SECONDS), "the robot asked the Environment to join meanwhile");
             c.startPulses();
             c.send(Commands.comInt(Commands.BATTERYINFO, 1));
             c.send(Commands.comInt(Commands.ENABLE, 1));

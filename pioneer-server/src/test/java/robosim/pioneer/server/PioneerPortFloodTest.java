@@ -1,0 +1,147 @@
+package robosim.pioneer.server;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Handler;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import robosim.hw.HardwareOptions;
+import robosim.pioneer.Commands;
+import robosim.pioneer.PioneerClient;
+
+/**
+ * A flood of connections to a Pioneer port is refused as fast as it comes, with a log line a second,
+ * and a client that comes after it gets in at once: with a client on the port, and without one.
+ */
+@Timeout(value = 2, unit = TimeUnit.MINUTES)
+class PioneerPortFloodTest {
+    private static final int FLOOD = 400;
+    private static final int ARIA_REPLY_MS = PioneerPortHandshakeTest.ARIA_REPLY_MS;
+
+    private final List<Socket> flood = new ArrayList<>();
+    private final List<String> lines = new ArrayList<>();
+    private final Logger log = Logger.getLogger("robosim.pioneer.server");
+    private final Handler capture = new Handler() {
+        @Override
+        public synchronized void publish(LogRecord r) {
+            lines.add(r.getMessage());
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+        }
+    };
+    private SilentEnvironment env;
+    private PioneerPorts ports;
+
+    @BeforeEach
+    void open() throws IOException {
+        log.addHandler(capture);
+        env = new SilentEnvironment();
+        HardwareOptions patient = new HardwareOptions(120_000, HardwareOptions.DEFAULT_LOST_AFTER_MS, 5_000);
+        ports = PioneerPorts.open(List.of(SilentEnvironment.robot(100)), new PioneerPortOptions("127.0.0.1", 0, false,
+                PioneerPortOptions.DEFAULT_WATCHDOG_MS, true, patient), "127.0.0.1", env.port(), null, code -> { });
+    }
+
+    @AfterEach
+    void close() throws IOException {
+        log.removeHandler(capture);
+        for (Socket s : flood) {
+            s.close();
+        }
+        ports.close();
+        env.close();
+    }
+
+    /** Opens the flood's connections, each saying nothing. */
+    private void openFlood() throws IOException {
+        for (int i = 0; i < FLOOD; i++) {
+            Socket s = new Socket();
+            s.connect(new InetSocketAddress("127.0.0.1", ports.portOf("r1")), 5000);
+            flood.add(s);
+        }
+    }
+
+    /** @return how many of the flood's connections the port has closed, each waited for at most 10 s */
+    private int closedByThePort() throws IOException {
+        int closed = 0;
+        for (Socket s : flood) {
+            s.setSoTimeout(10_000);
+            try {
+                if (s.getInputStream().read() < 0) {
+                    closed++;
+                }
+            } catch (SocketTimeoutException stillOpen) {
+                // counted as not closed
+            } catch (IOException reset) {
+                closed++;
+            }
+        }
+        return closed;
+    }
+
+    private synchronized List<String> lines() {
+        return new ArrayList<>(lines);
+    }
+
+    @Test
+    void withAClientOnThePortEveryConnectionOfAFloodIsRefusedAndTheNextClientGetsInOnceItLeaves() throws Exception {
+        try (PioneerClient first = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
+            first.open(ARIA_REPLY_MS);
+            first.startPulses();
+            long started = System.nanoTime();
+            openFlood();
+            System.out.println("opened after " + TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started));
+            assertEquals(FLOOD, closedByThePort(), "every connection of the flood is refused");
+            long ms = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+            System.out.println("opening and refusing " + FLOOD + " connections took " + ms + " ms");
+            assertFalse(first.isClosed(), "the client on the port stays");
+            assertTrue(first.nextSip(8000) != null, "and is sent its status");
+            first.send(Commands.com(Commands.CLOSE));
+        }
+        try (PioneerClient next = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
+            assertEquals("SIM", next.open(ARIA_REPLY_MS).serial(), "the next client gets the port");
+        }
+        long refusals = lines().stream().filter(l -> l.contains("has a client already")).count();
+        assertTrue(refusals >= 1 && refusals <= 5, "a line a second, not one a connection: " + lines());
+    }
+
+    @Test
+    void withoutAClientAFloodOfSilentConnectionsHoldsNothingAndTheNextClientGetsIn() throws Exception {
+        openFlood();
+        try (PioneerClient next = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
+            assertEquals("SIM", next.open(ARIA_REPLY_MS).serial(), "a client after the flood gets the port at once");
+            assertEquals(FLOOD, closedByThePort(), "each silent connection gave way to the next");
+            assertFalse(next.isClosed());
+        }
+        long departures = lines().stream().filter(l -> l.contains("left: it sent nothing")).count();
+        assertTrue(departures >= 1 && departures <= 5, "a line a second, not one a connection: " + lines());
+    }
+
+    @Test
+    void aClientThatSaysCloseAndConnectsAgainAtOnceGetsThePort() throws Exception {
+        for (int i = 0; i < 20; i++) {
+            try (PioneerClient c = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
+                c.open(ARIA_REPLY_MS);
+                c.send(Commands.com(Commands.CLOSE));
+            }
+        }
+    }
+}
