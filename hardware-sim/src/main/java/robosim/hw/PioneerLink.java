@@ -16,6 +16,7 @@ import robosim.pioneer.PioneerClient;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.SimStat;
 import robosim.pioneer.Sip;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
 import robosim.protocol.Welcome;
@@ -65,8 +66,9 @@ public final class PioneerLink extends ReleasedOnClose {
             client = c;
             ConfigPacket config = c.open(options.connectTimeoutMs());
             ConversionFactors factors = RobotParameterFiles.conversionFactorsOfSubclass(c.identity().subclass());
-            LOG.info(() -> "robot " + hello.name() + " drives the " + c.identity().robotClass() + " "
-                    + c.identity().subclass() + " '" + c.identity().name() + "' at " + environment()
+            LOG.info(() -> "robot " + hello.name() + " drives the " + LogLimiter.excerpt(c.identity().robotClass()) + " "
+                    + LogLimiter.excerpt(c.identity().subclass()) + " '" + LogLimiter.excerpt(c.identity().name()) + "' at "
+                    + environment()
                     + ", status every " + config.sipCycle() + " ms, conversion factors: " + factors.describe());
             states = new SipToState(factors, hello.parameters().sonarUnits().size(), hello.parameters().sonarMaxRange());
             commands = new CommandToPackets(factors, environment());

@@ -8,7 +8,9 @@ import java.util.concurrent.TimeUnit;
  * (a few commands a cycle and a PULSE) and several times what a Pioneer's 115 200-baud serial line
  * carries. A client that sends more is read no faster: its session waits for the next cycle before
  * it reads again, so the client's own writes back up in its connection and it slows only itself,
- * never the run or the other robots.
+ * never the run or the other robots. A client that has kept over its budget for {@value
+ * #FLOODING_MS} ms (what it sent meanwhile would take it minutes to drain) is flooding: its session
+ * ends, and the port is free for the next client.
  */
 final class InputBudget {
     /** The cycle the budget is counted over, ms: a Pioneer's SIP cycle. */
@@ -18,12 +20,16 @@ final class InputBudget {
     /** The bytes read in a cycle. */
     static final int MAX_BYTES = 8192;
 
+    /** How long a client may keep over its budget before it counts as flooding, ms. */
+    static final int FLOODING_MS = 5000;
+
     private static final long CYCLE_NANOS = TimeUnit.MILLISECONDS.toNanos(CYCLE_MS);
 
     private long cycleStarted;
     private long bytes;
     private long packets;
-    private long heldBackCycles;
+    /** When the client went over its budget and has stayed over since; −1 while it keeps to it. */
+    private long overSince = -1;
 
     /** @param now {@link System#nanoTime()} as the client connected */
     InputBudget(long now) {
@@ -40,16 +46,20 @@ final class InputBudget {
      */
     long spent(int readBytes, int readPackets, long now) {
         if (now - cycleStarted >= CYCLE_NANOS) {
+            // a whole cycle within the budget
             cycleStarted = now;
             bytes = 0;
             packets = 0;
+            overSince = -1;
         }
         bytes += readBytes;
         packets += readPackets;
         if (bytes < MAX_BYTES && packets < MAX_PACKETS) {
             return 0;
         }
-        heldBackCycles++;
+        if (overSince < 0) {
+            overSince = cycleStarted;
+        }
         long wait = cycleStarted + CYCLE_NANOS - now;
         cycleStarted += CYCLE_NANOS; // what went over counts against the next cycle
         bytes = Math.max(0, bytes - MAX_BYTES);
@@ -57,8 +67,11 @@ final class InputBudget {
         return Math.max(0, wait);
     }
 
-    /** @return the cycles in which the client sent more than the budget */
-    long heldBackCycles() {
-        return heldBackCycles;
+    /**
+     * @param now {@link System#nanoTime()}
+     * @return whether the client has kept over its budget for {@value #FLOODING_MS} ms
+     */
+    boolean flooding(long now) {
+        return overSince >= 0 && now - overSince > TimeUnit.MILLISECONDS.toNanos(FLOODING_MS);
     }
 }

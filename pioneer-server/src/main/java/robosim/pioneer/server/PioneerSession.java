@@ -141,7 +141,13 @@ final class PioneerSession {
                 if (n > 0) {
                     int before = packetsTaken;
                     decoder.feed(buf, 0, n);
-                    holdBack(budget.spent(n, packetsTaken - before, System.nanoTime()));
+                    long now = System.nanoTime();
+                    holdBack(budget.spent(n, packetsTaken - before, now));
+                    if (budget.flooding(now)) {
+                        why = "it has sent more than " + InputBudget.MAX_PACKETS + " packets or " + InputBudget.MAX_BYTES
+                                + " bytes every " + InputBudget.CYCLE_MS + " ms for " + InputBudget.FLOODING_MS + " ms";
+                        break;
+                    }
                 }
                 // checked after every read: bytes that never make a packet do not keep a client in
                 String late = late(started);
