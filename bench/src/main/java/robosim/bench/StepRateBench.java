@@ -339,7 +339,7 @@ public final class StepRateBench {
     }
 
     /** Gives the clients a bounded time to end by themselves, then ends them. */
-    private static void stop(List<Process> clients) throws InterruptedException {
+    static void stop(List<Process> clients) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(CLIENT_EXIT_MS);
         for (Process p : clients) {
             p.waitFor(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
@@ -356,7 +356,7 @@ public final class StepRateBench {
         }
     }
 
-    private static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log,
+    static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log,
                                      long heapEvery, long window) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.awt.headless=true", "-Xss256k", "-Xmx" + clientHeapMb(share.count()) + "m",

@@ -24,6 +24,7 @@ import robosim.bench.Floors;
 import robosim.bench.GoldFinderBench;
 import robosim.bench.LaserBench;
 import robosim.bench.MapLoadBench;
+import robosim.bench.PioneerFloodBench;
 import robosim.bench.StepRateBench;
 import robosim.env.net.ServerOptions;
 import robosim.hw.EnvironmentLinks;
@@ -119,6 +120,15 @@ final class BenchCommand implements Callable<Integer> {
             + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
     boolean floors;
 
+    @Option(names = "--pioneer-flood", description = "instead: the run's steps per second while an ARIA client on a"
+            + " Pioneer port behaves and while it floods its port with connections and commands (--robots' first count,"
+            + " at least 2; each rate over --flood-seconds)")
+    boolean pioneerFlood;
+
+    @Option(names = "--flood-seconds", defaultValue = "5", paramLabel = "S",
+            description = "for --pioneer-flood: how long each rate is measured, 1 to 60; default ${DEFAULT-VALUE}")
+    double floodSeconds;
+
     @Option(names = "--map-load", description = "instead: time reading a generated scanned map of --map-points points"
             + " (or --map FILE) into a world, building the simulation on it, and a laser scan against it")
     boolean mapLoad;
@@ -205,6 +215,27 @@ final class BenchCommand implements Callable<Integer> {
         if (floors) {
             for (int r = 0; r < repeat; r++) {
                 Floors.print(o, Floors.measure(50_000));
+            }
+            return 0;
+        }
+        if (pioneerFlood) {
+            int n = robots.get(0);
+            if (n < 2) {
+                throw new ParameterException(spec.commandLine(),
+                        n + " was supplied for --robots: --pioneer-flood needs at least 2 robots");
+            }
+            if (!(floodSeconds >= 1 && floodSeconds <= 60)) {
+                throw new ParameterException(spec.commandLine(),
+                        floodSeconds + " was supplied for --flood-seconds: it must be from 1 to 60");
+            }
+            Level quiet = NET_LOG.getLevel();
+            NET_LOG.setLevel(Level.WARNING);
+            try {
+                for (int r = 0; r < repeat; r++) {
+                    PioneerFloodBench.print(o, PioneerFloodBench.run(n, floodSeconds, out.resolve("pioneer-flood"), p3dx));
+                }
+            } finally {
+                NET_LOG.setLevel(quiet);
             }
             return 0;
         }
