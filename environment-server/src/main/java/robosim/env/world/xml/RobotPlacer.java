@@ -100,7 +100,7 @@ final class RobotPlacer {
         if (shipped.isPresent()) {
             return shipped.get().toAbsolutePath().normalize();
         }
-        throw attributes.error(e, about(name, params) + " does not exist (looked for " + shown(relative)
+        throw attributes.error(e, about(name, params) + " does not exist (looked for " + shown(relative, params)
                 + ") and is no shipped name: params is a path relative to the world file's directory, or the name"
                 + " of a file in " + RobotParameterFiles.shippedFolder().toAbsolutePath().normalize()
                 + " (" + String.join(", ", RobotParameterFiles.shippedNames()) + ")");
@@ -154,9 +154,14 @@ final class RobotPlacer {
         return "robot '" + name + "': parameter file " + LogLimiter.excerpt(params);
     }
 
-    /** @return a path made of a {@code params} attribute as an error shows it: escaped, and cut if it is long */
-    private static String shown(Path p) {
-        return RobotHello.printable(p.toString(), 300);
+    /**
+     * @return a path made of a {@code params} attribute as an error shows it: escaped, and for a
+     *         {@code params} too long to quote whole, the world file's directory and its excerpt
+     */
+    private String shown(Path p, String params) {
+        return LogLimiter.excerpt(params).equals(params) ? RobotHello.printable(p.toString(), 300)
+                : RobotHello.printable(attributes.file().toAbsolutePath().getParent().toString(), 300) + "/"
+                + LogLimiter.excerpt(params);
     }
 
     private void checkName(Element e, String name) {
@@ -172,11 +177,11 @@ final class RobotPlacer {
         }
         if (!Files.exists(file)) {
             throw attributes.error(e, about(name, params) + " does not exist (looked for "
-                    + shown(file) + ")");
+                    + shown(file, params) + ")");
         }
         if (!Files.isRegularFile(file) || !Files.isReadable(file)) {
             throw attributes.error(e, about(name, params) + " cannot be read ("
-                    + shown(file) + ")");
+                    + shown(file, params) + ")");
         }
         try {
             RobotParameters read = RobotParametersReader.read(file);
