@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Command;
 import robosim.protocol.Figure;
 import robosim.protocol.MessageDelivery;
@@ -32,6 +33,8 @@ import robosim.protocol.RobotParameters;
  */
 public abstract class AbstractRobot {
     private static final Logger LOG = Logger.getLogger(AbstractRobot.class.getName());
+    /** The Environment refuses a bad request each time it is sent: one line a second. */
+    private final LogLimiter refusals = new LogLimiter(LOG);
     private static final InheritableThreadLocal<AbstractRobot> CURRENT = new InheritableThreadLocal<>();
 
     private final String name;
@@ -220,7 +223,8 @@ public abstract class AbstractRobot {
             inbox.add(new RobotMessage(m));
         }
         for (String e : response.state().errors()) {
-            LOG.warning(() -> "robot " + name + ": the Environment refused a request: " + e);
+            refusals.warning("requests the Environment refused", () -> "robot " + name
+                    + ": the Environment refused a request: " + RobotHello.printable(e, 200));
             requestErrors.add(e);
         }
     }

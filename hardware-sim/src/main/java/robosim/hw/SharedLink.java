@@ -19,6 +19,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Bye;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
@@ -44,6 +45,7 @@ import robosim.protocol.Welcome;
  */
 final class SharedLink {
     private static final Logger LOG = Logger.getLogger(SharedLink.class.getName());
+    private final LogLimiter strayWelcomes = new LogLimiter(LOG);
     /** How long a step's requests wait for late robots of the link before the ready ones are sent. */
     static final long LINGER_MS = 100;
     /** Robots whose states one task hands out; a frame of fewer than two chunks is handed out by the reader. */
@@ -207,7 +209,8 @@ final class SharedLink {
     private void welcomed(Welcome w) {
         Joining j = joining.get(w.name());
         if (j == null) {
-            LOG.warning(() -> "the Environment at " + host + ":" + port + " welcomed robot " + w.name()
+            strayWelcomes.warning("welcomes of robots that did not say hello", () -> "the Environment at " + host
+                    + ":" + port + " welcomed robot " + LogLimiter.excerpt(w.name())
                     + ", which did not say hello on this link");
             return;
         }

@@ -59,7 +59,7 @@ class AcceptFailureTest {
                 flood.add(s);
             }
             assertTrue(flood.size() > 200, "connections made: " + flood.size());
-            String text = awaitLine(log, env, Pattern.compile("(\\d+) more accept failures in the last 10000 ms were"
+            String text = awaitLine(log, env, Pattern.compile("(\\d+) more accept failures in the last 10000 ms,"
                     + " not logged one by one"));
             long failures = text.lines().filter(l -> l.contains("accepting a robot connection failed:")).count();
             assertTrue(failures >= 1 && failures <= 3, "one line a period, not one a failure:\n" + text);

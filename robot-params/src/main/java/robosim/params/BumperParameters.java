@@ -77,7 +77,7 @@ public record BumperParameters(boolean frontBumpers, int numFrontBumpers, boolea
             case "true", "1" -> true;
             case "false", "0" -> false;
             default -> throw new ParameterFileException(file, line,
-                    words[0] + " '" + words[1] + "' is not a boolean: it is true or false");
+                    words[0] + " " + ParameterRules.quote(words[1]) + " is not a boolean: it is true or false");
         };
     }
 
@@ -87,7 +87,8 @@ public record BumperParameters(boolean frontBumpers, int numFrontBumpers, boolea
         try {
             n = Integer.parseInt(v);
         } catch (NumberFormatException e) {
-            throw new ParameterFileException(file, line, words[0] + " '" + v + "' is not a whole number");
+            throw new ParameterFileException(file, line, words[0] + " " + ParameterRules.quote(v)
+                    + " is not a whole number");
         }
         String rule = rule(n);
         if (rule != null) {

@@ -65,7 +65,8 @@ public record ConversionFactors(double angleConvFactor, double distConvFactor, d
             try {
                 v = Double.parseDouble(words[1]);
             } catch (NumberFormatException e) {
-                throw new ParameterFileException(file, i + 1, words[0] + " '" + words[1] + "' is not a number");
+                throw new ParameterFileException(file, i + 1, words[0] + " " + ParameterRules.quote(words[1])
+                        + " is not a number");
             }
             if (!(v > 0) || !Double.isFinite(v)) {
                 throw new ParameterFileException(file, i + 1, words[0] + " is " + words[1] + " but must be greater than 0");

@@ -43,6 +43,8 @@ public final class ParameterFileReader {
 
     /** The longest {@code SonarCycle}, ms (the Environment's bound). */
     public static final int MAX_SONAR_CYCLE_MS = 10_000;
+    /** The longest content a line may have before its comment: ARIA's own lines hold a few dozen characters. */
+    static final int MAX_LINE_CHARS = 200;
 
     private ParameterFileReader() {
     }
@@ -111,7 +113,8 @@ public final class ParameterFileReader {
             try {
                 cycle = Integer.parseInt(v);
             } catch (NumberFormatException e) {
-                throw new ParameterFileException(file, i + 1, words[0] + " '" + v + "' is not a whole number of ms");
+                throw new ParameterFileException(file, i + 1, words[0] + " " + ParameterRules.quote(v)
+                        + " is not a whole number of ms");
             }
             if (cycle < 0 || cycle > MAX_SONAR_CYCLE_MS) {
                 throw new ParameterFileException(file, i + 1, words[0] + " is " + v
@@ -163,6 +166,7 @@ public final class ParameterFileReader {
             if (line.isEmpty()) {
                 continue;
             }
+            checkLine(file, lineNo, line);
             String[] words = line.split("\\s+");
             String key = words[0].toLowerCase(Locale.ROOT);
             if (key.equals("configversion")) {
@@ -171,7 +175,7 @@ public final class ParameterFileReader {
             }
             if (!versionSeen) {
                 throw new ParameterFileException(file, lineNo,
-                        "expected 'ConfigVersion 2.0' before '" + words[0] + "'");
+                        "expected 'ConfigVersion 2.0' before " + ParameterRules.quote(words[0]));
             }
             String header = sectionName(line);
             if (header != null) {
@@ -212,6 +216,18 @@ public final class ParameterFileReader {
             throw new ParameterFileException(file, 0, "no 'ConfigVersion 2.0' line: not an ARIA parameter file");
         }
         return rules.build();
+    }
+
+    /**
+     * Holds a line's content (its comment aside) to {@value #MAX_LINE_CHARS} characters without control
+     * characters but tabs, so that what an error quotes of it is short and cannot write to a terminal.
+     */
+    private static void checkLine(Path file, int lineNo, String line) {
+        if (line.length() > MAX_LINE_CHARS || line.chars().anyMatch(c -> c != '\t' && Character.isISOControl(c))) {
+            throw new ParameterFileException(file, lineNo, "the line " + ParameterRules.quote(line) + " is not a"
+                    + " parameter line: a line holds at most " + MAX_LINE_CHARS + " characters before its comment,"
+                    + " none of them a control character but a tab");
+        }
     }
 
     /** @return the section a {@code Section name} or {@code [name]} line opens, or null for any other line */

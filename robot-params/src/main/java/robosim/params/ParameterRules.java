@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.logging.Logger;
+import robosim.protocol.LogLimiter;
 
 /**
  * The rules both forms of a robot parameter file share, so that a {@code .p} file and its
@@ -111,6 +112,14 @@ final class ParameterRules {
         return NUMBERS.containsKey(key.toLowerCase(Locale.ROOT));
     }
 
+    /**
+     * @param text text from a parameter file
+     * @return it as an error quotes it: in single quotes, escaped and cut short (see {@link LogLimiter#excerpt})
+     */
+    static String quote(String text) {
+        return "'" + LogLimiter.excerpt(text) + "'";
+    }
+
     /** @return a problem with this file at {@code line} (0: the whole file) */
     ParameterFileException error(int line, String rule) {
         return new ParameterFileException(file, line, rule);
@@ -128,7 +137,7 @@ final class ParameterRules {
     void hasGripper(String value, int line) {
         String v = value.toLowerCase(Locale.ROOT);
         if (!Set.of("true", "false", "1", "0").contains(v)) {
-            throw error(line, "HasGripper '" + value + "' must be true, false, 1 or 0");
+            throw error(line, "HasGripper " + quote(value) + " must be true, false, 1 or 0");
         }
         hasGripper = v.equals("true") || v.equals("1");
     }
@@ -137,7 +146,7 @@ final class ParameterRules {
     void shape(String value, int line) {
         String v = value.toLowerCase(java.util.Locale.ROOT);
         if (!v.equals(RobotParameters.RECTANGLE) && !v.equals(RobotParameters.ROUND)) {
-            throw error(line, "RobotShape '" + value + "' must be rectangle or round");
+            throw error(line, "RobotShape " + quote(value) + " must be rectangle or round");
         }
         shape = v;
     }
@@ -169,10 +178,10 @@ final class ParameterRules {
             return;
         }
         if (rule.sign() == Sign.POSITIVE && v <= 0) {
-            throw error(line, name + " is " + text + " but must be greater than 0");
+            throw error(line, name + " is " + LogLimiter.excerpt(text) + " but must be greater than 0");
         }
         if (rule.sign() == Sign.NOT_NEGATIVE && v < 0) {
-            throw error(line, name + " is " + text + " but must not be negative");
+            throw error(line, name + " is " + LogLimiter.excerpt(text) + " but must not be negative");
         }
         numbers.put(key.toLowerCase(Locale.ROOT), v);
     }
@@ -185,7 +194,7 @@ final class ParameterRules {
      * @param line where
      */
     void unknownKey(String key, int line) {
-        unknownKeys.add(key + " (line " + line + ")");
+        unknownKeys.add(LogLimiter.excerpt(key) + " (line " + line + ")");
     }
 
     /** A broken file may hold thousands of unknown keys; the warning names this many and counts the rest. */
@@ -222,7 +231,8 @@ final class ParameterRules {
     void sonarNum(String text, int line) {
         double n = parse(spelling.sonarNum(), text, line);
         if (n < 0 || n > MAX_SONARS || n != Math.rint(n)) {
-            throw error(line, spelling.sonarNum() + " " + text + " must be a whole number from 0 to " + MAX_SONARS);
+            throw error(line, spelling.sonarNum() + " " + LogLimiter.excerpt(text)
+                    + " must be a whole number from 0 to " + MAX_SONARS);
         }
         sonarNum = (int) n;
         sonarNumLine = line;
@@ -241,14 +251,16 @@ final class ParameterRules {
         String unit = spelling.sonarUnit();
         double n = parse(unit + " " + spelling.index(), index, line);
         if (n < 0 || n != Math.rint(n)) {
-            throw error(line, unit + " " + spelling.index() + " " + index + " must be a whole number from 0");
+            throw error(line, unit + " " + spelling.index() + " " + LogLimiter.excerpt(index)
+                    + " must be a whole number from 0");
         }
         if (sonarNum != null && n >= sonarNum) {
-            throw error(line, unit + " " + spelling.index() + " " + index + " must be less than "
+            throw error(line, unit + " " + spelling.index() + " " + LogLimiter.excerpt(index) + " must be less than "
                     + spelling.sonarNum() + " " + sonarNum);
         }
         if (n >= MAX_SONARS) {
-            throw error(line, unit + " " + spelling.index() + " " + index + " must be less than " + MAX_SONARS);
+            throw error(line, unit + " " + spelling.index() + " " + LogLimiter.excerpt(index)
+                    + " must be less than " + MAX_SONARS);
         }
         SonarUnit sonar = new SonarUnit((int) n, parse(unit + " x", x, line), parse(unit + " y", y, line),
                 parse(unit + " th", th, line));
@@ -331,7 +343,7 @@ final class ParameterRules {
             }
             return v;
         } catch (NumberFormatException e) {
-            throw error(line, what + " '" + text + "' is not a number");
+            throw error(line, what + " " + quote(text) + " is not a number");
         }
     }
 }

@@ -21,6 +21,7 @@ import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
+import robosim.protocol.LogLimiter;
 
 /**
  * Reads the XML forms of a robot parameter file, in either of two layouts told apart by the root
@@ -99,7 +100,7 @@ public final class XmlParameterFileReader {
         XMLStreamReader stax = parser.getStaxReader();
         boolean original = stax.isStartElement() && ORIGINAL_ROOT.equals(stax.getLocalName());
         if (!stax.isStartElement() || !ROOT.equals(stax.getLocalName()) && !original) {
-            String found = stax.isStartElement() ? "<" + stax.getLocalName() + ">" : "missing";
+            String found = stax.isStartElement() ? "<" + LogLimiter.excerpt(stax.getLocalName()) + ">" : "missing";
             throw rules.error(stax.getLocation().getLineNumber(),
                     "the root element is " + found + ", expected <" + ROOT + "> or <" + ORIGINAL_ROOT + ">");
         }
@@ -118,7 +119,7 @@ public final class XmlParameterFileReader {
                 }
             }
         } else if (token == JsonToken.VALUE_STRING && !parser.getText().isBlank()) {
-            throw rules.error(line(), "text '" + parser.getText().trim() + "' in <" + root + ">: "
+            throw rules.error(line(), "text " + ParameterRules.quote(parser.getText().trim()) + " in <" + root + ">: "
                     + "parameters are child elements");
         }
         // Jackson stops at the root's end; reading on lets the XML parser see anything after it
@@ -140,8 +141,10 @@ public final class XmlParameterFileReader {
     /** Handles the one child of the original layout's {@code <robot>}: {@code <params>}. */
     private void params(String name, int line) throws IOException {
         if (!PARAMS.equals(name)) {
-            throw isAttribute(name) ? rules.error(line, "unknown attribute " + name + " on <" + ORIGINAL_ROOT + ">")
-                    : rules.error(line, "unknown element <" + name + "> in <" + ORIGINAL_ROOT + "> (it holds <"
+            throw isAttribute(name) ? rules.error(line, "unknown attribute " + LogLimiter.excerpt(name)
+                    + " on <" + ORIGINAL_ROOT + ">")
+                    : rules.error(line, "unknown element <" + LogLimiter.excerpt(name) + "> in <"
+                            + ORIGINAL_ROOT + "> (it holds <"
                     + PARAMS + ">)");
         }
         Integer first = seen.putIfAbsent(PARAMS, line);
@@ -160,7 +163,8 @@ public final class XmlParameterFileReader {
     private void forEachChild(String name, int line, Child child) throws IOException {
         if (!parser.hasToken(JsonToken.START_OBJECT)) {
             if (parser.hasToken(JsonToken.VALUE_STRING) && !parser.getText().isBlank()) {
-                throw rules.error(line, "<" + name + "> holds elements, not text '" + parser.getText().trim() + "'");
+                throw rules.error(line, "<" + LogLimiter.excerpt(name) + "> holds elements, not text "
+                        + ParameterRules.quote(parser.getText().trim()));
             }
             return;
         }
@@ -169,13 +173,15 @@ public final class XmlParameterFileReader {
             int innerLine = line();
             parser.nextToken();
             if (isAttribute(inner)) {
-                throw rules.error(line, "unknown attribute " + inner + " on <" + name + ">");
+                throw rules.error(line, "unknown attribute " + LogLimiter.excerpt(inner) + " on <"
+                        + LogLimiter.excerpt(name) + ">");
             }
             if (inner.isEmpty()) {
                 if (parser.getText().isBlank()) {
                     continue;
                 }
-                throw rules.error(innerLine, "<" + name + "> holds elements, not text '" + parser.getText().trim() + "'");
+                throw rules.error(innerLine, "<" + LogLimiter.excerpt(name) + "> holds elements, not text "
+                        + ParameterRules.quote(parser.getText().trim()));
             }
             child.handle(inner, innerLine);
         }
@@ -184,16 +190,18 @@ public final class XmlParameterFileReader {
     /** Reads the original layout's {@code <sonarUnit>}: child elements sonarNumber, sonarX, sonarY, sonarTh. */
     private void originalSonarUnit(String name, int line) throws IOException {
         if (!"sonarUnit".equals(name)) {
-            throw rules.error(line, "unknown element <" + name + "> in <sonar> (it holds <sonarUnit>)");
+            throw rules.error(line, "unknown element <" + LogLimiter.excerpt(name)
+                    + "> in <sonar> (it holds <sonarUnit>)");
         }
         Map<String, String> values = new HashMap<>();
         forEachChild(name, line, (child, childLine) -> {
             if (!ORIGINAL_SONAR.contains(child)) {
-                throw rules.error(childLine, "unknown element <" + child + "> in <sonarUnit> (known: "
+                throw rules.error(childLine, "unknown element <" + LogLimiter.excerpt(child)
+                        + "> in <sonarUnit> (known: "
                         + String.join(", ", ORIGINAL_SONAR) + ")");
             }
             if (values.put(child, text(child, childLine)) != null) {
-                throw rules.error(childLine, "<" + child + "> is given twice in one <sonarUnit>");
+                throw rules.error(childLine, "<" + LogLimiter.excerpt(child) + "> is given twice in one <sonarUnit>");
             }
         });
         for (String wanted : ORIGINAL_SONAR) {
@@ -207,20 +215,22 @@ public final class XmlParameterFileReader {
     /** Handles one parameter element of {@code container}; the parser stands on its value. */
     private void element(String container, String name, int line) throws IOException {
         if (isAttribute(name)) {
-            throw rules.error(line, "unknown attribute " + name + " on <" + container + ">");
+            throw rules.error(line, "unknown attribute " + LogLimiter.excerpt(name) + " on <" + container + ">");
         }
         if (name.isEmpty()) {
-            throw rules.error(line, "text '" + parser.getText().trim() + "' in <" + container + ">: "
+            throw rules.error(line, "text " + ParameterRules.quote(parser.getText().trim()) + " in <"
+                    + container + ">: "
                     + "parameters are child elements");
         }
         boolean original = PARAMS.equals(container);
         if (!NUMBERS.contains(name) && !OTHERS.contains(name) && !(original && name.equals("sonar"))
                 || original && name.equals("sonarUnit")) {
-            throw rules.error(line, "unknown element <" + name + "> in <" + container + ">");
+            throw rules.error(line, "unknown element <" + LogLimiter.excerpt(name) + "> in <" + container + ">");
         }
         Integer first = seen.putIfAbsent(name, line);
         if (first != null && !name.equals("sonarUnit")) {
-            throw rules.error(line, "<" + name + "> is given twice (first at line " + first + ")");
+            throw rules.error(line, "<" + LogLimiter.excerpt(name) + "> is given twice (first at line "
+                    + first + ")");
         }
         switch (name) {
             case "class" -> rules.robotClass(text(name, line));
@@ -255,8 +265,10 @@ public final class XmlParameterFileReader {
             int innerLine = line();
             parser.nextToken();
             throw isAttribute(inner)
-                    ? rules.error(line, "unknown attribute " + inner + " on <" + name + ">")
-                    : rules.error(innerLine, "unknown element <" + inner + "> in <" + name + ">");
+                    ? rules.error(line, "unknown attribute " + LogLimiter.excerpt(inner) + " on <"
+                            + LogLimiter.excerpt(name) + ">")
+                    : rules.error(innerLine, "unknown element <" + LogLimiter.excerpt(inner) + "> in <"
+                            + LogLimiter.excerpt(name) + ">");
         }
         String text = parser.hasToken(JsonToken.VALUE_STRING) ? parser.getText().trim() : "";
         if (text.isEmpty()) {
@@ -270,7 +282,8 @@ public final class XmlParameterFileReader {
         Map<String, String> found = new LinkedHashMap<>();
         if (!parser.hasToken(JsonToken.START_OBJECT)) {
             if (parser.hasToken(JsonToken.VALUE_STRING) && !parser.getText().isBlank()) {
-                throw rules.error(line, "<" + name + "> takes attributes, not text '" + parser.getText().trim() + "'");
+                throw rules.error(line, "<" + LogLimiter.excerpt(name) + "> takes attributes, not text "
+                        + ParameterRules.quote(parser.getText().trim()));
             }
             return found;
         }
@@ -283,12 +296,14 @@ public final class XmlParameterFileReader {
                     continue;
                 }
                 throw attribute.isEmpty()
-                        ? rules.error(attributeLine, "<" + name + "> takes attributes, not text '"
+                        ? rules.error(attributeLine, "<" + LogLimiter.excerpt(name) + "> takes attributes, not text '"
                                 + parser.getText().trim() + "'")
-                        : rules.error(attributeLine, "unknown element <" + attribute + "> in <" + name + ">");
+                        : rules.error(attributeLine, "unknown element <" + LogLimiter.excerpt(attribute)
+                                + "> in <" + LogLimiter.excerpt(name) + ">");
             }
             if (!allowed.contains(attribute)) {
-                throw rules.error(line, "unknown attribute " + attribute + " on <" + name + "> (known: "
+                throw rules.error(line, "unknown attribute " + LogLimiter.excerpt(attribute) + " on <"
+                        + LogLimiter.excerpt(name) + "> (known: "
                         + String.join(", ", allowed) + ")");
             }
             found.put(attribute, parser.getText().trim());
@@ -324,9 +339,10 @@ public final class XmlParameterFileReader {
         return new ParameterFileException(file, line, "malformed XML: " + firstLine(e.getOriginalMessage()), e);
     }
 
+    /** @return the parser's first line, escaped and cut after 200 characters: it may quote the file */
     private static String firstLine(String message) {
         String text = String.valueOf(message);
         int end = text.indexOf('\n');
-        return (end < 0 ? text : text.substring(0, end)).trim();
+        return robosim.protocol.RobotHello.printable((end < 0 ? text : text.substring(0, end)).trim(), 200);
     }
 }

@@ -15,6 +15,7 @@ import java.util.logging.Logger;
 import robosim.protocol.Bye;
 import robosim.protocol.FrameDecoder;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
@@ -25,6 +26,10 @@ import robosim.protocol.RobotHello;
  * written as the peer can take it. A peer that lets too much pile up is closed, so a slow or stuck
  * peer never blocks the run. A robot connection carries one robot, or, once it has said
  * {@link robosim.protocol.LinkHello}, is a shared link carrying the robots that said hello on it.
+ * Its refusals and closes are logged through a {@link LogLimiter} shared by all of a server's
+ * connections, one line per kind a second, since a peer can cause them as often as it connects;
+ * only the close of a robot connection that was admitted (with the run's secret) is logged whole,
+ * as it comes once for each admission, which is logged too.
  */
 final class Connection {
     private static final Logger LOG = Logger.getLogger(Connection.class.getName());
@@ -39,6 +44,7 @@ final class Connection {
     private final ArrayDeque<ByteBuffer> outgoing = new ArrayDeque<>();
     private final long maxQueuedBytes;
     private final String address;
+    private final LogLimiter log;
     private long queuedBytes;
     private String name;
     private boolean link;
@@ -50,9 +56,19 @@ final class Connection {
     private long lastReadNanos = acceptedNanos;
     private long lastWriteNanos = acceptedNanos;
 
+    /** A connection that logs through a limiter of its own (a test's lone connection). */
     Connection(Kind kind, SocketChannel channel, Selector selector, MessageCodec codec, int maxFrame,
                long maxQueuedBytes) throws IOException {
+        this(kind, channel, selector, codec, maxFrame, maxQueuedBytes, newLog());
+    }
+
+    /**
+     * @param log the limiter of the server's connections, from {@link #newLog()}
+     */
+    Connection(Kind kind, SocketChannel channel, Selector selector, MessageCodec codec, int maxFrame,
+               long maxQueuedBytes, LogLimiter log) throws IOException {
         this.kind = kind;
+        this.log = log;
         this.channel = channel;
         this.codec = codec;
         this.decoder = new FrameDecoder(codec, maxFrame);
@@ -63,16 +79,25 @@ final class Connection {
         this.key = channel.register(selector, SelectionKey.OP_READ, this);
     }
 
+    /** @return a limiter for the log lines of one server's connections */
+    static LogLimiter newLog() {
+        return new LogLimiter(LOG);
+    }
+
     /**
      * @return the robot's or viewer's name once it has said hello, the link's client, else its
      *         address; a name the peer chose is escaped, so that it cannot break a log line
      */
     String peer() {
         if (link) {
-            return "link of " + RobotHello.printable(name) + " at " + address;
+            return "link of " + LogLimiter.excerpt(name) + " at " + address;
         }
         String k = control ? "control client" : kind.name().toLowerCase();
-        return name != null ? k + " " + RobotHello.printable(name) : k + " at " + address;
+        if (name == null) {
+            return k + " at " + address;
+        }
+        // a robot's name was checked against the rule of names; a viewer's or client's was not
+        return k + " " + (kind == Kind.ROBOT ? RobotHello.printable(name) : LogLimiter.excerpt(name));
     }
 
     /**
@@ -117,6 +142,7 @@ final class Connection {
             return;
         }
         if (reason != null) {
+            // once for each admission of the robot on the link, as a robot connection's own close
             LOG.warning(() -> "closing robot " + robot + ": " + reason);
         }
         send(new Bye(reason != null ? reason : Bye.GOODBYE, robot));
@@ -253,7 +279,7 @@ final class Connection {
      * @param reason why
      */
     void refuse(String reason) {
-        LOG.warning(() -> "refusing " + peer() + ": " + reason);
+        log.warning("refused connections on the " + port() + " port", () -> "refusing " + peer() + ": " + reason);
         sendAndClose(new Bye(Bye.REFUSED + reason));
     }
 
@@ -297,8 +323,25 @@ final class Connection {
         if (closed) {
             return;
         }
-        LOG.warning(() -> "closing " + peer() + ": " + reason);
+        if (kind == Kind.ROBOT && greeted()) {
+            LOG.warning(() -> "closing " + peer() + ": " + reason);
+        } else {
+            log.warning("closed " + role(), () -> "closing " + peer() + ": " + reason);
+        }
         shut();
+    }
+
+    /** @return the port the connection came on, for a kind of log line */
+    private String port() {
+        return kind == Kind.ROBOT ? "robot" : "viewer";
+    }
+
+    /** @return what the peer is, plural, for a kind of log line: fixed words, never the peer's */
+    private String role() {
+        if (control) {
+            return "control connections";
+        }
+        return name != null ? port() + " connections" : "connections without a hello on the " + port() + " port";
     }
 
     /** Closes without a word: an orderly end. */

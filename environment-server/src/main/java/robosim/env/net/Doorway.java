@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.MessageCodec;
 
 /**
@@ -30,7 +31,10 @@ final class Doorway {
     private static final long CHECK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
     /** How long accepting pauses after it failed, so that a full file table does not spin the loop. */
     private static final long ACCEPT_PAUSE_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
-    private static final long LOG_PERIOD_NANOS = TimeUnit.SECONDS.toNanos(10);
+    /** The period of the warnings about accepting: one line of each kind in it, then the count. */
+    private static final long LOG_PERIOD_MS = 10_000;
+    private static final String ACCEPT_FAILURES = "accept failures";
+    private static final String TURNED_AWAY = "warnings about connections without a hello";
     /** How long a connection may be silent before it may be closed to make room for another. */
     private static final long SILENT_NANOS = TimeUnit.SECONDS.toNanos(1);
 
@@ -38,9 +42,9 @@ final class Doorway {
     private final MessageCodec codec;
     private final SessionRules rules;
     private final List<Connection> all = new CopyOnWriteArrayList<>();
-    private final RateLimitedLog acceptFailures = new RateLimitedLog(LOG, "accept failures", LOG_PERIOD_NANOS);
-    private final RateLimitedLog turnedAway = new RateLimitedLog(LOG, "warnings about connections without a hello",
-            LOG_PERIOD_NANOS);
+    private final LogLimiter warnings = new LogLimiter(LOG, LOG_PERIOD_MS);
+    /** The limiter of the log lines of every connection this doorway accepts. */
+    private final LogLimiter connectionLog = Connection.newLog();
     private Selector selector;
     private ServerSocketChannel robotChannel;
     private ServerSocketChannel viewerChannel;
@@ -109,7 +113,8 @@ final class Doorway {
         } catch (IOException e) {
             // most often the file table is full: stop accepting a moment instead of spinning on it
             long now = System.nanoTime();
-            acceptFailures.warn(now, () -> "accepting a " + kind.name().toLowerCase() + " connection failed: "
+            warnings.warning(ACCEPT_FAILURES, () -> "accepting a " + kind.name().toLowerCase()
+                    + " connection failed: "
                     + e.getMessage() + "; accepting pauses " + TimeUnit.NANOSECONDS.toMillis(ACCEPT_PAUSE_NANOS)
                     + " ms");
             acceptPaused = true;
@@ -123,9 +128,9 @@ final class Doorway {
         all.removeIf(Connection::isClosed);
         try {
             long limit = kind == Connection.Kind.ROBOT ? MAX_QUEUED_ROBOT : options.limits().viewerBudget();
-            all.add(new Connection(kind, ch, selector, codec, options.maxFrame(), limit));
+            all.add(new Connection(kind, ch, selector, codec, options.maxFrame(), limit, connectionLog));
         } catch (IOException e) {
-            acceptFailures.warn(System.nanoTime(), () -> "setting up a " + kind.name().toLowerCase()
+            warnings.warning(ACCEPT_FAILURES, () -> "setting up a " + kind.name().toLowerCase()
                     + " connection failed: " + e.getMessage());
             try {
                 ch.close();
@@ -139,7 +144,7 @@ final class Doorway {
             // the next connections wait in the listen backlog until these say hello
             pausedForPending = true;
             setAccepting(false);
-            turnedAway.warn(now, () -> pending() + " connections have not said hello yet, the most this"
+            warnings.warning(TURNED_AWAY, () -> pending() + " connections have not said hello yet, the most this"
                     + " Environment allows (--max-pending); new connections wait until some do");
         }
     }
@@ -166,7 +171,7 @@ final class Doorway {
                 return false;
             }
             Connection closing = oldest;
-            turnedAway.warn(now, () -> "closing a " + closing.kind.name().toLowerCase() + " connection from "
+            warnings.warning(TURNED_AWAY, () -> "closing a " + closing.kind.name().toLowerCase() + " connection from "
                     + closing.address() + " that said no hello for " + TimeUnit.NANOSECONDS.toMillis(now
                     - closing.acceptedNanos()) + " ms, to make room: " + max + " connections without a hello is the"
                     + " most this Environment allows (--max-pending)");
@@ -205,7 +210,8 @@ final class Doorway {
             }
             if (!c.greeted()) {
                 if (now - c.acceptedNanos() > helloNanos) {
-                    turnedAway.warn(now, () -> "closing a " + c.kind.name().toLowerCase() + " connection from "
+                    warnings.warning(TURNED_AWAY, () -> "closing a " + c.kind.name().toLowerCase()
+                            + " connection from "
                             + c.address() + ": it said no hello within " + limits.helloDeadlineMs() + " ms");
                     c.shut();
                 }
@@ -217,8 +223,8 @@ final class Doorway {
         if (acceptPaused || pausedForPending) {
             resumeAccepting(now);
         }
-        acceptFailures.flush(now);
-        turnedAway.flush(now);
+        warnings.flush();
+        connectionLog.flush();
         return nextCheck;
     }
 

@@ -7,6 +7,7 @@ import java.util.logging.Logger;
 import robosim.env.core.Simulation;
 import robosim.geometry.Pose2D;
 import robosim.protocol.Bye;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
 
@@ -25,11 +26,14 @@ final class RobotJoins {
     private final RobotAdmission admission;
     private final Departures departures;
     private final Refusals refusals;
+    private final LogLimiter limited;
     /** The first step each robot took part in since it was last welcomed. */
     private final Map<String, Long> firstSteps = new HashMap<>();
     private boolean worldChanged;
 
-    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures, Refusals refusals) {
+    RobotJoins(CurrentRun run, Access access, Limits limits, Departures departures, Refusals refusals,
+               LogLimiter limited) {
+        this.limited = limited;
         this.run = run;
         this.admission = new RobotAdmission(run, access, limits.maxRobots());
         this.departures = departures;
@@ -75,7 +79,10 @@ final class RobotJoins {
             refusal = started ? sameBody(hello) : useParameters(hello);
         }
         if (refusal != null) {
-            LOG.warning("refusing robot " + RobotHello.printable(hello.name()) + ": " + refusal);
+            String why = refusal;
+            limited.warning("refused robot hellos", () -> "refusing robot "
+                    + RobotHello.printable(hello.name()) + ": "
+                    + why);
             refusals.refused(RobotHello.printable(hello.name()), refusal);
             if (c.isLink()) {
                 c.send(new Bye(Bye.REFUSED + refusal, hello.name()));

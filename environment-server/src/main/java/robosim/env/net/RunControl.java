@@ -8,7 +8,7 @@ import robosim.env.core.Simulation;
 import robosim.env.world.World;
 import robosim.protocol.ControlReply;
 import robosim.protocol.ControlRequest;
-import robosim.protocol.RobotHello;
+import robosim.protocol.LogLimiter;
 
 /**
  * Run control, part of {@link SessionRules}: the control clients' pause, resume, step N, stop, pace,
@@ -49,6 +49,7 @@ final class RunControl {
     private final CurrentRun run;
     private final SessionRules rules;
     private final WorldLoader loader;
+    private final LogLimiter limited;
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
     private Switch switchTo;
     private boolean paused;
@@ -60,7 +61,8 @@ final class RunControl {
     private long baseNanos;
     private long baseStep;
 
-    RunControl(CurrentRun run, SessionRules rules, int maxRobots) {
+    RunControl(CurrentRun run, SessionRules rules, int maxRobots, LogLimiter limited) {
+        this.limited = limited;
         this.run = run;
         this.rules = rules;
         this.loader = new WorldLoader(run, maxRobots);
@@ -183,7 +185,7 @@ final class RunControl {
 
     private String apply(Pending p) {
         long k = sim().stepCount();
-        String who = "control client " + RobotHello.printable(p.from().name());
+        String who = "control client " + LogLimiter.excerpt(p.from().name());
         ControlOp op = p.op();
         if (op instanceof ControlOp.Pause) {
             reply(p, true, paused ? "already paused at step " + k : "paused after step " + k);
@@ -235,7 +237,8 @@ final class RunControl {
             reply(p, false, refusal + " (after step " + k + ")");
             return;
         }
-        LOG.info(() -> "control client " + RobotHello.printable(p.from().name()) + " moved robot " + m.robot()
+        limited.info("robots moved by control clients", () -> "control client " + LogLimiter.excerpt(p.from().name())
+                + " moved robot " + m.robot()
                 + " after step " + k);
         reply(p, true, String.format(Locale.ROOT, "robot %s moved to (%.0f, %.0f, %.0f) after step %d", m.robot(),
                 m.x(), m.y(), m.th(), k));
@@ -263,8 +266,8 @@ final class RunControl {
         p.from().send(new ControlReply(p.id(), ok, text));
     }
 
-    private static void refuse(Connection c, long id, String reason) {
-        LOG.info(() -> "refusing " + c.peer() + "'s control request: " + reason);
+    private void refuse(Connection c, long id, String reason) {
+        limited.info("refused control requests", () -> "refusing " + c.peer() + "'s control request: " + reason);
         c.send(new ControlReply(id, false, reason));
     }
 }

@@ -17,6 +17,7 @@ import robosim.protocol.FrameException;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
@@ -31,7 +32,8 @@ import robosim.protocol.Snapshot;
  * robot that breaks one is dropped alone while the link goes on. A viewer says hello and then only
  * listens; a control client says hello and may then change the run. When the run has a secret
  * ({@link Access}), every hello must present it, except a viewer's when anyone may watch. Anything
- * else closes that peer, with a log line naming it and the rule.
+ * else closes that peer, with a log line naming it and the rule. Lines that peers can repeat go
+ * through one {@link LogLimiter} for the server, one line per kind a second.
  */
 final class SessionRules {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
@@ -50,6 +52,8 @@ final class SessionRules {
     private final Departures departures = new Departures();
     private final LogForwarding log = new LogForwarding();
     private final Refusals refusals = new Refusals();
+    /** The limiter of the lines peers can repeat (refusals, refused requests), shared by the rules' parts. */
+    private final LogLimiter limited = new LogLimiter(LOG);
     /** The last step each robot answered in time, for control clients' status. */
     private final Map<String, Long> answered = new HashMap<>();
     private long openStep;
@@ -63,9 +67,9 @@ final class SessionRules {
     SessionRules(Simulation sim, Access access, Limits limits) {
         this.run = new CurrentRun(sim);
         this.access = access;
-        this.joins = new RobotJoins(run, access, limits, departures, refusals);
-        this.control = new RunControl(run, this, limits.maxRobots());
-        this.viewerPort = new ViewerPortRules(run, access, limits, control);
+        this.joins = new RobotJoins(run, access, limits, departures, refusals, limited);
+        this.control = new RunControl(run, this, limits.maxRobots(), limited);
+        this.viewerPort = new ViewerPortRules(run, access, limits, control, limited);
     }
 
     /** @return the simulation run now (a restart or load replaces it) */
@@ -258,7 +262,7 @@ final class SessionRules {
             requests(c, c.name(), req.step(), req.commands());
         } else if (m instanceof Bye bye) {
             LOG.info(() -> "robot " + c.name() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
-            departed(c.name(), Departure.Kind.LEFT, printable(bye.reason()));
+            departed(c.name(), Departure.Kind.LEFT, reported(bye.reason()));
             c.shut();
             drop(c.name(), null);
         } else {
@@ -279,13 +283,13 @@ final class SessionRules {
         } else if (m instanceof Bye bye && bye.robot() != null) {
             if (c.carries(bye.robot()) && robots.get(bye.robot()) == c) {
                 LOG.info(() -> "robot " + bye.robot() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
-                departed(bye.robot(), Departure.Kind.LEFT, printable(bye.reason()));
+                departed(bye.robot(), Departure.Kind.LEFT, reported(bye.reason()));
                 drop(bye.robot(), null);
             }
         } else if (m instanceof Bye bye) {
             LOG.info(() -> c.peer() + " left at step " + sim().stepCount() + ": " + printable(bye.reason()));
             for (String robot : c.robots()) {
-                departed(robot, Departure.Kind.LEFT, printable(bye.reason()));
+                departed(robot, Departure.Kind.LEFT, reported(bye.reason()));
                 drop(robot, null);
             }
             c.shut();
@@ -457,9 +461,14 @@ final class SessionRules {
         }
     }
 
-    /** @return text a peer chose, escaped for one log line (see {@link RobotHello#printable(String, int)}) */
-    static String printable(String text) {
+    /** @return text a peer chose, escaped and cut for the run report (see {@link RobotHello#printable(String, int)}) */
+    private static String reported(String text) {
         return RobotHello.printable(text, 300);
+    }
+
+    /** @return text a peer chose, as an escaped excerpt for one log line (see {@link LogLimiter#excerpt}) */
+    static String printable(String text) {
+        return LogLimiter.excerpt(text);
     }
 
     private static String typeOf(Message m) {

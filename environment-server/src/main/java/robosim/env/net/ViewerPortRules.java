@@ -11,9 +11,9 @@ import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
-import robosim.protocol.RobotHello;
 import robosim.protocol.ViewerHello;
 
 /**
@@ -31,8 +31,10 @@ final class ViewerPortRules {
     private final List<Connection> viewers = new ArrayList<>();
     private final List<Connection> controls = new ArrayList<>();
     private final RunControl control;
+    private final LogLimiter limited;
 
-    ViewerPortRules(CurrentRun run, Access access, Limits limits, RunControl control) {
+    ViewerPortRules(CurrentRun run, Access access, Limits limits, RunControl control, LogLimiter limited) {
+        this.limited = limited;
         this.run = run;
         this.control = control;
         this.access = access;
@@ -102,7 +104,8 @@ final class ViewerPortRules {
         } else if (c.greeted() && !c.isControl() && (m instanceof CommsUpdate || m instanceof ControlRequest)) {
             c.sendAndClose(new Bye(Bye.REFUSED + "a viewer cannot change the run; a control client that presents the"
                     + " run secret can (robosim comms, robosim control)"));
-            LOG.warning(() -> "closing " + c.peer() + ": it sent " + typeOf(m) + "; a viewer cannot change the run");
+            limited.warning("viewers that tried to change the run", () -> "closing " + c.peer() + ": it sent "
+                    + typeOf(m) + "; a viewer cannot change the run");
         } else if (c.isControl()) {
             c.close("sent " + typeOf(m) + "; a control client sends controlHello once, then only commsUpdate and"
                     + " controlRequest");
@@ -115,7 +118,8 @@ final class ViewerPortRules {
 
     private void viewerHello(Connection c, ViewerHello hello) {
         String name = hello.name() != null ? hello.name() : "(unnamed)";
-        String refusal = access.publicView() ? null : access.refusal("viewer " + RobotHello.printable(name), hello.token());
+        String refusal = access.publicView() ? null
+                : access.refusal("viewer " + LogLimiter.excerpt(name), hello.token());
         if (refusal == null) {
             viewers.removeIf(Connection::isClosed);
             if (viewers.size() >= limits.maxViewers()) {
@@ -132,12 +136,13 @@ final class ViewerPortRules {
         c.send(sim().description());
         // the viewer has seen no drawing yet: it gets them all, not only the last step's changes
         c.send(sim().snapshot().withDrawings(sim().drawings()));
-        LOG.info(() -> c.peer() + " attached at step " + sim().stepCount());
+        // anyone may attach when anyone may watch, as often as they like
+        limited.info("viewers attached", () -> c.peer() + " attached at step " + sim().stepCount());
     }
 
     private void controlHello(Connection c, ControlHello hello) {
         String name = hello.name() != null ? hello.name() : "(unnamed)";
-        String refusal = access.refusal("control client " + RobotHello.printable(name), hello.token());
+        String refusal = access.refusal("control client " + LogLimiter.excerpt(name), hello.token());
         if (refusal == null) {
             controls.removeIf(Connection::isClosed);
             if (controls.size() >= limits.maxControls()) {
@@ -165,11 +170,13 @@ final class ViewerPortRules {
                     u.lossProbability() != null ? u.lossProbability() : now.lossProbability(),
                     u.maxMessageBytes() != null ? u.maxMessageBytes() : now.maxMessageBytes());
             sim().setCommsSettings(next);
-            LOG.info(() -> c.peer() + " changed the comms settings at step " + sim().stepCount() + " to " + next.describe());
+            limited.info("changes of the comms settings", () -> c.peer() + " changed the comms settings at step "
+                    + sim().stepCount() + " to " + next.describe());
             c.send(new CommsUpdate(next.maxRange(), next.wallsBlock(), next.latencySteps(), next.lossProbability(),
                     next.maxMessageBytes()));
         } catch (IllegalArgumentException e) {
-            LOG.warning(() -> "closing " + c.peer() + ": it sent comms settings that break a rule: " + e.getMessage());
+            limited.warning("refused comms settings", () -> "closing " + c.peer()
+                    + ": it sent comms settings that break a rule: " + e.getMessage());
             c.sendAndClose(new Bye(Bye.REFUSED + "the comms settings break a rule: " + e.getMessage()));
         }
     }

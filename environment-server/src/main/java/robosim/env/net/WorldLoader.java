@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
-import robosim.protocol.RobotHello;
+import robosim.protocol.LogLimiter;
 
 /**
  * Reads the world a control client's {@code load} names, in the Environment's process, before
@@ -39,7 +39,7 @@ final class WorldLoader {
         try {
             file = dir.resolve(text).normalize();
         } catch (InvalidPathException e) {
-            throw new IllegalArgumentException("load: '" + RobotHello.printable(text, 200) + "' is not a path");
+            throw new IllegalArgumentException("load: '" + LogLimiter.excerpt(text) + "' is not a path");
         }
         // checked before the file is looked at, so that no client learns what exists outside
         if (!file.startsWith(dir)) {
@@ -49,7 +49,7 @@ final class WorldLoader {
         try {
             real = file.toRealPath();
         } catch (IOException e) {
-            throw new IllegalArgumentException("load: no world file " + RobotHello.printable(text, 200) + " in " + dir);
+            throw new IllegalArgumentException("load: no world file " + LogLimiter.excerpt(text) + " in " + dir);
         }
         if (!real.startsWith(realDirectory(dir))) {
             throw outside(text, dir);
@@ -68,7 +68,7 @@ final class WorldLoader {
     }
 
     private static IllegalArgumentException outside(String text, Path dir) {
-        return new IllegalArgumentException("load: " + RobotHello.printable(text, 200) + " is outside " + dir
+        return new IllegalArgumentException("load: " + LogLimiter.excerpt(text) + " is outside " + dir
                 + ", the directory of the world this Environment was started with; load reads world files there only");
     }
 

@@ -7,11 +7,16 @@ import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import java.util.logging.Logger;
 
-/** Keeps the warnings and info lines the server's loggers publish during a test. */
+/**
+ * Keeps the warnings and info lines the server's loggers publish during a test. The count lines of
+ * a {@link robosim.protocol.LogLimiter} are kept apart ({@link #counts()}): a limiter of an earlier
+ * test may log its count during this one.
+ */
 final class LogLines extends Handler implements AutoCloseable {
     private final Logger logger = Logger.getLogger("robosim.env.net");
     private final List<String> warnings = new ArrayList<>();
     private final List<String> infos = new ArrayList<>();
+    private final List<String> counts = new ArrayList<>();
 
     LogLines() {
         logger.addHandler(this);
@@ -19,7 +24,9 @@ final class LogLines extends Handler implements AutoCloseable {
 
     @Override
     public synchronized void publish(LogRecord r) {
-        if (r.getLevel().intValue() >= Level.WARNING.intValue()) {
+        if (r.getMessage().endsWith(", not logged one by one")) {
+            counts.add(r.getMessage());
+        } else if (r.getLevel().intValue() >= Level.WARNING.intValue()) {
             warnings.add(r.getMessage());
         } else if (r.getLevel() == Level.INFO) {
             infos.add(r.getMessage());
@@ -28,6 +35,29 @@ final class LogLines extends Handler implements AutoCloseable {
 
     synchronized List<String> infos() {
         return new ArrayList<>(infos);
+    }
+
+    /** @return the count lines of rate-limited kinds, in order */
+    synchronized List<String> counts() {
+        return new ArrayList<>(counts);
+    }
+
+    /**
+     * Waits for a count line that starts so.
+     *
+     * @return it
+     */
+    String awaitCount(String start) throws InterruptedException {
+        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
+        while (System.nanoTime() < deadline) {
+            for (String line : counts()) {
+                if (line.startsWith(start)) {
+                    return line;
+                }
+            }
+            Thread.sleep(20);
+        }
+        throw new AssertionError("no count line '" + start + "...' within 10 s: " + counts());
     }
 
     synchronized List<String> warnings() {

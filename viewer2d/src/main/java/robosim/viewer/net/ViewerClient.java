@@ -13,6 +13,7 @@ import robosim.protocol.Bye;
 import robosim.protocol.FrameException;
 import robosim.protocol.FrameReader;
 import robosim.protocol.FrameWriter;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
@@ -39,6 +40,8 @@ import robosim.protocol.recording.SnapshotListener;
  */
 public final class ViewerClient {
     private static final Logger LOG = Logger.getLogger(ViewerClient.class.getName());
+    /** The line of a world received, which an Environment sends again as robots join: one a second. */
+    private final LogLimiter worlds = new LogLimiter(LOG);
     /** How long to wait before connecting again while nothing listens, ms. */
     static final long RETRY_MS = 200;
 
@@ -232,14 +235,15 @@ public final class ViewerClient {
 
         private void accept(WorldDescription description) throws ViewerException {
             world = description.name();
-            LOG.info(() -> "world '" + description.name() + "' from " + options.peer() + ": " + description.width()
+            worlds.info("worlds received", () -> "world '" + LogLimiter.excerpt(description.name()) + "' from "
+                    + options.peer() + ": " + description.width()
                     + " x " + description.height() + " mm, " + description.obstacles().size() + " obstacles, "
                     + description.robots().size() + " robots");
             for (SnapshotListener l : listeners) {
                 try {
                     l.world(description);
                 } catch (IOException | RuntimeException e) {
-                    throw fail("sent world '" + description.name() + "', which a listener cannot take: "
+                    throw fail("sent world '" + LogLimiter.excerpt(description.name()) + "', which a listener cannot take: "
                             + e.getMessage(), e);
                 }
             }

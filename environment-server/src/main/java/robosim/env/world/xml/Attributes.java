@@ -3,14 +3,18 @@ package robosim.env.world.xml;
 import java.nio.file.Path;
 import java.util.regex.Pattern;
 import robosim.env.world.World;
+import robosim.protocol.LogLimiter;
 
 /**
  * Checks and converts attribute text for one world file, reporting each broken rule with the
- * file, the element's line, the attribute and the value.
+ * file, the element's line, the attribute and the value, the value quoted as an excerpt
+ * ({@link #quote(String)}) so that no file can fill a terminal or write to it.
  */
 final class Attributes {
     /** The largest number a world file may hold either way: 1000 km in mm, ten times the largest world. */
     static final double MAX_MAGNITUDE = 1e9;
+    /** The longest name a world may have. */
+    static final int MAX_NAME = 200;
 
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
 
@@ -25,8 +29,29 @@ final class Attributes {
         return file;
     }
 
+    /**
+     * @param text text from the file, or null
+     * @return it as an error quotes it: in single quotes, escaped and cut short (see {@link LogLimiter#excerpt})
+     */
+    static String quote(String text) {
+        return "'" + LogLimiter.excerpt(text) + "'";
+    }
+
     WorldFileException error(Element element, String rule) {
         return new WorldFileException(file, element.line(), rule);
+    }
+
+    /**
+     * @return the value as a name shown in logs and viewers: trimmed, present, at most
+     *         {@link #MAX_NAME} characters and none a control character
+     */
+    String name(Element element, String attribute, String value) {
+        String text = text(element, attribute, value);
+        if (text.length() > MAX_NAME || text.chars().anyMatch(Character::isISOControl)) {
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + quote(text)
+                    + " but a name is at most " + MAX_NAME + " characters, none of them a control character");
+        }
+        return text;
     }
 
     /** @return the value, trimmed; it must be present and not blank */
@@ -48,12 +73,13 @@ final class Attributes {
     double number(Element element, String attribute, String value) {
         String text = text(element, attribute, value);
         if (!NUMBER.matcher(text).matches() || !Double.isFinite(Double.parseDouble(text))) {
-            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is '" + text
-                    + "', not a number");
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + quote(text)
+                    + ", not a number");
         }
         double v = Double.parseDouble(text);
         if (Math.abs(v) > MAX_MAGNITUDE) {
-            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + text
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is "
+                    + LogLimiter.excerpt(text)
                     + " but must be from " + format(-MAX_MAGNITUDE) + " to " + format(MAX_MAGNITUDE)
                     + ": no number in a world file is larger");
         }
@@ -167,8 +193,8 @@ final class Attributes {
         }
         String text = value.trim();
         if (!text.equals("true") && !text.equals("false")) {
-            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is '" + text
-                    + "' but must be true or false");
+            throw error(element, "attribute " + attribute + " on <" + element.tag() + "> is " + quote(text)
+                    + " but must be true or false");
         }
         return Boolean.parseBoolean(text);
     }

@@ -16,11 +16,15 @@ import java.nio.file.Path;
 import javax.xml.stream.Location;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
+import robosim.protocol.LogLimiter;
+import robosim.protocol.RobotHello;
 
 /** Reads a world file into its {@link WorldElement}, reporting XML-level errors with their line. */
 final class ElementReader {
     private static final String ROOT = "world";
     private static final XmlMapper MAPPER = mapper();
+    /** The characters of a parser's message kept: the rule it names, with what it quotes of the file. */
+    private static final int PARSER_MESSAGE_CHARS = 200;
 
     private ElementReader() {
     }
@@ -50,7 +54,8 @@ final class ElementReader {
              FromXmlParser p = (FromXmlParser) MAPPER.getFactory().createParser(in)) {
             XMLStreamReader root = p.getStaxReader();
             if (!root.isStartElement() || !ROOT.equals(root.getLocalName())) {
-                String found = root.isStartElement() ? "<" + root.getLocalName() + ">" : "missing";
+                String found = root.isStartElement() ? "<" + LogLimiter.excerpt(root.getLocalName())
+                        + ">" : "missing";
                 throw new WorldFileException(file, root.getLocation().getLineNumber(),
                         "the root element is " + found + ", expected <" + ROOT + ">");
             }
@@ -81,9 +86,10 @@ final class ElementReader {
         return new WorldFileException(file, at == null ? 0 : at.getLineNr(), firstLine(e.getOriginalMessage()), e);
     }
 
+    /** @return the parser's first line, escaped and cut short: it may quote the file */
     private static String firstLine(String message) {
         String text = String.valueOf(message);
         int end = text.indexOf('\n');
-        return (end < 0 ? text : text.substring(0, end)).trim();
+        return RobotHello.printable((end < 0 ? text : text.substring(0, end)).trim(), PARSER_MESSAGE_CHARS);
     }
 }

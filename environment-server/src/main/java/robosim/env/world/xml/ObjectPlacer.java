@@ -47,7 +47,7 @@ final class ObjectPlacer {
     WorldObject place(ObjectElement e) {
         String type = e.type == null ? WorldObject.PUCK : attributes.text(e, "type", e.type);
         if (!WorldObject.PUCK.equals(type)) {
-            throw attributes.error(e, "type '" + type + "' is not a type of object: the only one is '"
+            throw attributes.error(e, "type " + Attributes.quote(type) + " is not a type of object: the only one is '"
                     + WorldObject.PUCK + "'");
         }
         double x = attributes.number(e, "x", e.x);
@@ -59,7 +59,8 @@ final class ObjectPlacer {
                     + " mm");
         }
         if (e.color != null && !COLOR.matcher(e.color).matches()) {
-            throw attributes.error(e, "'" + e.color + "' was supplied for color: a colour is a name of letters "
+            throw attributes.error(e, Attributes.quote(e.color)
+                    + " was supplied for color: a colour is a name of letters "
                     + "(red) or #rrggbb");
         }
         String where = type + " at (" + Attributes.format(x) + ", " + Attributes.format(y) + ")";

@@ -75,8 +75,9 @@ final class ObstacleFactory {
         try {
             return Colors.format(Colors.parse(value));
         } catch (IllegalArgumentException bad) {
-            throw attributes.error(e, "attribute color on <" + e.tag() + "> is '" + value.trim()
-                    + "', not a colour: give #rrggbb or one of " + String.join(", ", new java.util.TreeSet<>(Colors.NAMES.keySet())));
+            throw attributes.error(e, "attribute color on <" + e.tag() + "> is " + Attributes.quote(value.trim())
+                    + ", not a colour: give #rrggbb or one of "
+                    + String.join(", ", new java.util.TreeSet<>(Colors.NAMES.keySet())));
         }
     }
 

@@ -2,7 +2,6 @@ package robosim.env.world.xml;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
 
 /**
@@ -28,7 +27,7 @@ final class PropertiesReader {
             if (child instanceof PropertyElement p) {
                 String name = attributes.text(p, "name", p.name);
                 if (!Welcome.PROPERTY_NAME.matcher(name).matches()) {
-                    throw attributes.error(p, "attribute name on <property> is " + RobotHello.quoted(name) + " but "
+                    throw attributes.error(p, "attribute name on <property> is " + Attributes.quote(name) + " but "
                             + Welcome.PROPERTY_NAME_RULE);
                 }
                 if (p.value == null) {
@@ -41,7 +40,7 @@ final class PropertiesReader {
                 Integer first = lines.putIfAbsent(name, p.line());
                 if (first != null) {
                     throw attributes.error(p, "property " + name + " is given twice (value "
-                            + RobotHello.quoted(p.value) + "): a world gives each property once; the first is at line "
+                            + Attributes.quote(p.value) + "): a world gives each property once; the first is at line "
                             + first);
                 }
                 if (properties.size() == Welcome.MAX_PROPERTIES) {

@@ -22,6 +22,7 @@ import robosim.env.world.Obstacle;
 import robosim.env.world.RobotRequest;
 import robosim.params.RobotParameterFiles;
 import robosim.env.world.RobotSpec;
+import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotHello;
 
 /**
@@ -77,6 +78,7 @@ final class RobotPlacer {
     /** @return the robot, checked and placed */
     RobotSpec place(RobotElement e) {
         String name = attributes.text(e, "name", e.name);
+        checkName(e, name);
         String type = attributes.text(e, "type", e.type);
         double x = attributes.number(e, "x", e.x);
         double y = attributes.number(e, "y", e.y);
@@ -98,9 +100,9 @@ final class RobotPlacer {
         if (shipped.isPresent()) {
             return shipped.get().toAbsolutePath().normalize();
         }
-        throw attributes.error(e, "robot '" + name + "': parameter file " + params + " does not exist (looked for "
-                + relative + ") and is no shipped name: params is a path relative to the world file's directory,"
-                + " or the name of a file in " + RobotParameterFiles.shippedFolder().toAbsolutePath().normalize()
+        throw attributes.error(e, about(name, params) + " does not exist (looked for " + shown(relative, params)
+                + ") and is no shipped name: params is a path relative to the world file's directory, or the name"
+                + " of a file in " + RobotParameterFiles.shippedFolder().toAbsolutePath().normalize()
                 + " (" + String.join(", ", RobotParameterFiles.shippedNames()) + ")");
     }
 
@@ -128,9 +130,7 @@ final class RobotPlacer {
 
     private RobotSpec place(Element e, String name, String type, double x, double y, double th, String params,
                             Path file) {
-        if (!RobotHello.validName(name)) {
-            throw attributes.error(e, RobotHello.NAME_RULE + "; " + RobotHello.quoted(name) + " is not");
-        }
+        checkName(e, name);
         for (RobotSpec other : placed) {
             if (other.name().equals(name)) {
                 throw attributes.error(e, "duplicate robot name '" + name + "': already used by the robot at line "
@@ -138,7 +138,8 @@ final class RobotPlacer {
             }
         }
         if (!TYPES.contains(type)) {
-            throw attributes.error(e, "robot '" + name + "' has unknown type '" + type + "'; known types: "
+            throw attributes.error(e, "robot '" + name + "' has unknown type " + Attributes.quote(type)
+                    + "; known types: "
                     + String.join(", ", TYPES));
         }
         RobotSpec robot = new RobotSpec(name, type, x, y, th, file, parameters(e, name, params, file), e.line());
@@ -148,32 +149,53 @@ final class RobotPlacer {
         return robot;
     }
 
+    /** @return how an error names a robot's parameter file: its {@code params} as an excerpt */
+    private static String about(String name, String params) {
+        return "robot '" + name + "': parameter file " + LogLimiter.excerpt(params);
+    }
+
+    /**
+     * @return a path made of a {@code params} attribute as an error shows it: escaped, and for a
+     *         {@code params} too long to quote whole, the world file's directory and its excerpt
+     */
+    private String shown(Path p, String params) {
+        return LogLimiter.excerpt(params).equals(params) ? RobotHello.printable(p.toString(), 300)
+                : RobotHello.printable(attributes.file().toAbsolutePath().getParent().toString(), 300) + "/"
+                + LogLimiter.excerpt(params);
+    }
+
+    private void checkName(Element e, String name) {
+        if (!RobotHello.validName(name)) {
+            throw attributes.error(e, RobotHello.NAME_RULE + "; " + Attributes.quote(name) + " is not");
+        }
+    }
+
     private RobotParameters parameters(Element e, String name, String params, Path file) {
         RobotParameters known = parameterCache.get(file);
         if (known != null) {
             return known;
         }
         if (!Files.exists(file)) {
-            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " does not exist (looked for "
-                    + file + ")");
+            throw attributes.error(e, about(name, params) + " does not exist (looked for "
+                    + shown(file, params) + ")");
         }
         if (!Files.isRegularFile(file) || !Files.isReadable(file)) {
-            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " cannot be read ("
-                    + file + ")");
+            throw attributes.error(e, about(name, params) + " cannot be read ("
+                    + shown(file, params) + ")");
         }
         try {
             RobotParameters read = RobotParametersReader.read(file);
             String bad = read.violation();
             if (bad != null) {
-                throw attributes.error(e, "robot '" + name + "': parameter file " + params + " breaks a bound: " + bad);
+                throw attributes.error(e, about(name, params) + " breaks a bound: " + bad);
             }
             parameterCache.put(file, read);
             return read;
         } catch (ParameterFileException ex) {
             throw attributes.error(e, "robot '" + name + "': broken parameter file: " + ex.getMessage());
         } catch (UncheckedIOException ex) {
-            throw attributes.error(e, "robot '" + name + "': parameter file " + params + " cannot be read ("
-                    + ex.getCause().getMessage() + ")");
+            throw attributes.error(e, about(name, params) + " cannot be read ("
+                    + LogLimiter.excerpt(ex.getCause().getMessage()) + ")");
         }
     }
 

@@ -55,8 +55,8 @@ final class RunRulesReader {
         }
         String word = root.motors.trim();
         if (!word.equals("enabled") && !word.equals("disabled")) {
-            throw attributes.error(root, "attribute motors on <world> is '" + word
-                    + "' but must be enabled or disabled (the motors as a Pioneer's program connects)");
+            throw attributes.error(root, "attribute motors on <world> is " + Attributes.quote(word)
+                    + " but must be enabled or disabled (the motors as a Pioneer's program connects)");
         }
         return word.equals("enabled");
     }
@@ -81,8 +81,8 @@ final class RunRulesReader {
             }
         }
         if (when == null) {
-            throw attributes.error(e, "attribute when on <end> is '" + word
-                    + "'; it is one of all-left, any-left, steps, gold");
+            throw attributes.error(e, "attribute when on <end> is " + Attributes.quote(word)
+                    + "; it is one of all-left, any-left, steps, gold");
         }
         if (when == EndRule.When.STEPS && e.steps == null) {
             throw attributes.error(e, "missing required attribute steps on <end when=\"steps\">");

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.DeserializationContext;
 import com.fasterxml.jackson.databind.JsonDeserializer;
 import com.fasterxml.jackson.databind.deser.DeserializationProblemHandler;
 import java.io.IOException;
+import robosim.protocol.LogLimiter;
 
 /** Turns a field Jackson does not know into an unknown element, attribute or stray text. */
 final class UnknownNodeHandler extends DeserializationProblemHandler {
@@ -20,8 +21,8 @@ final class UnknownNodeHandler extends DeserializationProblemHandler {
                     + (tag.equals("world") ? " and child elements" : ""));
         }
         if (XmlNodes.isAttribute(p)) {
-            throw new XmlProblem(line, "unknown attribute " + name + " on <" + tag + ">");
+            throw new XmlProblem(line, "unknown attribute " + LogLimiter.excerpt(name) + " on <" + tag + ">");
         }
-        throw new XmlProblem(line, "unknown element <" + name + "> in <" + tag + ">");
+        throw new XmlProblem(line, "unknown element <" + LogLimiter.excerpt(name) + "> in <" + tag + ">");
     }
 }

@@ -58,7 +58,7 @@ public final class WorldReader {
         }
         WorldElement root = ElementReader.read(file);
         Attributes attributes = new Attributes(file);
-        String name = attributes.text(root, "name", root.name);
+        String name = attributes.name(root, "name", root.name);
         MapElement mapElement = mapElement(attributes, root);
         MapGeometry map = mapElement == null ? null : MapWorlds.geometry(
                 file.toAbsolutePath().getParent().resolve(attributes.text(mapElement, "file", mapElement.file)),
