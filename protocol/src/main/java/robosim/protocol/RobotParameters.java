@@ -70,6 +70,12 @@ public record RobotParameters(
 
     /** The longest body size or mounting offset the Environment accepts, mm. */
     public static final double MAX_SIZE = 5000;
+    /**
+     * The smallest body and sensor range, mm: a robot's radius, width and length (front and rear
+     * together), and a sensor's range when it has one. Smaller is no robot a sensor or a collision
+     * could tell from a point, and only invites degenerate geometry.
+     */
+    public static final double MIN_SIZE = 1;
     /** The fastest translational speed the Environment accepts, mm/s. */
     public static final double MAX_SPEED = 10_000;
     /** The fastest rotational speed the Environment accepts, degrees/s. */
@@ -85,11 +91,13 @@ public record RobotParameters(
 
     /**
      * Checks the values against physical bounds, as the Environment does with every robot's hello
-     * before it simulates the robot: every number finite; the body's radius and width above 0, its
-     * lengths 0 or more, all at most {@value #MAX_SIZE} mm; speeds above 0, at most
+     * before it simulates the robot: every number finite; the body's radius and width at least
+     * {@value #MIN_SIZE} mm, its lengths 0 or more (a rectangle's front and rear together at least
+     * {@value #MIN_SIZE} mm), all at most {@value #MAX_SIZE} mm; speeds above 0, at most
      * {@value #MAX_SPEED} mm/s and {@value #MAX_ROTATION} °/s; accelerations and decelerations 0
      * or more and at most {@value #MAX_ACCELERATION}; {@code diffConvFactor} above 0 and at most 1;
-     * sensor ranges 0 or more (the laser's above 0) and at most {@value #MAX_RANGE} mm; at most
+     * sensor ranges 0 (the sonar's only: none) or from {@value #MIN_SIZE} mm, and at most
+     * {@value #MAX_RANGE} mm; at most
      * {@value #MAX_SONARS} sonars, each numbered by its place, and every mounting offset within
      * {@value #MAX_SIZE} mm and heading within ±360°; a known shape; names of at most
      * {@value #MAX_NAME} characters.
@@ -100,10 +108,11 @@ public record RobotParameters(
     public String violation() {
         String v = firstOf(
                 name("robotClass", robotClass), name("subclass", subclass),
-                within("robotRadius", robotRadius, false, MAX_SIZE, "mm"),
-                within("robotWidth", robotWidth, false, MAX_SIZE, "mm"),
+                size("robotRadius", robotRadius, false),
+                size("robotWidth", robotWidth, false),
                 within("robotLengthFront", robotLengthFront, true, MAX_SIZE, "mm"),
                 within("robotLengthRear", robotLengthRear, true, MAX_SIZE, "mm"),
+                length(),
                 within("maxVelocity", maxVelocity, false, MAX_SPEED, "mm/s"),
                 within("maxRVelocity", maxRVelocity, false, MAX_ROTATION, "degrees/s"),
                 within("transAccel", transAccel, true, MAX_ACCELERATION, "mm/s²"),
@@ -111,9 +120,9 @@ public record RobotParameters(
                 within("rotAccel", rotAccel, true, MAX_ACCELERATION, "degrees/s²"),
                 within("rotDecel", rotDecel, true, MAX_ACCELERATION, "degrees/s²"),
                 within("diffConvFactor", diffConvFactor, false, 1, ""),
-                within("sonarMaxRange", sonarMaxRange, true, MAX_RANGE, "mm"),
+                range("sonarMaxRange", sonarMaxRange, true),
                 offset("laserX", laserX), offset("laserY", laserY), heading("laserTh", laserTh),
-                within("laserMaxRange", laserMaxRange, false, MAX_RANGE, "mm"));
+                range("laserMaxRange", laserMaxRange, false));
         if (v != null) {
             return v;
         }
@@ -149,6 +158,35 @@ public record RobotParameters(
         if (!Double.isFinite(value) || value < 0 || value == 0 && !zeroAllowed || value > max) {
             return value + " was supplied for " + field + ": it must be a finite number " + (zeroAllowed ? "from 0" : "above 0")
                     + " to " + max + u;
+        }
+        return null;
+    }
+
+    /** A body's size: at least {@value #MIN_SIZE} mm and at most {@value #MAX_SIZE} mm. */
+    private static String size(String field, double value, boolean zeroAllowed) {
+        return atLeast(field, value, zeroAllowed, MAX_SIZE);
+    }
+
+    /** A sensor's range: 0 (none) where allowed, else at least {@value #MIN_SIZE} mm, at most {@value #MAX_RANGE} mm. */
+    private static String range(String field, double value, boolean zeroAllowed) {
+        return atLeast(field, value, zeroAllowed, MAX_RANGE);
+    }
+
+    private static String atLeast(String field, double value, boolean zeroAllowed, double max) {
+        boolean none = value == 0 && zeroAllowed;
+        if (!Double.isFinite(value) || !none && (value < MIN_SIZE || value > max)) {
+            return value + " was supplied for " + field + ": it must be " + (zeroAllowed ? "0 or " : "") + "from "
+                    + MIN_SIZE + " to " + max + " mm";
+        }
+        return null;
+    }
+
+    /** A rectangular body is at least {@value #MIN_SIZE} mm long, front and rear together. */
+    private String length() {
+        double length = robotLengthFront + robotLengthRear;
+        if (RECTANGLE.equals(shape) && Double.isFinite(length) && length < MIN_SIZE) {
+            return length + " was supplied for robotLengthFront + robotLengthRear: a rectangular body is at least "
+                    + MIN_SIZE + " mm long";
         }
         return null;
     }

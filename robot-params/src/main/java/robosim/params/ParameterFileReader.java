@@ -43,8 +43,11 @@ public final class ParameterFileReader {
 
     /** The longest {@code SonarCycle}, ms (the Environment's bound). */
     public static final int MAX_SONAR_CYCLE_MS = 10_000;
-    /** The longest content a line may have before its comment: ARIA's own lines hold a few dozen characters. */
-    static final int MAX_LINE_CHARS = 200;
+    /**
+     * The longest content a line may have before its comment: ARIA's own lines hold a few dozen
+     * characters, and ARIA reads at most 10 000 of a line.
+     */
+    static final int MAX_LINE_CHARS = 4000;
 
     private ParameterFileReader() {
     }
