@@ -92,17 +92,19 @@ public final class PioneerFloodBench {
             run.start();
             ServedRobot b0 = new ServedRobot("b0", "pioneer", sim.parameters("b0"),
                     RobotParameterFiles.conversionFactors(robotFile.toString()), sim.world().stepMs());
-            try (PioneerPorts ports = PioneerPorts.open(List.of(b0), new PioneerPortOptions("127.0.0.1", 0, false,
-                    PioneerPortOptions.DEFAULT_WATCHDOG_MS, false, HardwareOptions.defaults()), "127.0.0.1",
-                    server.robotPort(), null, code -> { })) {
-                clients.add(StepRateBench.clientJvm(server.robotPort(), new BenchRobots.Share(1, robots - 1),
-                        BenchSensors.SONAR, robotFile, dir.resolve("client-flood.log"), 0, 0));
-                return measure(robots, seconds, sim, ports.portOf("b0"));
+            try {
+                try (PioneerPorts ports = PioneerPorts.open(List.of(b0), new PioneerPortOptions("127.0.0.1", 0, false,
+                        PioneerPortOptions.DEFAULT_WATCHDOG_MS, false, HardwareOptions.defaults()), "127.0.0.1",
+                        server.robotPort(), null, code -> { })) {
+                    clients.add(StepRateBench.clientJvm(server.robotPort(), new BenchRobots.Share(1, robots - 1),
+                            BenchSensors.SONAR, robotFile, dir.resolve("client-flood.log"), 0, 0));
+                    return measure(robots, seconds, sim, ports.portOf("b0"));
+                }
             } finally {
-                server.close();
+                // every robot leaves (the port's robot as the port closes), so the run ends by itself
+                StepRateBench.stop(clients);
+                run.join(WAIT_MS);
             }
-        } finally {
-            StepRateBench.stop(clients);
         }
     }
 
