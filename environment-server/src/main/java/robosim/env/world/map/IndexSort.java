@@ -1,11 +1,22 @@
 package robosim.env.world.map;
 
 /**
- * Sorts point indices by one coordinate, then the other, on primitive arrays: a scanned map's 10^5
- * points sort in a few milliseconds even before the JIT has compiled anything, which a boxed
- * comparator sort does not.
+ * Sorts item indices by one number of the items, then another, on primitive arrays: a scanned
+ * map's 10^5 points sort in a few milliseconds even before the JIT has compiled anything, which a
+ * boxed comparator sort does not.
  */
 final class IndexSort {
+    /** Numbers of items, by item and column. */
+    @FunctionalInterface
+    interface Table {
+        /**
+         * @param item   an item
+         * @param column which of its numbers
+         * @return that number
+         */
+        double at(int item, int column);
+    }
+
     private IndexSort() {
     }
 
@@ -17,6 +28,18 @@ final class IndexSort {
      * @param major 0 to sort by x first, 1 by y first
      */
     static void sort(int[] idx, double[] xy, int major) {
+        sort(idx, (i, k) -> xy[2 * i + k], major, 1 - major);
+    }
+
+    /**
+     * Sorts {@code idx} in place, stably, by column {@code first} of the table, then column {@code second}.
+     *
+     * @param idx    item indices
+     * @param table  the items' numbers
+     * @param first  the column sorted by
+     * @param second the column that breaks ties
+     */
+    static void sort(int[] idx, Table table, int first, int second) {
         int[] buffer = new int[idx.length];
         int[] from = idx;
         int[] to = buffer;
@@ -24,7 +47,7 @@ final class IndexSort {
             for (int lo = 0; lo < idx.length; lo += 2 * width) {
                 int mid = Math.min(lo + width, idx.length);
                 int hi = Math.min(lo + 2 * width, idx.length);
-                merge(from, to, lo, mid, hi, xy, major);
+                merge(from, to, lo, mid, hi, table, first, second);
             }
             int[] t = from;
             from = to;
@@ -35,11 +58,11 @@ final class IndexSort {
         }
     }
 
-    private static void merge(int[] from, int[] to, int lo, int mid, int hi, double[] xy, int major) {
+    private static void merge(int[] from, int[] to, int lo, int mid, int hi, Table table, int first, int second) {
         int a = lo;
         int b = mid;
         for (int k = lo; k < hi; k++) {
-            if (a < mid && (b >= hi || !before(from[b], from[a], xy, major))) {
+            if (a < mid && (b >= hi || !before(from[b], from[a], table, first, second))) {
                 to[k] = from[a++];
             } else {
                 to[k] = from[b++];
@@ -47,13 +70,13 @@ final class IndexSort {
         }
     }
 
-    /** @return whether point i sorts strictly before point j */
-    private static boolean before(int i, int j, double[] xy, int major) {
-        double a = xy[2 * i + major];
-        double b = xy[2 * j + major];
+    /** @return whether item i sorts strictly before item j */
+    private static boolean before(int i, int j, Table table, int first, int second) {
+        double a = table.at(i, first);
+        double b = table.at(j, first);
         if (a != b) {
             return a < b;
         }
-        return xy[2 * i + 1 - major] < xy[2 * j + 1 - major];
+        return table.at(i, second) < table.at(j, second);
     }
 }
