@@ -45,13 +45,17 @@ public final class MapLoadBench {
      * @param obstacles   the world's obstacles after merging
      * @param readSeconds reading the map into a world, the best of the runs after the first
      * @param firstRead   the first run (the JIT still cold), s
-     * @param simSeconds  building the simulation on the world, best run, s
-     * @param firstSim    the first run, s
-     * @param stepMerged  one step of the robot turning with its sonar and 181-beam laser on, merged, µs
-     * @param stepSquares the same step with one square per point, µs
+     * @param worldMb     the heap the world keeps, after a garbage collection, MB
+     * @param heapMb      the most heap this JVM may use, MB
+     * @param simSeconds  building the simulation on the world, best run, s; NaN when not measured
+     * @param firstSim    the first run, s; NaN when not measured
+     * @param stepMerged  one step of the robot turning with its sonar and 181-beam laser on, merged, µs;
+     *                    NaN when not measured
+     * @param stepSquares the same step with one square per point, µs; NaN when not measured
      */
     public record Result(String map, int points, int lines, int obstacles, double readSeconds, double firstRead,
-                         double simSeconds, double firstSim, double stepMerged, double stepSquares) {
+                         long worldMb, long heapMb, double simSeconds, double firstSim, double stepMerged,
+                         double stepSquares) {
     }
 
     /**
@@ -69,10 +73,7 @@ public final class MapLoadBench {
     public static Path generate(Path file, int points) throws IOException {
         List<int[]> xy = new ArrayList<>(points);
         int wallPoints = points * 7 / 10;
-        int rooms = 1;
-        while (4L * (rooms + 2) * (rooms + 1) * ROOM / RESOLUTION <= wallPoints) {
-            rooms++;
-        }
+        int rooms = rooms(points);
         int size = rooms * ROOM;
         for (int k = 0; k <= rooms && xy.size() < wallPoints; k++) {
             for (int t = 0; t <= size / RESOLUTION && xy.size() < wallPoints; t++) {
@@ -105,11 +106,7 @@ public final class MapLoadBench {
                 xy.add(new int[] {x + (k % 3) * RESOLUTION, y + (k / 3) * RESOLUTION});
             }
         }
-        Files.createDirectories(file.toAbsolutePath().getParent());
-        try (BufferedWriter w = Files.newBufferedWriter(file)) {
-            w.write("2D-Map\nMinPos: 0 0\nMaxPos: " + size + " " + size + "\nNumPoints: " + xy.size()
-                    + "\nResolution: " + RESOLUTION + "\nCairn: RobotHome " + ROOM / 2 + " " + ROOM / 2
-                    + " 0 \"\" ICON \"Home\"\nDATA\n");
+        try (BufferedWriter w = header(file, size, xy.size())) {
             for (int[] p : xy) {
                 w.write(p[0] + " " + p[1] + "\n");
             }
@@ -118,37 +115,109 @@ public final class MapLoadBench {
     }
 
     /**
-     * @param map  a map file
-     * @param runs how many times to read it, at least 2 (the first warms the JIT)
+     * Writes a map of points scattered uniformly at random, whole millimetres from a fixed seed,
+     * over the square the building of {@link #generate} with as many points covers, kept 1 m clear
+     * of the robot's home: hardly two points line up, so nearly every point stays an obstacle of
+     * its own, the most a map of that many points can cost.
+     *
+     * @param file   where
+     * @param points how many points, at least 1000
+     * @return the file
+     * @throws IOException if it cannot be written
+     */
+    public static Path generateRandom(Path file, int points) throws IOException {
+        int size = rooms(points) * ROOM;
+        SplittableRandom random = new SplittableRandom(1);
+        try (BufferedWriter w = header(file, size, points)) {
+            for (int n = 0; n < points; ) {
+                int x = random.nextInt(size + 1);
+                int y = random.nextInt(size + 1);
+                if (Math.hypot(x - ROOM / 2.0, y - ROOM / 2.0) >= 1000) {
+                    w.write(x + " " + y + "\n");
+                    n++;
+                }
+            }
+        }
+        return file;
+    }
+
+    /** @return the rooms along each side of the generated building of so many points */
+    private static int rooms(int points) {
+        int rooms = 1;
+        while (4L * (rooms + 2) * (rooms + 1) * ROOM / RESOLUTION <= points * 7 / 10) {
+            rooms++;
+        }
+        return rooms;
+    }
+
+    /** @return a writer of the file, its header and one RobotHome written, at its DATA section */
+    private static BufferedWriter header(Path file, int size, int points) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        BufferedWriter w = Files.newBufferedWriter(file);
+        w.write("2D-Map\nMinPos: 0 0\nMaxPos: " + size + " " + size + "\nNumPoints: " + points
+                + "\nResolution: " + RESOLUTION + "\nCairn: RobotHome " + ROOM / 2 + " " + ROOM / 2
+                + " 0 \"\" ICON \"Home\"\nDATA\n");
+        return w;
+    }
+
+    /**
+     * @param map      a map file
+     * @param runs     how many times to read it, at least 2 (the first warms the JIT)
+     * @param readOnly whether to time the reading alone, not the simulation and its steps
      * @return the figures
      */
-    public static Result run(Path map, int runs) {
+    public static Result run(Path map, int runs, boolean readOnly) {
         double first = 0;
         double best = Double.MAX_VALUE;
         World world = null;
         for (int r = 0; r < runs; r++) {
+            world = null; // the world before is garbage while the next is read
             long t0 = System.nanoTime();
             world = WorldReader.read(map);
             double s = (System.nanoTime() - t0) / 1e9;
             first = r == 0 ? s : first;
             best = r == 0 ? best : Math.min(best, s);
         }
+        long worldMb = retainedMb();
+        long heapMb = Runtime.getRuntime().maxMemory() >> 20;
+        String name = map.getFileName().toString();
+        MapFile file = MapReader.read(map);
+        int obstacles = world.obstacles().size();
+        if (readOnly) {
+            return new Result(name, file.pointCount(), file.lineCount(), obstacles, best, first, worldMb, heapMb,
+                    Double.NaN, Double.NaN, Double.NaN, Double.NaN);
+        }
         double sim = Double.MAX_VALUE;
         double firstSim = 0;
+        Simulation built = null;
         for (int r = 0; r < runs; r++) {
+            built = null; // as for the worlds
             long t0 = System.nanoTime();
-            new Simulation(world, 1);
+            built = new Simulation(world, 1);
             double s = (System.nanoTime() - t0) / 1e9;
             firstSim = r == 0 ? s : firstSim;
             sim = r == 0 ? sim : Math.min(sim, s);
         }
-        MapFile file = MapReader.read(map);
-        double merged = step(world);
-        World squares = new World(world.name(), world.source(), world.width(), world.height(), world.stepMs(),
+        double merged = step(built);
+        built = null;
+        // with nothing merged (no points, or none that line up) the squares are the world itself
+        boolean same = obstacles == file.pointCount() + file.lineCount();
+        double squares = same ? merged : step(new Simulation(squaresWorld(file, world), 1));
+        return new Result(name, file.pointCount(), file.lineCount(), obstacles, best, first, worldMb, heapMb, sim,
+                firstSim, merged, squares);
+    }
+
+    /** @return the heap in use after a garbage collection, MB */
+    private static long retainedMb() {
+        System.gc();
+        Runtime rt = Runtime.getRuntime();
+        return (rt.totalMemory() - rt.freeMemory()) >> 20;
+    }
+
+    private static World squaresWorld(MapFile file, World world) {
+        return new World(world.name(), world.source(), world.width(), world.height(), world.stepMs(),
                 squares(file, world), world.robots(), List.of(), world.noise(), world.comms(), null, world.minX(),
                 world.minY(), world.zones());
-        return new Result(map.getFileName().toString(), file.pointCount(), file.lineCount(), world.obstacles().size(),
-                best, first, sim, firstSim, merged, step(squares));
     }
 
     /** The world's lines as they are, and each point as a square of the map's resolution. */
@@ -165,8 +234,7 @@ public final class MapLoadBench {
     }
 
     /** @return microseconds per step of the robots turning in place with sonar and laser on, best of several batches */
-    private static double step(World world) {
-        Simulation sim = new Simulation(world, 1);
+    private static double step(Simulation sim) {
         Map<String, List<Command>> first = new HashMap<>();
         for (String name : sim.robotNames()) {
             first.put(name, List.of(new Command.SetRotVel(20), new Command.ConfigureLaser(true, 1, LASER_RANGE)));
@@ -189,10 +257,15 @@ public final class MapLoadBench {
      */
     public static void print(PrintWriter out, Result r) {
         out.printf(Locale.ROOT, "map load: %s, %d points and %d lines -> %d obstacles: read into a world in %.0f ms"
-                        + " (first run %.0f ms), simulation built in %.0f ms (first run %.0f ms); a step of its robot"
-                        + " turning with sonar and a 181-beam laser %.0f us (%.0f us with one square per point)%n",
+                        + " (first run %.0f ms); the world keeps %d MB of heap (of %d MB)",
                 r.map(), r.points(), r.lines(), r.obstacles(), r.readSeconds() * 1e3, r.firstRead() * 1e3,
-                r.simSeconds() * 1e3, r.firstSim() * 1e3, r.stepMerged(), r.stepSquares());
+                r.worldMb(), r.heapMb());
+        if (!Double.isNaN(r.simSeconds())) {
+            out.printf(Locale.ROOT, "; simulation built in %.0f ms (first run %.0f ms); a step of its robot"
+                            + " turning with sonar and a 181-beam laser %.0f us (%.0f us with one square per point)",
+                    r.simSeconds() * 1e3, r.firstSim() * 1e3, r.stepMerged(), r.stepSquares());
+        }
+        out.println();
         out.flush();
     }
 }

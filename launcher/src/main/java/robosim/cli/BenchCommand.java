@@ -129,13 +129,23 @@ final class BenchCommand implements Callable<Integer> {
             description = "for --pioneer-flood: how long each rate is measured, 1 to 60; default ${DEFAULT-VALUE}")
     double floodSeconds;
 
-    @Option(names = "--map-load", description = "instead: time reading a generated scanned map of --map-points points"
-            + " (or --map FILE) into a world, building the simulation on it, and a laser scan against it")
+    @Option(names = "--map-load", description = "instead: time reading a generated map of --map-points points"
+            + " (--map-kind, or --map FILE) into a world, building the simulation on it, and a laser scan against it")
     boolean mapLoad;
 
     @Option(names = "--map-points", defaultValue = "100000", paramLabel = "N",
             description = "points of the map --map-load generates, 1000 to " + MAX_MAP_POINTS + "; default ${DEFAULT-VALUE}")
     int mapPoints;
+
+    @Option(names = "--map-kind", defaultValue = "building", paramLabel = "KIND",
+            description = "what --map-load generates: building (a scanned building: rooms, slanted walls, furniture)"
+                    + " or random (points scattered uniformly over the same square, whole mm: hardly any merge);"
+                    + " default ${DEFAULT-VALUE}")
+    String mapKind;
+
+    @Option(names = "--map-read-only", description = "for --map-load: time the reading into a world alone (and the"
+            + " heap the world keeps), not the simulation built on it nor its steps")
+    boolean mapReadOnly;
 
     @Option(names = "--map", paramLabel = "FILE", description = "an ARIA map for --map-load to time instead of a generated one")
     Path map;
@@ -244,9 +254,15 @@ final class BenchCommand implements Callable<Integer> {
                 throw new ParameterException(spec.commandLine(),
                         mapPoints + " was supplied for --map-points: it must be from 1000 to " + MAX_MAP_POINTS);
             }
-            Path file = map != null ? map : MapLoadBench.generate(out.resolve("scan-" + mapPoints + ".map"), mapPoints);
+            if (!mapKind.equals("building") && !mapKind.equals("random")) {
+                throw new ParameterException(spec.commandLine(),
+                        mapKind + " was supplied for --map-kind: kinds are building or random");
+            }
+            Path file = map != null ? map : mapKind.equals("random")
+                    ? MapLoadBench.generateRandom(out.resolve("random-" + mapPoints + ".map"), mapPoints)
+                    : MapLoadBench.generate(out.resolve("scan-" + mapPoints + ".map"), mapPoints);
             for (int r = 0; r < repeat; r++) {
-                MapLoadBench.print(o, MapLoadBench.run(file, 5));
+                MapLoadBench.print(o, MapLoadBench.run(file, 5, mapReadOnly));
             }
             return 0;
         }

@@ -25,17 +25,18 @@ final class CairnParser {
                     + BASE_FIELDS + ": Type x y th \"internal\" ICON \"label\"");
         }
         String type = t.get(0);
-        double x = Numbers.coordinate(file, line, t.get(1), "Cairn " + type + " x");
-        double y = Numbers.coordinate(file, line, t.get(2), "Cairn " + type + " y");
-        double th = Numbers.parse(file, line, t.get(3), "Cairn " + type + " th");
+        String named = "Cairn " + MapLines.excerpt(type);
+        double x = Numbers.coordinate(file, line, t.get(1), named + " x");
+        double y = Numbers.coordinate(file, line, t.get(2), named + " y");
+        double th = Numbers.parse(file, line, t.get(3), named + " th");
         double[] fromTo = new double[0];
         if (t.size() >= BASE_FIELDS + FROM_TO_FIELDS) {
             fromTo = new double[FROM_TO_FIELDS];
             for (int i = 0; i < FROM_TO_FIELDS; i++) {
-                fromTo[i] = Numbers.coordinate(file, line, t.get(BASE_FIELDS + i), "Cairn " + type + " corner");
+                fromTo[i] = Numbers.coordinate(file, line, t.get(BASE_FIELDS + i), named + " corner");
             }
         } else if (type.startsWith("Forbidden")) {
-            throw new MapFileException(file, line, "a Cairn " + type + " has " + t.size() + " values but needs "
+            throw new MapFileException(file, line, "a " + named + " has " + t.size() + " values but needs "
                     + (BASE_FIELDS + FROM_TO_FIELDS) + ": its from and to points follow the label");
         }
         return new Cairn(type, x, y, th, t.get(6), fromTo, line);

@@ -45,19 +45,18 @@ public record MapGeometry(List<Obstacle> obstacles, List<ForbiddenZone> zones, L
     public static MapGeometry of(MapFile map) {
         List<Obstacle> obstacles = new ArrayList<>();
         Extent extent = new Extent();
-        double[] l = map.lines();
-        int[] lineNos = map.lineLines();
-        for (int i = 0; i < lineNos.length; i++) {
-            obstacles.add(wall(l[4 * i], l[4 * i + 1], l[4 * i + 2], l[4 * i + 3], lineNos[i]));
-            extent.add(l[4 * i], l[4 * i + 1]);
-            extent.add(l[4 * i + 2], l[4 * i + 3]);
+        Coordinates l = map.lineItems();
+        for (int i = 0; i < l.count(); i++) {
+            obstacles.add(wall(l.get(i, 0), l.get(i, 1), l.get(i, 2), l.get(i, 3), l.line(i)));
+            extent.add(l.get(i, 0), l.get(i, 1));
+            extent.add(l.get(i, 2), l.get(i, 3));
         }
-        double[] p = map.points();
-        for (int i = 0; i < p.length; i += 2) {
-            extent.add(p[i], p[i + 1]);
+        Coordinates p = map.pointItems();
+        for (int i = 0; i < p.count(); i++) {
+            extent.add(p.get(i, 0), p.get(i, 1));
         }
         double side = map.resolution() > 0 ? Math.min(map.resolution(), MAX_RESOLUTION) : DEFAULT_RESOLUTION;
-        obstacles.addAll(new PointMerger(p, map.pointLines(), side, HEIGHT).merge());
+        obstacles.addAll(new PointMerger(p, side, HEIGHT).merge());
         List<ForbiddenZone> zones = new ArrayList<>();
         List<Pose2D> robotHomes = new ArrayList<>();
         List<Pose2D> docks = new ArrayList<>();

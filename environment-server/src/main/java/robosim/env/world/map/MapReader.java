@@ -1,13 +1,11 @@
 package robosim.env.world.map;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.logging.Logger;
 
@@ -17,8 +15,14 @@ import java.util.logging.Logger;
  * header keys are skipped), then {@code LINES} sections of {@code x1 y1 x2 y2} lines and
  * {@code DATA} sections of {@code x y} points, in either order ({@code SENSOR_LINES} and
  * {@code SENSOR_DATA} sections of the {@code -Ex} forms count as such). The first broken rule stops
- * reading with a {@link MapFileException} naming the file, the line and the rule; counts that
- * disagree with the header are only logged.
+ * reading with a {@link MapFileException} naming the file, the line and the rule, quoting at most
+ * {@value MapLines#EXCERPT} characters of what the file says, escaped; counts that disagree with
+ * the header are only logged, once each.
+ *
+ * <p>Hostile files are bounded: a line longer than {@value MapLines#MAX_LENGTH} characters is
+ * refused before it is held whole, the items are kept on primitive arrays as they are parsed
+ * ({@link Coordinates}), at most {@value #MAX_ITEMS} of each kind, and a map whose items would
+ * not fit this JVM's heap is refused before they are read ({@link MapMemory}).
  */
 public final class MapReader {
     /** The most points, and the most lines, one map may hold: bounds the memory a file can ask for. */
@@ -31,15 +35,19 @@ public final class MapReader {
     private enum Section { HEADER, LINES, POINTS }
 
     private final Path file;
+    private final MapMemory memory;
     private double resolution;
     private long declaredPoints = -1;
     private long declaredLines = -1;
+    private int countsLine;
     private final Coordinates lines = new Coordinates(4);
     private final Coordinates points = new Coordinates(2);
     private final List<Cairn> cairns = new ArrayList<>();
+    private final double[] item = new double[4];
 
-    private MapReader(Path file) {
+    private MapReader(Path file, long maxHeap) {
         this.file = file;
+        this.memory = new MapMemory(file, maxHeap);
     }
 
     /**
@@ -47,170 +55,164 @@ public final class MapReader {
      *
      * @param file the map file
      * @return what it holds
-     * @throws MapFileException if the file cannot be read or breaks a rule of the format
+     * @throws MapFileException if the file cannot be read, breaks a rule of the format, or holds
+     *                          more than this JVM's heap can take (the message names -Xmx)
      */
     public static MapFile read(Path file) {
-        MapReader reader = new MapReader(file);
-        // ISO-8859-1 maps every byte to a character: a stray byte in a label cannot stop reading
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
-            reader.readAll(in);
+        return read(file, Runtime.getRuntime().maxMemory());
+    }
+
+    /**
+     * Reads and checks a map file as {@link #read(Path)} does, for a JVM of the given heap.
+     *
+     * @param file    the map file
+     * @param maxHeap the most heap the map may take, bytes
+     * @return what it holds
+     */
+    static MapFile read(Path file, long maxHeap) {
+        MapReader reader = new MapReader(file, maxHeap);
+        try (InputStream in = Files.newInputStream(file)) {
+            reader.readAll(new MapLines(file, in));
         } catch (NoSuchFileException e) {
             throw new MapFileException(file, 0, "no such map file");
         } catch (IOException e) {
-            throw new MapFileException(file, 0, "cannot read the map file: " + e);
+            throw new MapFileException(file, 0, "cannot read the map file: " + MapLines.excerpt(e.toString()));
         }
         return reader.result();
     }
 
-    private void readAll(BufferedReader in) throws IOException {
-        String first = in.readLine();
-        if (first == null || !first.strip().matches("2D-Map(-Ex\\d*)?")) {
-            throw new MapFileException(file, 1, "the first line is '" + shorten(first == null ? "" : first.strip())
-                    + "' but a map file starts with 2D-Map (or 2D-Map-Ex, 2D-Map-Ex2, ...)");
+    private void readAll(MapLines in) throws IOException {
+        if (!in.next() || !in.text().matches("2D-Map(-Ex\\d*)?")) {
+            throw new MapFileException(file, 1, "the first line is '" + in.excerpt() + "' but a map file starts"
+                    + " with 2D-Map (or 2D-Map-Ex, 2D-Map-Ex2, ...)");
         }
         Section section = Section.HEADER;
-        int lineNo = 1;
-        for (String text = in.readLine(); text != null; text = in.readLine()) {
-            lineNo++;
-            String line = text.strip();
-            if (line.isEmpty()) {
+        while (in.next()) {
+            char[] c = in.chars();
+            int from = skipSpace(c, 0, in.length());
+            int to = in.length();
+            while (to > from && Character.isWhitespace(c[to - 1])) {
+                to--;
+            }
+            if (from == to) {
                 continue;
             }
-            if (line.equals("LINES") || line.endsWith("_LINES") && line.indexOf(' ') < 0) {
-                section = Section.LINES;
-            } else if (line.equals("DATA") || line.endsWith("_DATA") && line.indexOf(' ') < 0) {
-                section = Section.POINTS;
+            if (section != Section.HEADER && isNumberLine(c, from, to)) {
+                item(section == Section.LINES ? lines : points, in, from, to);
+                continue;
+            }
+            String line = new String(c, from, to - from);
+            Section next = line.equals("LINES") || line.endsWith("_LINES") && line.indexOf(' ') < 0 ? Section.LINES
+                    : line.equals("DATA") || line.endsWith("_DATA") && line.indexOf(' ') < 0 ? Section.POINTS
+                    : null;
+            if (next != null) {
+                if (section == Section.HEADER) {
+                    memory.check(Math.max(0, declaredPoints), Math.max(0, declaredLines), countsLine,
+                            "the header says the map holds");
+                }
+                section = next;
             } else if (section == Section.HEADER) {
-                header(line, lineNo);
-            } else if (section == Section.LINES) {
-                data(lines, line, lineNo, "a line of LINES holds x1 y1 x2 y2");
+                header(line, in.number());
             } else {
-                data(points, line, lineNo, "a point of DATA holds x y");
+                item(section == Section.LINES ? lines : points, in, from, to);
             }
         }
+    }
+
+    /** @return whether the line is read as numbers at once: it cannot be a section's name, which ends in S or A */
+    private static boolean isNumberLine(char[] c, int from, int to) {
+        char last = c[to - 1];
+        return last != 'S' && last != 'A';
     }
 
     private void header(String line, int lineNo) {
         int colon = line.indexOf(':');
         if (colon < 0) {
-            throw new MapFileException(file, lineNo, "'" + shorten(line) + "' is neither a 'Key: values' header"
-                    + " line nor LINES or DATA");
+            throw new MapFileException(file, lineNo, "'" + MapLines.excerpt(line) + "' is neither a 'Key: values'"
+                    + " header line nor LINES or DATA");
         }
         String key = line.substring(0, colon).strip();
         String value = line.substring(colon + 1).strip();
         switch (key) {
-            case "Resolution" -> resolution = wholeOrDecimal(value, lineNo, "Resolution", 0, MAX_MAGNITUDE);
-            case "NumPoints" -> declaredPoints = (long) wholeOrDecimal(value, lineNo, "NumPoints", 0, MAX_MAGNITUDE);
-            case "NumLines" -> declaredLines = (long) wholeOrDecimal(value, lineNo, "NumLines", 0, MAX_MAGNITUDE);
+            case "Resolution" -> resolution = wholeOrDecimal(value, lineNo, "Resolution");
+            case "NumPoints" -> declaredPoints = count(value, lineNo, "NumPoints");
+            case "NumLines" -> declaredLines = count(value, lineNo, "NumLines");
             case "Cairn" -> cairns.add(CairnParser.parse(file, lineNo, value));
             default -> { } // MinPos, MapInfo, custom keys: nothing a simulated world needs
         }
     }
 
-    private double wholeOrDecimal(String value, int lineNo, String key, double min, double max) {
+    private long count(String value, int lineNo, String key) {
+        countsLine = lineNo;
+        return (long) wholeOrDecimal(value, lineNo, key);
+    }
+
+    private double wholeOrDecimal(String value, int lineNo, String key) {
         double v = Numbers.parse(file, lineNo, value, key);
-        if (v < min || v > max) {
-            throw new MapFileException(file, lineNo, key + " is " + value + " but must be from " + (long) min
-                    + " to " + (long) max);
+        if (v < 0 || v > MAX_MAGNITUDE) {
+            throw new MapFileException(file, lineNo, key + " is " + MapLines.excerpt(value) + " but must be from 0"
+                    + " to " + (long) MAX_MAGNITUDE);
         }
         return v;
     }
 
-    private void data(Coordinates into, String line, int lineNo, String rule) {
-        String[] tokens = tokens(line, into.width);
-        if (tokens == null) {
-            int count = line.split("\\s+").length;
-            throw new MapFileException(file, lineNo, "'" + shorten(line) + "' has " + count + " value"
-                    + (count == 1 ? "" : "s") + " but " + rule);
+    /** Reads the numbers of a line of LINES or a point of DATA from {@code from} to {@code to} of the line. */
+    private void item(Coordinates into, MapLines in, int from, int to) {
+        char[] c = in.chars();
+        int width = into == lines ? 4 : 2;
+        int count = countTokens(c, from, to);
+        if (count != width) {
+            throw new MapFileException(file, in.number(), "'" + in.excerpt() + "' has " + count + " value"
+                    + (count == 1 ? "" : "s") + " but " + (width == 4 ? "a line of LINES holds x1 y1 x2 y2"
+                    : "a point of DATA holds x y"));
         }
         if (into.count() >= MAX_ITEMS) {
-            throw new MapFileException(file, lineNo, "a map holds at most " + MAX_ITEMS + " lines and "
+            throw new MapFileException(file, in.number(), "a map holds at most " + MAX_ITEMS + " lines and "
                     + MAX_ITEMS + " points");
         }
-        for (String token : tokens) {
-            into.add(Numbers.coordinate(file, lineNo, token, "coordinate"));
+        int i = from;
+        for (int k = 0; k < width; k++) {
+            int start = skipSpace(c, i, to);
+            i = start;
+            while (i < to && !Character.isWhitespace(c[i])) {
+                i++;
+            }
+            item[k] = Numbers.coordinate(file, in.number(), c, start, i, "coordinate");
         }
-        into.lineNumber(lineNo);
+        into.add(item, 0, in.number());
+        if (((points.count() + lines.count()) & (MapMemory.CHECK_EVERY - 1)) == 0) {
+            memory.check(points.count(), lines.count(), in.number(), "the map holds at least");
+        }
     }
 
-    /** @return the line's {@code count} white-space separated tokens, or null if it has another number of them */
-    private static String[] tokens(String line, int count) {
-        String[] out = new String[count];
-        int n = 0;
-        int i = 0;
-        int len = line.length();
-        while (i < len) {
-            while (i < len && Character.isWhitespace(line.charAt(i))) {
-                i++;
-            }
-            if (i == len) {
-                break;
-            }
-            int start = i;
-            while (i < len && !Character.isWhitespace(line.charAt(i))) {
-                i++;
-            }
-            if (n == count) {
-                return null;
-            }
-            out[n++] = line.substring(start, i);
+    private static int skipSpace(char[] c, int from, int to) {
+        int i = from;
+        while (i < to && Character.isWhitespace(c[i])) {
+            i++;
         }
-        return n == count ? out : null;
+        return i;
+    }
+
+    private static int countTokens(char[] c, int from, int to) {
+        int n = 0;
+        for (int i = from; i < to; i++) {
+            if (!Character.isWhitespace(c[i]) && (i == from || Character.isWhitespace(c[i - 1]))) {
+                n++;
+            }
+        }
+        return n;
     }
 
     private MapFile result() {
+        memory.check(points.count(), lines.count(), 0, "the map holds");
         warnIfDiffers("NumLines", declaredLines, lines.count());
         warnIfDiffers("NumPoints", declaredPoints, points.count());
-        return new MapFile(file, resolution, lines.values(), lines.lineNumbers(), points.values(),
-                points.lineNumbers(), cairns);
+        return new MapFile(file, resolution, lines, points, cairns);
     }
 
     private void warnIfDiffers(String key, long declared, int found) {
         if (declared >= 0 && declared != found) {
             LOG.warning(() -> file + ": the header says " + key + ": " + declared + " but the map holds " + found);
-        }
-    }
-
-    static String shorten(String text) {
-        return text.length() <= 60 ? text : text.substring(0, 57) + "...";
-    }
-
-    /** Coordinates growing in place: a list of boxed doubles would take five times the memory. */
-    private static final class Coordinates {
-        final int width;
-        private double[] values = new double[1024];
-        private int[] lineNumbers = new int[256];
-        private int size;
-        private int items;
-
-        Coordinates(int width) {
-            this.width = width;
-        }
-
-        void add(double v) {
-            if (size == values.length) {
-                values = Arrays.copyOf(values, size * 2);
-            }
-            values[size++] = v;
-        }
-
-        void lineNumber(int line) {
-            if (items == lineNumbers.length) {
-                lineNumbers = Arrays.copyOf(lineNumbers, items * 2);
-            }
-            lineNumbers[items++] = line;
-        }
-
-        int count() {
-            return items;
-        }
-
-        double[] values() {
-            return Arrays.copyOf(values, size);
-        }
-
-        int[] lineNumbers() {
-            return Arrays.copyOf(lineNumbers, items);
         }
     }
 }

@@ -14,38 +14,45 @@ import robosim.env.world.Obstacle;
  * with no other stays a square.
  */
 final class PointMerger {
-    private final double[] xy;
-    private final int[] lines;
+    private final Coordinates points;
     private final double side;
     private final double height;
 
     PointMerger(double[] xy, int[] lines, double side, double height) {
-        this.xy = xy;
-        this.lines = lines;
+        this(Coordinates.of(2, xy, lines), side, height);
+    }
+
+    /**
+     * @param points the points, as read
+     * @param side   the side of a point's square, mm
+     * @param height the obstacles' height, mm
+     */
+    PointMerger(Coordinates points, double side, double height) {
+        this.points = points;
         this.side = side;
         this.height = height;
     }
 
     /** @return the obstacles: those of row runs (lone points among them) first, then those of column runs */
     List<Obstacle> merge() {
-        int n = lines.length;
+        int n = points.count();
         int[] byRow = new int[n];
         for (int i = 0; i < n; i++) {
             byRow[i] = i;
         }
-        IndexSort.sort(byRow, xy, 1);
+        IndexSort.sort(byRow, points, 1, 0);
         boolean[] used = new boolean[n];
         Staircases rows = new Staircases(side, height, false);
         runs(byRow, n, 1, 0, used, rows, null);
-        int[] byColumn = new int[n];
         int left = 0;
-        for (int i : byRow) {
-            if (!used[i]) {
-                byColumn[left++] = i;
+        for (int k = 0; k < n; k++) {
+            if (!used[byRow[k]]) {
+                byRow[left++] = byRow[k];
             }
         }
-        byColumn = Arrays.copyOf(byColumn, left);
-        IndexSort.sort(byColumn, xy, 0);
+        int[] byColumn = Arrays.copyOf(byRow, left);
+        byRow = null; // the column sort's buffer may take its place
+        IndexSort.sort(byColumn, points, 0, 1);
         Staircases columns = new Staircases(side, height, true);
         // lone points join the rows: a 45-degree wall is a staircase of single points
         runs(byColumn, left, 0, 1, used, columns, rows);
@@ -64,8 +71,8 @@ final class PointMerger {
         int start = 0;
         for (int k = 1; k <= count; k++) {
             boolean continues = k < count
-                    && xy[2 * order[k] + major] == xy[2 * order[k - 1] + major]
-                    && xy[2 * order[k] + minor] - xy[2 * order[k - 1] + minor] <= side;
+                    && points.get(order[k], major) == points.get(order[k - 1], major)
+                    && points.get(order[k], minor) - points.get(order[k - 1], minor) <= side;
             if (continues) {
                 continue;
             }
@@ -75,13 +82,13 @@ final class PointMerger {
                 int line = Integer.MAX_VALUE;
                 for (int m = start; m < k; m++) {
                     used[order[m]] = true;
-                    line = Math.min(line, lines[order[m]]);
+                    line = Math.min(line, points.line(order[m]));
                 }
                 Staircases to = k - start >= 2 ? into : singles;
                 // a single goes to the rows, where its row is its major coordinate y
-                double at = to == into ? xy[2 * first + major] : xy[2 * first + 1];
-                double from = to == into ? xy[2 * first + minor] : xy[2 * first];
-                double end = to == into ? xy[2 * last + minor] : xy[2 * first];
+                double at = to == into ? points.get(first, major) : points.get(first, 1);
+                double from = to == into ? points.get(first, minor) : points.get(first, 0);
+                double end = to == into ? points.get(last, minor) : points.get(first, 0);
                 to.add(at, from, end, line);
             }
             start = k;

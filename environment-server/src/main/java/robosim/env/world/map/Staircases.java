@@ -22,11 +22,9 @@ final class Staircases {
     private final double side;
     private final double height;
     private final boolean columns;
-    /** Per run: v (its row or column), then its first and last u. */
-    private double[] runs = new double[3 * 64];
-    /** Per run: v and first u, for sorting. */
-    private double[] keys = new double[2 * 64];
-    private int[] lines = new int[64];
+    /** Per run: v (its row or column), then its first and last u; and its file line. */
+    private Coordinates runs = new Coordinates(3);
+    private final double[] run = new double[3];
     private int size;
 
     /**
@@ -42,17 +40,11 @@ final class Staircases {
 
     /** Adds a run of points from u = {@code from} to {@code to} at v = {@code at}. */
     void add(double at, double from, double to, int line) {
-        if (size == lines.length) {
-            runs = Arrays.copyOf(runs, runs.length * 2);
-            keys = Arrays.copyOf(keys, keys.length * 2);
-            lines = Arrays.copyOf(lines, lines.length * 2);
-        }
-        runs[3 * size] = at;
-        runs[3 * size + 1] = from;
-        runs[3 * size + 2] = to;
-        keys[2 * size] = at;
-        keys[2 * size + 1] = from;
-        lines[size++] = line;
+        run[0] = at;
+        run[1] = from;
+        run[2] = to;
+        runs.add(run, 0, line);
+        size++;
     }
 
     /** @return the obstacles: each staircase, lowest first, as the hull of its squares */
@@ -61,17 +53,12 @@ final class Staircases {
         for (int i = 0; i < size; i++) {
             order[i] = i;
         }
-        IndexSort.sort(order, keys, 0);
-        // sorted runs: v, first u, last u
-        double[] sorted = new double[3 * size];
-        int[] sortedLines = new int[size];
-        for (int k = 0; k < size; k++) {
-            System.arraycopy(runs, 3 * order[k], sorted, 3 * k, 3);
-            sortedLines[k] = lines[order[k]];
-        }
+        IndexSort.sort(order, runs, 0, 1);
+        // the runs in sorted order: v, first u, last u
+        Sorted sorted = new Sorted(runs, order);
         boolean[] used = new boolean[size];
         List<Obstacle> out = new ArrayList<>();
-        List<Integer> chain = new ArrayList<>();
+        Chain chain = new Chain();
         for (int k = 0; k < size; k++) {
             if (used[k]) {
                 continue;
@@ -82,14 +69,14 @@ final class Staircases {
             int direction = 0;
             int last = k;
             while (true) {
-                double v = sorted[3 * last] + side;
+                double v = sorted.get(last, 0) + side;
                 int next = -1;
                 if (direction >= 0) {
-                    next = rightOf(sorted, used, v, sorted[3 * last + 1], sorted[3 * last + 2]);
+                    next = rightOf(sorted, used, v, sorted.get(last, 1), sorted.get(last, 2));
                     direction = next >= 0 ? 1 : direction;
                 }
                 if (next < 0 && direction <= 0) {
-                    next = leftOf(sorted, used, v, sorted[3 * last + 1], sorted[3 * last + 2]);
+                    next = leftOf(sorted, used, v, sorted.get(last, 1), sorted.get(last, 2));
                     direction = next >= 0 ? -1 : direction;
                 }
                 if (next < 0 || !straight(sorted, chain, next, direction)) {
@@ -100,11 +87,12 @@ final class Staircases {
                 last = next;
             }
             int line = Integer.MAX_VALUE;
-            for (int c : chain) {
-                line = Math.min(line, sortedLines[c]);
+            for (int i = 0; i < chain.size; i++) {
+                line = Math.min(line, runs.line(order[chain.at[i]]));
             }
             out.add(new Obstacle(hull(sorted, chain), height, line));
         }
+        runs = null; // done: the obstacles take the room
         return out;
     }
 
@@ -112,10 +100,10 @@ final class Staircases {
      * @return the first unused run at v that continues a run from {@code from} to {@code to}
      *         rightwards: it starts within it or one side past its end, and ends no sooner; or -1
      */
-    private int rightOf(double[] sorted, boolean[] used, double v, double from, double to) {
-        for (int j = lowerBound(sorted, v, from, 1); j < size && sorted[3 * j] == v && sorted[3 * j + 1] <= to + side;
+    private int rightOf(Sorted sorted, boolean[] used, double v, double from, double to) {
+        for (int j = lowerBound(sorted, v, from, 1); j < size && sorted.get(j, 0) == v && sorted.get(j, 1) <= to + side;
              j++) {
-            if (!used[j] && sorted[3 * j + 2] >= to) {
+            if (!used[j] && sorted.get(j, 2) >= to) {
                 return j;
             }
         }
@@ -126,11 +114,11 @@ final class Staircases {
      * @return the first unused run at v that continues a run from {@code from} to {@code to}
      *         leftwards: it ends within it or one side before its start, and starts no later; or -1
      */
-    private int leftOf(double[] sorted, boolean[] used, double v, double from, double to) {
+    private int leftOf(Sorted sorted, boolean[] used, double v, double from, double to) {
         // runs of one v do not overlap, so sorted by first u they are sorted by last u too
-        for (int j = lowerBound(sorted, v, from - side, 2); j < size && sorted[3 * j] == v && sorted[3 * j + 2] <= to;
+        for (int j = lowerBound(sorted, v, from - side, 2); j < size && sorted.get(j, 0) == v && sorted.get(j, 2) <= to;
              j++) {
-            if (!used[j] && sorted[3 * j + 1] <= from) {
+            if (!used[j] && sorted.get(j, 1) <= from) {
                 return j;
             }
         }
@@ -138,13 +126,13 @@ final class Staircases {
     }
 
     /** @return the first sorted run at or after (v, u), comparing u with field 1 (first u) or 2 (last u) */
-    private int lowerBound(double[] sorted, double v, double u, int field) {
+    private int lowerBound(Sorted sorted, double v, double u, int field) {
         int lo = 0;
         int hi = size;
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
-            double mv = sorted[3 * mid];
-            if (mv < v || mv == v && sorted[3 * mid + field] < u) {
+            double mv = sorted.get(mid, 0);
+            if (mv < v || mv == v && sorted.get(mid, field) < u) {
                 lo = mid + 1;
             } else {
                 hi = mid;
@@ -158,20 +146,20 @@ final class Staircases {
      *         within a strip {@value #BAND} sides wide about the line from the first run's start
      *         to the next run's end (a wall scanned one or two points thick)
      */
-    private boolean straight(double[] sorted, List<Integer> chain, int next, int direction) {
-        int first = chain.get(0);
-        double u0 = sorted[3 * first + (direction > 0 ? 1 : 2)];
-        double v0 = sorted[3 * first];
-        double du = sorted[3 * next + (direction > 0 ? 2 : 1)] - u0;
-        double dv = sorted[3 * next] - v0;
+    private boolean straight(Sorted sorted, Chain chain, int next, int direction) {
+        int first = chain.at[0];
+        double u0 = sorted.get(first, (direction > 0 ? 1 : 2));
+        double v0 = sorted.get(first, 0);
+        double du = sorted.get(next, (direction > 0 ? 2 : 1)) - u0;
+        double dv = sorted.get(next, 0) - v0;
         double length = Math.hypot(du, dv);
         double lo = Double.POSITIVE_INFINITY;
         double hi = Double.NEGATIVE_INFINITY;
-        for (int k = 0; k <= chain.size(); k++) {
-            int c = k < chain.size() ? chain.get(k) : next;
-            double v = sorted[3 * c] - v0;
+        for (int k = 0; k <= chain.size; k++) {
+            int c = k < chain.size ? chain.at[k] : next;
+            double v = sorted.get(c, 0) - v0;
             for (int end = 1; end <= 2; end++) {
-                double offset = ((sorted[3 * c + end] - u0) * dv - v * du) / length;
+                double offset = ((sorted.get(c, end) - u0) * dv - v * du) / length;
                 lo = Math.min(lo, offset);
                 hi = Math.max(hi, offset);
             }
@@ -183,14 +171,15 @@ final class Staircases {
     static final double BAND = 2;
 
     /** @return the counter-clockwise hull, x, y, of the chain's squares (a rectangle for one run) */
-    private double[] hull(double[] sorted, List<Integer> chain) {
+    private double[] hull(Sorted sorted, Chain chain) {
         double h = side / 2;
-        double[] uv = new double[8 * chain.size()];
+        double[] uv = new double[8 * chain.size];
         int n = 0;
-        for (int c : chain) {
-            double v = sorted[3 * c];
-            double from = sorted[3 * c + 1];
-            double to = sorted[3 * c + 2];
+        for (int i = 0; i < chain.size; i++) {
+            int c = chain.at[i];
+            double v = sorted.get(c, 0);
+            double from = sorted.get(c, 1);
+            double to = sorted.get(c, 2);
             double[] corners = {from - h, v - h, to + h, v - h, to + h, v + h, from - h, v + h};
             System.arraycopy(corners, 0, uv, n, 8);
             n += 8;
@@ -208,5 +197,29 @@ final class Staircases {
             xy[2 * i + 1] = ring[2 * from];
         }
         return xy;
+    }
+
+    /** The runs in sorted order, read through the order rather than copied. */
+    private record Sorted(Coordinates runs, int[] order) {
+        double get(int k, int field) {
+            return runs.get(order[k], field);
+        }
+    }
+
+    /** The runs of one staircase, by sorted position. */
+    private static final class Chain {
+        int[] at = new int[16];
+        int size;
+
+        void clear() {
+            size = 0;
+        }
+
+        void add(int k) {
+            if (size == at.length) {
+                at = Arrays.copyOf(at, 2 * size);
+            }
+            at[size++] = k;
+        }
     }
 }
