@@ -396,6 +396,54 @@ class AbstractRobotTest {
         assertEquals("null", nextSeen());
     }
 
+    @Test
+    void aRequestRefusedEveryStepIsLoggedOnceASecondButEachComplaintIsPolled() throws Exception {
+        TestRobot robot = new TestRobot("r1", env.port());
+        java.util.logging.Logger log = java.util.logging.Logger.getLogger("robosim.hw");
+        List<String> lines = new java.util.concurrent.CopyOnWriteArrayList<>();
+        java.util.logging.Handler capture = new java.util.logging.Handler() {
+            @Override
+            public void publish(java.util.logging.LogRecord r) {
+                lines.add(r.getMessage());
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        log.addHandler(capture);
+        try {
+            run(robot, () -> {
+                for (int i = 0; i < 30; i++) {
+                    robot.sleepSimulated(100);
+                    String e;
+                    while ((e = robot.pollRequestError()) != null) {
+                        seen.add(e);
+                    }
+                }
+                seen.add("done");
+            });
+            welcome("r1");
+            env.step(1);
+            for (int step = 1; step <= 30; step++) {
+                env.step(step + 1, withMessages(step, List.of(), List.of("\u001b[2Jno robot r7 for message " + step)));
+            }
+            for (int step = 1; step <= 30; step++) {
+                assertEquals("\u001b[2Jno robot r7 for message " + step, nextSeen());
+            }
+            assertEquals("done", nextSeen());
+            long logged = lines.stream().filter(l -> l.contains("the Environment refused a request")).count();
+            assertTrue(logged >= 1 && logged <= 3, "30 refusals in a few steps: " + lines);
+            assertTrue(lines.stream().allMatch(l -> l.chars().allMatch(c -> c >= 0x20 && c < 0x7f)), lines.toString());
+        } finally {
+            log.removeHandler(capture);
+        }
+    }
+
     // ---- the end ----
 
     @Test

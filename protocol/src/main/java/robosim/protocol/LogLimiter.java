@@ -119,7 +119,7 @@ public final class LogLimiter {
         }
         counts.forEach(Runnable::run);
         if (whole) {
-            log.log(level, line);
+            log.logp(level, log.getName(), null, line); // the source is the logger, not this class
         }
         return whole;
     }
@@ -183,7 +183,7 @@ public final class LogLimiter {
             String line = p.suppressed + " more " + e.getKey() + " in the last "
                     + TimeUnit.NANOSECONDS.toMillis(periodNanos) + " ms, not logged one by one";
             Level level = p.level;
-            counts.add(() -> log.log(level, line));
+            counts.add(() -> log.logp(level, log.getName(), null, line));
             p.suppressed = 0;
             p.scheduled = false;
             p.endsNanos = now + periodNanos;

@@ -6,12 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.logging.Handler;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -22,6 +18,7 @@ import robosim.protocol.Bye;
 import robosim.protocol.LinkHello;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
+import robosim.protocol.CapturedLog;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.Welcome;
 
@@ -35,29 +32,14 @@ class PeerTextInTheLogTest {
     private static final String FORGED = "x\nSEVERE: forged";
     private static final String ESCAPED = "x\\u000aSEVERE: forged";
 
-    private final Logger logger = Logger.getLogger("robosim.env.net");
-    private final List<String> lines = new ArrayList<>();
-    private final Handler handler = new Handler() {
-        @Override
-        public synchronized void publish(LogRecord r) {
-            lines.add(r.getMessage());
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
+    private CapturedLog log;
     private Loopback loopback;
     private Simulation sim;
     private SessionRules rules;
 
     @BeforeEach
     void open() throws IOException {
-        logger.addHandler(handler);
+        log = new CapturedLog("robosim.env.net");
         loopback = new Loopback();
         Path root = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
         while (!Files.isDirectory(root.resolve("testLoadFiles"))) {
@@ -69,7 +51,7 @@ class PeerTextInTheLogTest {
 
     @AfterEach
     void close() throws IOException {
-        logger.removeHandler(handler);
+        log.close();
         loopback.close();
     }
 
@@ -85,10 +67,9 @@ class PeerTextInTheLogTest {
     }
 
     private void loggedOneLineEach(String expected) {
-        synchronized (handler) {
-            assertTrue(lines.stream().anyMatch(l -> l.contains(expected)), "expected '" + expected + "' in " + lines);
-            assertTrue(lines.stream().noneMatch(l -> l.contains("\n") || l.contains("\r")), lines.toString());
-        }
+        List<String> lines = log.lines();
+        assertTrue(lines.stream().anyMatch(l -> l.contains(expected)), "expected '" + expected + "' in " + lines);
+        assertTrue(lines.stream().noneMatch(l -> l.contains("\n") || l.contains("\r")), lines.toString());
     }
 
     @Test

@@ -10,13 +10,9 @@ import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.IntFunction;
-import java.util.logging.Handler;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -27,6 +23,7 @@ import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameReader;
+import robosim.protocol.CapturedLog;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
@@ -49,22 +46,7 @@ class PortFloodLogTest {
     /** A name of 100 000 characters with ESC and BEL in it. */
     private static final String HUGE = "\u001b[2J\u0007" + "x".repeat(100_000);
 
-    private final List<String> lines = new ArrayList<>();
-    private final Handler handler = new Handler() {
-        @Override
-        public synchronized void publish(LogRecord r) {
-            lines.add(r.getMessage());
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
-    private final Logger logger = Logger.getLogger("robosim.env");
+    private CapturedLog log;
     private final MessageCodec codec = new MessageCodec();
     private Simulation sim;
     private EnvironmentServer server;
@@ -88,12 +70,12 @@ class PortFloodLogTest {
         }, "environment");
         loop.setDaemon(true);
         loop.start();
-        logger.addHandler(handler);
+        log = new CapturedLog("robosim.env");
     }
 
     @AfterEach
     void stop() throws InterruptedException {
-        logger.removeHandler(handler);
+        log.close();
         server.close();
         loop.interrupt();
         loop.join(10_000);
@@ -228,8 +210,6 @@ class PortFloodLogTest {
     }
 
     private List<String> snapshot() {
-        synchronized (handler) {
-            return new ArrayList<>(lines);
-        }
+        return log.lines();
     }
 }

@@ -11,9 +11,6 @@ import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.logging.Handler;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -21,6 +18,7 @@ import org.junit.jupiter.api.Timeout;
 import robosim.hw.HardwareOptions;
 import robosim.pioneer.Commands;
 import robosim.pioneer.PioneerClient;
+import robosim.protocol.CapturedLog;
 
 /**
  * A flood of connections to a Pioneer port is refused as fast as it comes, with a log line a second,
@@ -32,28 +30,13 @@ class PioneerPortFloodTest {
     private static final int ARIA_REPLY_MS = PioneerPortHandshakeTest.ARIA_REPLY_MS;
 
     private final List<Socket> flood = new ArrayList<>();
-    private final List<String> lines = new ArrayList<>();
-    private final Logger log = Logger.getLogger("robosim.pioneer.server");
-    private final Handler capture = new Handler() {
-        @Override
-        public synchronized void publish(LogRecord r) {
-            lines.add(r.getMessage());
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
+    private CapturedLog log;
     private SilentEnvironment env;
     private PioneerPorts ports;
 
     @BeforeEach
     void open() throws IOException {
-        log.addHandler(capture);
+        log = new CapturedLog("robosim.pioneer.server");
         env = new SilentEnvironment();
         HardwareOptions patient = new HardwareOptions(120_000, HardwareOptions.DEFAULT_LOST_AFTER_MS, 5_000);
         ports = PioneerPorts.open(List.of(SilentEnvironment.robot(100)), new PioneerPortOptions("127.0.0.1", 0, false,
@@ -62,7 +45,7 @@ class PioneerPortFloodTest {
 
     @AfterEach
     void close() throws IOException {
-        log.removeHandler(capture);
+        log.close();
         for (Socket s : flood) {
             s.close();
         }
@@ -97,8 +80,8 @@ class PioneerPortFloodTest {
         return closed;
     }
 
-    private synchronized List<String> lines() {
-        return new ArrayList<>(lines);
+    private List<String> lines() {
+        return log.lines();
     }
 
     @Test

@@ -24,8 +24,8 @@ import robosim.protocol.Snapshot;
  * replay a case or run more): bytes changed anywhere; a record's data changed and its checksum made
  * to match; a record's message changed before it is compressed, so that it reaches the codec. The
  * reader gives the snapshots of the records before the damage, exactly as they were written, then
- * ends cleanly or with a {@link RecordingException} naming the file and the offset of a record;
- * it never throws anything else.
+ * ends cleanly or with a {@link RecordingException} naming the file and the offset of a record,
+ * short and in printable ASCII whatever the damage; it never throws anything else.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class RecordingReaderFuzzTest {
@@ -184,6 +184,9 @@ class RecordingReaderFuzzTest {
         } catch (RecordingException e) {
             assertTrue(e.getMessage().startsWith(NAME + ": ") || e.getMessage().startsWith(NAME + " is "),
                     e.getMessage());
+            // what the file holds is quoted short and escaped: it cannot forge a line or reach a terminal
+            assertTrue(e.getMessage().length() < 600, e.getMessage());
+            assertTrue(e.getMessage().chars().allMatch(c -> c >= 0x20 && c < 0x7f), e.getMessage());
             return new Read(snapshots, e);
         }
         return new Read(snapshots, null);
