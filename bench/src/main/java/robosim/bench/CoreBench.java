@@ -6,7 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.env.core.Simulation;
-import robosim.env.net.PooledParallel;
+import robosim.env.threads.PooledParallel;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Timeout;
 import robosim.comms.CommsSettings;
 import robosim.env.core.Parallel;
 import robosim.env.core.Simulation;
-import robosim.env.net.PooledParallel;
+import robosim.env.threads.PooledParallel;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.env.world.Obstacle;

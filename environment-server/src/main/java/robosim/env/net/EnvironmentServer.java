@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
+import robosim.env.threads.PooledParallel;
 import robosim.env.core.RobotSummary;
 import robosim.env.core.Simulation;
 import robosim.protocol.Bye;
@@ -42,6 +43,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final ServerOptions options;
     private final MessageCodec codec = new MessageCodec();
     private final SessionRules rules;
+    private final RunControl control;
     private final PooledParallel workers;
     private final Doorway doorway;
     private final SnapshotListeners listeners = new SnapshotListeners();
@@ -62,13 +64,15 @@ public final class EnvironmentServer implements AutoCloseable {
         }
         this.options = options;
         this.rules = new SessionRules(sim, options.access(), options.limits());
+        this.control = new RunControl(rules.run(), rules, options.limits().maxRobots(), rules.limited());
+        rules.routeControlTo(control);
         this.doorway = new Doorway(options, codec, rules);
         this.progress = new ProgressReports(rules, options);
         this.workers = new PooledParallel(options.threads());
         this.sender = new TimeStepSender(codec, workers);
         this.pump = new ConnectionPump(doorway, rules, progress, sender);
         // the pace is the run's from the start: a status asked for while robots connect says it truly
-        rules.control().startPace(options.realtime() ? 1 : 0);
+        control.startPace(options.realtime() ? 1 : 0);
         sim.setParallel(workers);
     }
 
@@ -190,7 +194,6 @@ public final class EnvironmentServer implements AutoCloseable {
      * @return why the Environment ends while waiting (a stop), or null once the new run has started
      */
     private String switchRun(RunControl.Switch first) throws InterruptedException {
-        RunControl control = rules.control();
         RunControl.Switch s = first;
         while (s != null) {
             Simulation next = new Simulation(s.world(), sim().seed(), workers);
@@ -260,7 +263,6 @@ public final class EnvironmentServer implements AutoCloseable {
 
     private String loop() throws InterruptedException {
         progress.runningSince(System.nanoTime());
-        RunControl control = rules.control();
         while (true) {
             if (progress.following()) {
                 // the one look at the clock a step takes for the progress, and only when someone follows it

@@ -11,7 +11,7 @@ import robosim.protocol.ControlRequest;
 import robosim.protocol.LogLimiter;
 
 /**
- * Run control, part of {@link SessionRules}: the control clients' pause, resume, step N, stop, pace,
+ * Run control, owned by the {@link EnvironmentServer}, which hands it a narrow view of the sessions ({@link RunSessions}): the control clients' pause, resume, step N, stop, pace,
  * move, remove, restart and load (the step loop starts the new run, see {@link #takeSwitch()}). A request whose values break a rule is refused at once and changes nothing; the
  * others wait for the next step boundary (after the step under way, before the next is opened) and
  * are carried out there in the order they came, so that the same requests at the same steps give the
@@ -21,7 +21,7 @@ import robosim.protocol.LogLimiter;
  * <p>While paused no step is opened, so no robot's step deadline runs; the step loop keeps the robots
  * connected with keep-alives. {@code step N} runs N steps and pauses again, answering once they are run.
  */
-final class RunControl {
+final class RunControl implements ControlRequests {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
     /** The most requests waiting for a step boundary, all clients together. */
     static final int MAX_PENDING = 64;
@@ -47,7 +47,7 @@ final class RunControl {
     }
 
     private final CurrentRun run;
-    private final SessionRules rules;
+    private final RunSessions sessions;
     private final WorldLoader loader;
     private final LogLimiter limited;
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
@@ -61,10 +61,16 @@ final class RunControl {
     private long baseNanos;
     private long baseStep;
 
-    RunControl(CurrentRun run, SessionRules rules, int maxRobots, LogLimiter limited) {
+    /**
+     * @param run       the run it controls
+     * @param sessions  what it may see and do of the run's sessions
+     * @param maxRobots the most robots a world it loads may name
+     * @param limited   the limiter of the lines clients can repeat
+     */
+    RunControl(CurrentRun run, RunSessions sessions, int maxRobots, LogLimiter limited) {
         this.limited = limited;
         this.run = run;
-        this.rules = rules;
+        this.sessions = sessions;
         this.loader = new WorldLoader(run, maxRobots);
     }
 
@@ -78,10 +84,11 @@ final class RunControl {
     }
 
     /** A control client sent a request: refused now if a value breaks a rule, else kept for the step boundary. */
-    void received(Connection c, ControlRequest r) {
+    @Override
+    public void received(Connection c, ControlRequest r) {
         if (StatusReport.OP.equals(r.op())) {
             // a status changes nothing, so it need not wait for a step boundary
-            c.send(StatusReport.answer(r, sim(), rules, paused, pace));
+            c.send(StatusReport.answer(r, sim(), sessions, paused, pace));
             return;
         }
         if (LOG_OP.equals(r.op())) {
@@ -90,7 +97,7 @@ final class RunControl {
                 refuse(c, r.id(), "log takes 0 arguments (log), got " + r.args().size());
                 return;
             }
-            rules.log().follow(c);
+            sessions.log().follow(c);
             c.send(new ControlReply(r.id(), true, "following the Environment's log from step " + sim().stepCount()));
             return;
         }
@@ -245,12 +252,12 @@ final class RunControl {
     }
 
     private void remove(Pending p, ControlOp.Remove r, String who, long k) {
-        if (!rules.connectedRobots().containsKey(r.robot())) {
+        if (!sessions.connectedRobots().containsKey(r.robot())) {
             reply(p, false, "robot " + r.robot() + " is not in the run: its program is not connected");
             return;
         }
         LOG.info(() -> who + " removed robot " + r.robot() + " after step " + k);
-        rules.drop(r.robot(), "removed by " + who + " after step " + k);
+        sessions.drop(r.robot(), "removed by " + who + " after step " + k);
         reply(p, true, "robot " + r.robot() + " removed after step " + k + "; it stays where it stopped");
     }
 

@@ -35,7 +35,7 @@ import robosim.protocol.Snapshot;
  * else closes that peer, with a log line naming it and the rule. Lines that peers can repeat go
  * through one {@link LogLimiter} for the server, one line per kind a second.
  */
-final class SessionRules {
+final class SessionRules implements RunSessions {
     private static final Logger LOG = Logger.getLogger(SessionRules.class.getName());
     /** The reason given when a peer ends its connection cleanly. */
     static final String DISCONNECTED = "it disconnected";
@@ -47,7 +47,6 @@ final class SessionRules {
     private final RobotJoins joins;
     private final Map<String, Connection> robots = new LinkedHashMap<>();
     private final ViewerPortRules viewerPort;
-    private final RunControl control;
     private final Set<String> waiting = new LinkedHashSet<>();
     private final Departures departures = new Departures();
     private final LogForwarding log = new LogForwarding();
@@ -68,8 +67,7 @@ final class SessionRules {
         this.run = new CurrentRun(sim);
         this.access = access;
         this.joins = new RobotJoins(run, access, limits, departures, refusals, limited);
-        this.control = new RunControl(run, this, limits.maxRobots(), limited);
-        this.viewerPort = new ViewerPortRules(run, access, limits, control, limited);
+        this.viewerPort = new ViewerPortRules(run, access, limits, limited);
     }
 
     /** @return the simulation run now (a restart or load replaces it) */
@@ -101,13 +99,28 @@ final class SessionRules {
     }
 
     /** @return the Environment's log lines for the control clients that follow them */
-    LogForwarding log() {
+    @Override
+    public LogForwarding log() {
         return log;
     }
 
-    /** @return the control clients' requests, for the step loop to carry out between steps */
-    RunControl control() {
-        return control;
+    /**
+     * Routes control clients' requests to run control; until then they are refused.
+     *
+     * @param control where they go
+     */
+    void routeControlTo(ControlRequests control) {
+        viewerPort.routeControlTo(control);
+    }
+
+    /** @return the run, as a restart or a load replaces its simulation */
+    CurrentRun run() {
+        return run;
+    }
+
+    /** @return the limiter of the lines peers can repeat, for run control's */
+    LogLimiter limited() {
+        return limited;
     }
 
     /**
@@ -133,12 +146,14 @@ final class SessionRules {
         return viewerPort.viewerCount();
     }
 
-    Map<String, Connection> connectedRobots() {
+    @Override
+    public Map<String, Connection> connectedRobots() {
         return robots;
     }
 
     /** @return the last step the robot answered in time, 0 if none */
-    long lastAnswered(String robot) {
+    @Override
+    public long lastAnswered(String robot) {
         return answered.getOrDefault(robot, 0L);
     }
 
@@ -402,7 +417,8 @@ final class SessionRules {
      *
      * @param reason logged with the robot's name, or null for an orderly leave
      */
-    void drop(String name, String reason) {
+    @Override
+    public void drop(String name, String reason) {
         if (reason != null) {
             departed(name, Departure.Kind.DROPPED, reason);
         }

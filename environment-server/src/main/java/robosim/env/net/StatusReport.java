@@ -30,7 +30,7 @@ final class StatusReport {
      * @param pace   the pace in force: 0 for as fast as possible
      * @return the status, or a refusal when the request carries arguments
      */
-    static Message answer(ControlRequest r, Simulation sim, SessionRules rules, boolean paused, double pace) {
+    static Message answer(ControlRequest r, Simulation sim, RunSessions rules, boolean paused, double pace) {
         if (!r.args().isEmpty()) {
             return new ControlReply(r.id(), false, "status takes 0 arguments (status), got " + r.args().size());
         }

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import robosim.env.threads.PooledParallel;
 import robosim.env.core.Simulation;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.KeepAlive;

@@ -30,19 +30,24 @@ final class ViewerPortRules {
     private final Limits limits;
     private final List<Connection> viewers = new ArrayList<>();
     private final List<Connection> controls = new ArrayList<>();
-    private final RunControl control;
+    /** Where control requests go: run control, once the server has routed them there. */
+    private ControlRequests control = ControlRequests.NONE;
     private final LogLimiter limited;
 
-    ViewerPortRules(CurrentRun run, Access access, Limits limits, RunControl control, LogLimiter limited) {
+    ViewerPortRules(CurrentRun run, Access access, Limits limits, LogLimiter limited) {
         this.limited = limited;
         this.run = run;
-        this.control = control;
         this.access = access;
         this.limits = limits;
     }
 
     private Simulation sim() {
         return run.sim();
+    }
+
+    /** @param to where control clients' requests go from now */
+    void routeControlTo(ControlRequests to) {
+        control = to;
     }
 
     int viewerCount() {

@@ -721,6 +721,8 @@ class SessionRulesTest {
         @Test
         void aViewerCannotControlTheRun() throws IOException {
             guard(true);
+            RunControl control = new RunControl(rules.run(), rules, Limits.defaults().maxRobots(), rules.limited());
+            rules.routeControlTo(control);
             Peer viewer = loopback.connect(Connection.Kind.VIEWER);
             viewer.send(new ViewerHello("v", SECRET));
             deliver(viewer);
@@ -732,7 +734,7 @@ class SessionRulesTest {
 
             Bye bye = assertInstanceOf(Bye.class, viewer.read());
             assertTrue(bye.reason().startsWith("refused: a viewer cannot change the run"), bye.reason());
-            assertEquals(null, rules.control().atBoundary(), "nothing was queued to stop the run");
+            assertEquals(null, control.atBoundary(), "nothing was queued to stop the run");
         }
 
         @Test

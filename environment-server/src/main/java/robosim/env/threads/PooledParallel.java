@@ -1,4 +1,4 @@
-package robosim.env.net;
+package robosim.env.threads;
 
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
@@ -25,7 +25,7 @@ public final class PooledParallel implements Parallel, AutoCloseable {
     /** Chunks per thread: enough for an even share when robots cost unequally (a laser costs more). */
     private static final int CHUNKS_PER_THREAD = 4;
     /** The fewest indexes in a chunk. */
-    static final int MIN_CHUNK = 16;
+    public static final int MIN_CHUNK = 16;
     /** How long the caller spins for the last chunks before it sleeps, ns. */
     private static final long SPIN_NANOS = 200_000;
 
@@ -37,7 +37,9 @@ public final class PooledParallel implements Parallel, AutoCloseable {
      * @throws IllegalArgumentException if {@code threads} is below 1
      */
     public PooledParallel(int threads) {
-        ServerOptions.requireAtLeast("threads", threads, 1);
+        if (threads < 1) {
+            throw new IllegalArgumentException(threads + " was supplied for threads: it must be at least 1");
+        }
         this.threads = threads;
         AtomicInteger made = new AtomicInteger();
         this.workers = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {

@@ -1,4 +1,4 @@
-package robosim.env.net;
+package robosim.env.threads;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -7,6 +7,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.env.net.ServerOptions;
 
 /** The pool's loop runs every index once, on any number of threads, and passes failures on. */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
