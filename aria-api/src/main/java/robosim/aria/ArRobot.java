@@ -8,6 +8,7 @@ import robosim.params.BumperParameters;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
+import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
 
@@ -83,7 +84,7 @@ public class ArRobot extends AbstractRobot {
      *                   these are read from a parameter file's bumper keys
      */
     public ArRobot(String name, String host, int port, RobotParameters parameters) {
-        super(name, host, port, "pioneer", parameters);
+        super(name, host, port, RobotKind.PIONEER.id(), parameters);
         this.maxTransVel = parameters.maxVelocity();
         this.maxRotVel = parameters.maxRVelocity();
         this.sonar = new SonarRing(parameters.sonarUnits(), parameters.sonarMaxRange());

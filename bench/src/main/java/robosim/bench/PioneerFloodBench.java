@@ -25,6 +25,7 @@ import robosim.pioneer.server.PioneerPortOptions;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.pioneer.server.ServedRobot;
 import robosim.protocol.FrameReader;
+import robosim.protocol.RobotKind;
 
 /**
  * What a hostile ARIA client on a Pioneer port costs the rest of a run. The benchmark's grid world
@@ -90,7 +91,7 @@ public final class PioneerFloodBench {
             }, "bench-flood-run");
             run.setDaemon(true);
             run.start();
-            ServedRobot b0 = new ServedRobot("b0", "pioneer", sim.parameters("b0"),
+            ServedRobot b0 = new ServedRobot("b0", RobotKind.PIONEER.id(), sim.parameters("b0"),
                     RobotParameterFiles.conversionFactors(robotFile.toString()), sim.world().stepMs());
             try {
                 try (PioneerPorts ports = PioneerPorts.open(List.of(b0), new PioneerPortOptions("127.0.0.1", 0, false,

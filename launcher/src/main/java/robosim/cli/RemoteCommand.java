@@ -5,7 +5,6 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import picocli.CommandLine.Command;
@@ -17,6 +16,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 import robosim.hw.RunEnd;
 import robosim.params.RobotParameterFiles;
+import robosim.protocol.RobotKind;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.RunSecret;
 import robosim.remote.robot.PioneerRemote;
@@ -63,8 +63,8 @@ final class RemoteCommand implements Callable<Integer> {
     @Option(names = "--scout", description = "drive a Scout (the Nomadic API) instead of a Pioneer; the same as --type scout")
     boolean scout;
 
-    @Option(names = "--type", paramLabel = "TYPE", defaultValue = "pioneer",
-            description = "the robot's API: pioneer (ArRobot) or scout; default ${DEFAULT-VALUE}")
+    @Option(names = "--type", paramLabel = "TYPE",
+            description = "the robot's API: pioneer (ArRobot) or scout; default pioneer")
     String type;
 
     @Option(names = "--params", paramLabel = "FILE",
@@ -96,16 +96,15 @@ final class RemoteCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        boolean isScout = scout || "scout".equals(type.toLowerCase(Locale.ROOT));
-        if (!isScout && !"pioneer".equals(type.toLowerCase(Locale.ROOT))) {
-            throw bad("'" + type + "' was supplied for --type: it is pioneer or scout");
-        }
+        RobotKind kind = scout ? RobotKind.SCOUT : type == null ? RobotKind.PIONEER : RobotKind.of(type).orElseThrow(() -> bad("'" + type
+                + "' was supplied for --type: it is " + String.join(" or ", RobotKind.ids())));
+        boolean isScout = kind == RobotKind.SCOUT;
         if (isScout && keydrive) {
             throw bad("--keydrive was given for a Scout: the keydrive action is ARIA's, a Pioneer's");
         }
         requirePort("PORT", port);
         requirePort("--viewer-port", viewerPort);
-        String file = params != null ? params : isScout ? Scout.DEFAULT_PARAMETERS : "p3dx";
+        String file = params != null ? params : kind.defaultParameters();
         RobotParameters parameters;
         try {
             parameters = RobotParameterFiles.load(file);

@@ -13,6 +13,7 @@ import robosim.hw.HardwareOptions;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
+import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
 
@@ -44,7 +45,7 @@ public class Scout extends AbstractRobot {
     /** The Scout's rotation constant: 1/10 inch of wheel travel per 1/10 degree of turn. */
     public static final double ROTATION_CONSTANT = 0.118597;
     /** The shipped Scout's parameter file. */
-    public static final String DEFAULT_PARAMETERS = "scout";
+    public static final String DEFAULT_PARAMETERS = RobotKind.SCOUT.defaultParameters();
     /** A wheel slower than this, mm/s, counts as stopped. */
     static final double MOVING_MM_S = 0.01;
     private static final Logger LOG = Logger.getLogger(Scout.class.getName());
@@ -93,7 +94,7 @@ public class Scout extends AbstractRobot {
      * @param parameters the robot's parameters
      */
     public Scout(String name, String host, int port, RobotParameters parameters) {
-        super(name, host, port, "scout", parameters);
+        super(name, host, port, RobotKind.SCOUT.id(), parameters);
         Arrays.fill(State, StateVector.STATE_SONAR_0, StateVector.STATE_SONAR_15 + 1, NomadUnits.MAX_SONAR_INCHES);
     }
 

@@ -12,6 +12,7 @@ import robosim.geometry.SweepResult;
 import robosim.protocol.Command;
 import robosim.protocol.GripperState;
 import robosim.protocol.MessageDelivery;
+import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
 
@@ -58,7 +59,7 @@ final class SimRobot {
         this.th = Angles.fix(th);
         this.sensors = new Sensors(params, noise, random);
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
-        this.motors = new Motors(!"scout".equals(type), motorsEnabled);
+        this.motors = new Motors(RobotKind.of(type).map(RobotKind::hasMotorSwitch).orElse(true), motorsEnabled);
     }
 
     /** Hands a motion command to the drive controller, which steers by odometry. */

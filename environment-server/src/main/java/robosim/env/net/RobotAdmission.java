@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Locale;
 import robosim.env.core.Simulation;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RobotKind;
 
 /**
  * Which robot hellos the Environment admits: the run's secret (a shared link presented it when it
@@ -14,7 +15,7 @@ import robosim.protocol.RobotHello;
  */
 final class RobotAdmission {
     /** The types a robot the world does not name may be: those a world file may name. */
-    static final List<String> SPAWN_TYPES = List.of("pioneer", "scout");
+    static final List<String> SPAWN_TYPES = RobotKind.ids();
 
     private final CurrentRun run;
     private final Access access;

@@ -15,6 +15,7 @@ import org.locationtech.jts.geom.Polygon;
 import robosim.geometry.BodyShape;
 import robosim.geometry.Pose2D;
 import robosim.params.ParameterFileException;
+import robosim.protocol.RobotKind;
 import robosim.protocol.RobotParameters;
 import robosim.params.RobotParametersReader;
 import robosim.env.world.Bounds;
@@ -32,7 +33,7 @@ import robosim.protocol.RobotHello;
  */
 final class RobotPlacer {
     /** The robot types a world may name; {@code scout} is reserved for the Scout API. */
-    static final List<String> TYPES = List.of("pioneer", "scout");
+    static final List<String> TYPES = RobotKind.ids();
 
     private final Attributes attributes;
     private final Bounds bounds;
@@ -123,8 +124,7 @@ final class RobotPlacer {
         } catch (IllegalArgumentException ex) {
             throw attributes.error(option, "--robot " + request + ": " + ex.getMessage());
         }
-        String type = "scout".equalsIgnoreCase(parameters(option, name, request.type(), file).robotClass())
-                ? "scout" : "pioneer";
+        String type = RobotKind.ofRobotClass(parameters(option, name, request.type(), file).robotClass()).id();
         return place(option, name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), request.type(), file);
     }
 

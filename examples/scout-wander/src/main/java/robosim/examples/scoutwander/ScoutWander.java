@@ -47,7 +47,8 @@ public final class ScoutWander {
         if (args.length < 3) {
             throw new IllegalArgumentException("usage: ScoutWander NAME HOST PORT [PARAMFILE]");
         }
-        Scout scout = new Scout(args[0], args[1], Integer.parseInt(args[2]), args.length > 3 ? args[3] : "scout");
+        Scout scout = new Scout(args[0], args[1], Integer.parseInt(args[2]),
+                args.length > 3 ? args[3] : Scout.DEFAULT_PARAMETERS);
         if (!scout.connect_robot()) {
             throw new IllegalStateException("robot " + args[0] + " could not connect: " + scout.getConnectionError());
         }
