@@ -30,7 +30,6 @@ public final class ControlPanelWindow extends JFrame {
     private final transient PanelController controller;
     private final transient CountDownLatch closed = new CountDownLatch(1);
     private final LogPane log = new LogPane();
-    private final RunForm form;
     private final RunControls controls;
     private final RobotTable robots = new RobotTable();
     private final RobotForm robotForm;
@@ -46,7 +45,7 @@ public final class ControlPanelWindow extends JFrame {
         view = new ViewerPane(model, new ViewState());
         // a method reference, not a lambda: the controls are made after the controller
         controller = new PanelController(model, log::append, this::showStatus, this::showLine);
-        form = new RunForm(worlds, selected, controller::start,
+        RunForm form = new RunForm(worlds, selected, controller::start,
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
         robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected, this::error);
@@ -160,11 +159,6 @@ public final class ControlPanelWindow extends JFrame {
     /** @return the robot form, for tests */
     public RobotForm robotForm() {
         return robotForm;
-    }
-
-    /** @return the run form, for tests */
-    public RunForm runForm() {
-        return form;
     }
 
     /** @return the log, for tests */
