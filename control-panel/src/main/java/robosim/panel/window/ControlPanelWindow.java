@@ -32,7 +32,6 @@ public final class ControlPanelWindow extends JFrame {
     private final LogPane log = new LogPane();
     private final RunControls controls;
     private final RobotTable robots = new RobotTable();
-    private final RobotForm robotForm;
     private final ViewerPane view;
 
     /**
@@ -48,7 +47,8 @@ public final class ControlPanelWindow extends JFrame {
         RunForm form = new RunForm(worlds, selected, controller::start,
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
-        robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected, this::error);
+        RobotForm robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected,
+                this::error);
         form.load.addActionListener(e -> {
             try {
                 controller.send(Request.load(String.valueOf(form.world.getSelectedItem())));
@@ -154,11 +154,6 @@ public final class ControlPanelWindow extends JFrame {
     /** @return the robots' table, for tests */
     public RobotTable robots() {
         return robots;
-    }
-
-    /** @return the robot form, for tests */
-    public RobotForm robotForm() {
-        return robotForm;
     }
 
     /** @return the log, for tests */
