@@ -1,7 +1,7 @@
 package robosim.aria;
 
 import robosim.hw.RobotSensorResponse;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /**
  * A p3dx whose cycles a test drives by hand, to fire one action on literal poses and velocities:
@@ -19,7 +19,7 @@ final class ActionFixture {
     /** One cycle with the robot at a pose, driving at a velocity. */
     ActionFixture at(double x, double y, double th, double vel) {
         time += 100;
-        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, time, x, y, th,
+        robot.responded(new RobotSensorResponse(RobotStates.of(robot.getCounter() + 1, time, x, y, th,
                 vel, 0, vel, vel, false, new int[0], 0, new int[0], null)));
         return this;
     }

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import robosim.hw.RobotSensorResponse;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /**
  * The stall value's layout (ARIA's ArRobot.h / ArBumpers.cpp) and ArBumpers' readings, from the
@@ -23,7 +23,7 @@ class ArBumpersTest {
     }
 
     private static void cycle(ArRobot robot, long timeMs, double x, double y, double th, boolean stalled, int sectors) {
-        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, x, y, th,
+        robot.responded(new RobotSensorResponse(RobotStates.of(robot.getCounter() + 1, timeMs, x, y, th,
                 0, 0, 0, 0, stalled, NONE, 0, NONE, null, List.of(), List.of(), sectors)));
     }
 

@@ -11,7 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.params.ParameterFileReader;
 
 /** ARIA's rules for the robot's cycle, its counter, sonar readings and tasks. */
@@ -27,7 +27,7 @@ class ArRobotCycleTest {
     }
 
     private void cycle(long step, double vel, double rotVel, int[] sonar) {
-        robot.responded(new RobotSensorResponse(new RobotState(step, step * 100, 1000 + step, 2000, 30, vel, rotVel,
+        robot.responded(new RobotSensorResponse(RobotStates.of(step, step * 100, 1000 + step, 2000, 30, vel, rotVel,
                 vel, vel, false, sonar, 0, new int[0], null)));
     }
 

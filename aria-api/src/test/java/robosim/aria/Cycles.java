@@ -1,7 +1,7 @@
 package robosim.aria;
 
 import robosim.hw.RobotSensorResponse;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.params.ParameterFileReader;
 import robosim.protocol.RobotParameters;
 
@@ -40,13 +40,13 @@ final class Cycles {
 
     /** One cycle at a pose, with sonar ranges (16, or none) and a laser scan (or none). */
     static void cycle(ArRobot robot, long timeMs, double x, double y, double th, int[] sonar, int[] laser) {
-        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, x, y, th,
+        robot.responded(new RobotSensorResponse(RobotStates.of(robot.getCounter() + 1, timeMs, x, y, th,
                 0, 0, 0, 0, false, sonar, 0, laser, null)));
     }
 
     /** One cycle at the origin, driving at these velocities. */
     static void cycleMoving(ArRobot robot, long timeMs, double vel, double rotVel) {
-        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, 0, 0, 0,
+        robot.responded(new RobotSensorResponse(RobotStates.of(robot.getCounter() + 1, timeMs, 0, 0, 0,
                 vel, rotVel, vel, vel, false, NONE, 0, NONE, null)));
     }
 }

@@ -29,6 +29,7 @@ import robosim.protocol.Command.Addressing;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
 
@@ -91,7 +92,7 @@ class AbstractRobotTest {
     }
 
     private static RobotState withMessages(long step, List<MessageDelivery> messages, List<String> errors) {
-        return new RobotState(step, step * FakeEnvironment.STEP_MS, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0,
+        return RobotStates.of(step, step * FakeEnvironment.STEP_MS, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0,
                 new int[0], null, messages, errors, 0);
     }
 

@@ -18,6 +18,7 @@ import robosim.protocol.Command;
 import robosim.protocol.Figure;
 import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /**
  * What every Robot-Object shares, over a {@link FakeLink}: no connection and no Environment, the
@@ -118,7 +119,7 @@ class AbstractRobotUnitTest {
         link.step(1);
         link.next();
         RobotState s = FakeLink.state(1);
-        link.receiver.step(new RobotSensorResponse(2, new RobotState(s.step(), s.timeMs(), 0, 0, 0, 0, 0, 0, 0, false,
+        link.receiver.step(new RobotSensorResponse(2, RobotStates.of(s.step(), s.timeMs(), 0, 0, 0, 0, 0, 0, 0, false,
                 new int[0], 0, new int[0], null,
                 List.of(new MessageDelivery("r2", Command.Addressing.ROBOT, "r1", "text", "first", 1, 1),
                         new MessageDelivery("r3", Command.Addressing.ALL, null, "text", "second", 1, 4)),

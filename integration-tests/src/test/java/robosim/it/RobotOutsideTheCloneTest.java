@@ -23,7 +23,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.Departure;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.World;
 import robosim.env.world.xml.WorldReader;
 
@@ -57,7 +57,7 @@ class RobotOutsideTheCloneTest {
         assertTrue(Files.isRegularFile(mine.resolve("out/Square.class")), javac::toString);
 
         World office = WorldReader.read(root.resolve("testLoadFiles/environment/office.map"),
-                List.of(new RobotRequest("p3dx", "r1")));
+                List.of(new RobotToPlace("p3dx", "r1")));
         try (LocalEnvironment env = new LocalEnvironment(office, 1, ServerOptions.loopback().withMaxSteps(2000))) {
             Path log = mine.resolve("square.log");
             ProcessBuilder pb = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),

@@ -22,7 +22,7 @@ import robosim.env.net.Join;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.World;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.env.world.xml.WorldFileException;
@@ -109,9 +109,9 @@ final class EnvCommand implements Callable<Integer> {
      * @return the robots asked for with {@code --robot}, in order
      * @throws ParameterException if one is not {@code TYPE} or {@code TYPE:NAME}
      */
-    List<RobotRequest> requests() {
+    List<RobotToPlace> robotsToPlace() {
         try {
-            return robots.stream().map(RobotRequest::parse).toList();
+            return robots.stream().map(RobotToPlace::parse).toList();
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -126,9 +126,9 @@ final class EnvCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         World w;
-        List<RobotRequest> requests = requests();
+        List<RobotToPlace> toPlace = robotsToPlace();
         try {
-            w = WorldReader.read(world, requests);
+            w = WorldReader.read(world, toPlace);
             if (open) {
                 w = w.withRules(w.rules().withOpen(true));
             }

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 
 /** {@code robosim env MAP.map --robot TYPE[:NAME]}: maps as worlds, robots asked for on the command line. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
@@ -40,7 +40,7 @@ class EnvRobotOptionTest {
         CommandLine cl = Main.commandLine();
         CommandLine.ParseResult parsed = cl.parseArgs("env", "--robot", "p3dx", "--robot", "p3at:scout2", "lab.map");
         EnvCommand env = (EnvCommand) parsed.subcommand().commandSpec().userObject();
-        assertEquals(List.of(new RobotRequest("p3dx", null), new RobotRequest("p3at", "scout2")), env.requests());
+        assertEquals(List.of(new RobotToPlace("p3dx", null), new RobotToPlace("p3at", "scout2")), env.robotsToPlace());
     }
 
     @Test

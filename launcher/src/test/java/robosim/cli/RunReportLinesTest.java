@@ -18,14 +18,20 @@ class RunReportLinesTest {
         return new RobotSummary(name, x, 1000, 90, 1234, 1, false, x, 1000, 90);
     }
 
+    /** @return the report of a run of 40 steps (4 s) without timings or a find, every robot of it connected */
+    private static RunReport report(String endReason, List<RobotSummary> robots, List<Departure> departures,
+                                    List<Join> joins) {
+        return new RunReport(40, 4000, endReason, robots, 0, null, 0, departures, joins, List.of());
+    }
+
     @Test
     void eachRobotThatLeftWasDroppedOrWasLostIsMarkedWithTheStepAndTheReason() {
-        RunReport report = new RunReport(40, 4000, "step limit 40 reached",
-                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000), at("r4", 4000)), 0, null, 0,
+        RunReport report = report("step limit 40 reached",
+                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000), at("r4", 4000)),
                 List.of(new Departure("r2", Departure.Kind.LEFT, 2, "the robot's program disconnected"),
                         new Departure("r3", Departure.Kind.LOST, 2, "the connection closed without a bye"),
                         new Departure("r4", Departure.Kind.DROPPED, 2,
-                                "it did not send its requests for step 2 within 500 ms")));
+                                "it did not send its requests for step 2 within 500 ms")), List.of());
         StringWriter out = new StringWriter();
 
         EnvCommand.printReport(new PrintWriter(out), report);
@@ -44,8 +50,8 @@ class RunReportLinesTest {
 
     @Test
     void robotsThatJoinedDuringTheRunAreCountedAndEachSaysHowItLastJoined() {
-        RunReport report = new RunReport(40, 4000, "every robot has disconnected",
-                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000)), 0, null, 0,
+        RunReport report = report("every robot has disconnected",
+                List.of(at("r1", 1000), at("r2", 2000), at("r3", 3000)),
                 List.of(new Departure("r2", Departure.Kind.LOST, 5, "the connection closed without a bye"),
                         new Departure("r1", Departure.Kind.LEFT, 40, "done"),
                         new Departure("r2", Departure.Kind.LEFT, 40, "done"),
@@ -77,8 +83,8 @@ class RunReportLinesTest {
 
     @Test
     void aRobotWhoseAriaClientLeftSaysSoRatherThanThatItRanToTheEnd() {
-        RunReport report = new RunReport(40, 4000, "step limit 40 reached", List.of(at("r1", 1000), at("r2", 2000)),
-                0, null, 0, List.of(new Departure("r2", Departure.Kind.DROPPED, 7, "it broke a rule")));
+        RunReport report = report("step limit 40 reached", List.of(at("r1", 1000), at("r2", 2000)),
+                List.of(new Departure("r2", Departure.Kind.DROPPED, 7, "it broke a rule")), List.of());
         String left = "its ARIA client left after step 12 (the client sent CLOSE); the robot stood still from then to"
                 + " the end";
         StringWriter out = new StringWriter();

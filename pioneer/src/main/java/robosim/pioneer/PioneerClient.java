@@ -34,7 +34,6 @@ public final class PioneerClient implements Closeable {
     private final OutputStream out;
     private final BlockingQueue<PioneerPacket> received = new LinkedBlockingQueue<>(QUEUE);
     private final AtomicLong lastSentNanos = new AtomicLong(System.nanoTime());
-    private final AtomicLong dropped = new AtomicLong();
     private final String where;
     private volatile boolean closed;
     private volatile String endReason;
@@ -229,11 +228,6 @@ public final class PioneerClient implements Closeable {
         return endReason;
     }
 
-    /** @return packets dropped because nobody took them from the queue in time */
-    public long droppedPackets() {
-        return dropped.get();
-    }
-
     /** @return the server, {@code host:port} */
     public String server() {
         return where;
@@ -244,8 +238,7 @@ public final class PioneerClient implements Closeable {
             @Override
             public void packet(PioneerPacket packet) {
                 while (!received.offer(packet)) {
-                    received.poll();
-                    dropped.incrementAndGet();
+                    received.poll(); // the oldest goes: nobody took it in time
                 }
             }
 

@@ -48,71 +48,11 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
                          @JsonInclude(JsonInclude.Include.NON_NULL) Boolean motorsEnabled) {
 
     /**
-     * A state without a gripper or a camera, whose sonar readings are all new, that does not say whether
-     * the motors are enabled.
-     *
-     * @param step       the step these values are the result of
-     * @param timeMs     simulated time at the end of that step
-     * @param x          odometry x in mm
-     * @param y          odometry y in mm
-     * @param th         odometry heading in degrees
-     * @param vel        translational velocity in mm/s
-     * @param rotVel     rotational velocity in deg/s
-     * @param leftVel    left wheel velocity in mm/s
-     * @param rightVel   right wheel velocity in mm/s
-     * @param stalled    whether the last motion was stopped by a collision
-     * @param sonar      sonar ranges in mm
-     * @param collisions collisions counted since the start
-     * @param laser      the laser's latest scan in mm
-     * @param heat       the heat sensor's reading, or null
-     * @param messages   the messages delivered in that step
-     * @param errors     what was wrong with requests of the robot
-     * @param bumpers    the bumper ring's contacts
-     * @param truePose   the robot's true pose, or null
-     */
-    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                      int bumpers, double[] truePose) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, bumpers, truePose, null, null, null, null);
-    }
-
-    /**
      * @param i a transducer's index
      * @return whether its reading is new in this state ({@link #sonarNew()} null means all are)
      */
     public boolean isSonarNew(int i) {
         return sonarNew == null || i >= 0 && i < Long.SIZE && (sonarNew >> i & 1) != 0;
-    }
-
-    /**
-     * A state without the true pose.
-     *
-     * @param step       the step
-     * @param timeMs     simulated time, ms
-     * @param x          odometry x, mm
-     * @param y          odometry y, mm
-     * @param th         odometry heading, degrees
-     * @param vel        mm/s
-     * @param rotVel     deg/s
-     * @param leftVel    mm/s
-     * @param rightVel   mm/s
-     * @param stalled    whether stalled
-     * @param sonar      sonar ranges, mm
-     * @param collisions collisions so far
-     * @param laser      laser scan, mm
-     * @param heat       heat reading or null
-     * @param messages   messages delivered
-     * @param errors     request errors
-     * @param bumpers    bumper contacts
-     */
-    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                      int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                      int bumpers) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                messages, errors, bumpers, null);
     }
 
     /** The bumper ring's sectors, 60° each. */
@@ -125,32 +65,9 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
     }
 
     /**
-     * A state without messages or errors.
-     *
-     * @param step       the step
-     * @param timeMs     simulated time, ms
-     * @param x          odometry x, mm
-     * @param y          odometry y, mm
-     * @param th         odometry heading, degrees
-     * @param vel        mm/s
-     * @param rotVel     deg/s
-     * @param leftVel    mm/s
-     * @param rightVel   mm/s
-     * @param stalled    whether stalled
-     * @param sonar      sonar ranges, mm
-     * @param collisions collisions so far
-     * @param laser      laser scan, mm
-     * @param heat       heat reading or null
-     */
-    public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                      int[] laser, HeatReading heat) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, laser, heat,
-                List.of(), List.of(), 0);
-    }
-
-    /**
-     * A state without laser or heat readings.
+     * A state with only the motion and the sonar: no laser or heat readings, messages, errors, bumper
+     * contacts, true pose, gripper or camera, every sonar reading new, and not saying whether the motors
+     * are enabled.
      *
      * @param step       the step
      * @param timeMs     simulated time, ms
@@ -167,6 +84,7 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
      */
     public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
                       double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, new int[0], null);
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, new int[0], null,
+                List.of(), List.of(), 0, null, null, null, null, null);
     }
 }

@@ -36,7 +36,7 @@ final class Messages {
 
     /** A state whose time does not fit in an int, with a reading in every one of 16 sonars. */
     static RobotState state() {
-        return new RobotState(41, 3_000_000_123L, 1234.5, -678.25, 179.5, 350.0, -12.5, 337.5, 362.5, true,
+        return RobotStates.of(41, 3_000_000_123L, 1234.5, -678.25, 179.5, 350.0, -12.5, 337.5, 362.5, true,
                 new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400, 4301, 650, 640},
                 3, new int[] {8000, 7999, 1234, 20}, new HeatReading(12.5, -30.25, 2200),
                 List.of(new MessageDelivery("robot2", Command.Addressing.GROUP, "explorers", "text", "hello ✓", 40, 7)),

@@ -9,6 +9,7 @@ import java.util.List;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.params.RobotParametersReader;
 
 /**
@@ -37,7 +38,7 @@ final class ScriptedScout extends Scout {
     /** A state at step {@code step} (time step · 100 ms). */
     static RobotState at(long step, double x, double y, double th, double left, double right, int[] sonar,
                          int bumpers) {
-        return new RobotState(step, step * STEP_MS, x, y, th, (left + right) / 2, 0, left, right, false, sonar, 0,
+        return RobotStates.of(step, step * STEP_MS, x, y, th, (left + right) / 2, 0, left, right, false, sonar, 0,
                 new int[0], null, List.of(), List.of(), bumpers);
     }
 
@@ -77,7 +78,7 @@ final class ScriptedScout extends Scout {
             RobotState next = script.poll();
             if (next == null) {
                 RobotState s = state();
-                next = new RobotState(s.step() + 1, s.timeMs() + STEP_MS, s.x(), s.y(), s.th(), s.vel(),
+                next = RobotStates.of(s.step() + 1, s.timeMs() + STEP_MS, s.x(), s.y(), s.th(), s.vel(),
                         s.rotVel(), s.leftVel(), s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(),
                         s.heat(), List.of(), List.of(), s.bumpers());
             }

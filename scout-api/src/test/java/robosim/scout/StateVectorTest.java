@@ -6,7 +6,7 @@ import static robosim.scout.StateVector.*;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /** Where gs() puts each reading, and in which units. */
 class StateVectorTest {
@@ -97,7 +97,7 @@ class StateVectorTest {
 
     @Test
     void aRefusedRequestSetsTheErrorUntilTheNextGs() {
-        scout.queue(new RobotState(1, 100, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(),
+        scout.queue(RobotStates.of(1, 100, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(),
                 List.of("no robot named r9"), 0));
         assertTrue(scout.gs());
         assertEquals(1, scout.State[STATE_ERROR]);

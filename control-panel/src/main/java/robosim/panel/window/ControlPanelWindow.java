@@ -30,10 +30,8 @@ public final class ControlPanelWindow extends JFrame {
     private final transient PanelController controller;
     private final transient CountDownLatch closed = new CountDownLatch(1);
     private final LogPane log = new LogPane();
-    private final RunForm form;
     private final RunControls controls;
     private final RobotTable robots = new RobotTable();
-    private final RobotForm robotForm;
     private final ViewerPane view;
 
     /**
@@ -46,10 +44,11 @@ public final class ControlPanelWindow extends JFrame {
         view = new ViewerPane(model, new ViewState());
         // a method reference, not a lambda: the controls are made after the controller
         controller = new PanelController(model, log::append, this::showStatus, this::showLine);
-        form = new RunForm(worlds, selected, controller::start,
+        RunForm form = new RunForm(worlds, selected, controller::start,
                 a -> controller.attach(a.host(), a.viewerPort(), a.robotPort(), null), this::error);
         controls = new RunControls(controller::send, this::error, controller::restart);
-        robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected, this::error);
+        RobotForm robotForm = new RobotForm(controller::addRobot, (robot, r) -> controller.send(r), robots::selected,
+                this::error);
         form.load.addActionListener(e -> {
             try {
                 controller.send(Request.load(String.valueOf(form.world.getSelectedItem())));
@@ -155,16 +154,6 @@ public final class ControlPanelWindow extends JFrame {
     /** @return the robots' table, for tests */
     public RobotTable robots() {
         return robots;
-    }
-
-    /** @return the robot form, for tests */
-    public RobotForm robotForm() {
-        return robotForm;
-    }
-
-    /** @return the run form, for tests */
-    public RunForm runForm() {
-        return form;
     }
 
     /** @return the log, for tests */

@@ -20,11 +20,6 @@ final class PeriodicSensor {
         this.periodMs = periodMs;
     }
 
-    /** @return simulated ms between firings */
-    long periodMs() {
-        return periodMs;
-    }
-
     /**
      * @param afterMs the end of the previous step (exclusive)
      * @param toMs    the end of this step (inclusive)

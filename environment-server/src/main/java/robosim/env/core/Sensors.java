@@ -2,7 +2,7 @@ package robosim.env.core;
 
 import java.util.List;
 import java.util.random.RandomGenerator;
-import robosim.env.camera.Camera;
+import robosim.env.camera.RobotCamera;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
 import robosim.geometry.GeometryClient;
@@ -55,10 +55,10 @@ final class Sensors {
     }
 
     /** The pan-tilt-zoom camera and its ACTS colour tracking, read apart as it sees other robots. */
-    private final Camera camera = new Camera();
+    private final RobotCamera camera = new RobotCamera();
 
     /** @return the pan-tilt-zoom camera */
-    Camera camera() {
+    RobotCamera camera() {
         return camera;
     }
 
@@ -90,7 +90,7 @@ final class Sensors {
             heat = null;
         } else if (c instanceof Command.ReportTruePose t) {
             truePoseOn = t.on();
-        } else if (Camera.handles(c)) {
+        } else if (RobotCamera.handles(c)) {
             camera.configure(c);
         } else {
             throw new IllegalStateException("the sensors have no rule for " + c);

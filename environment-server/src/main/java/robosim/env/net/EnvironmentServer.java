@@ -268,7 +268,7 @@ public final class EnvironmentServer implements AutoCloseable {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
                 progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
-            String end = RunEnd.reason(sim(), rules, options.maxSteps());
+            String end = EndConditions.reason(sim(), rules, options.maxSteps());
             if (end == null) {
                 // control requests are carried out here, between steps, so the same requests at the same steps give the same run
                 end = control.atBoundary();

@@ -37,57 +37,6 @@ public record RunReport(long steps, long timeMs, String endReason, List<RobotSum
     }
 
     /**
-     * A report in which every robot of the world connected at some time.
-     *
-     * @param steps     steps simulated
-     * @param timeMs    simulated time, ms
-     * @param endReason why it ended
-     * @param robots    every robot at the end, in the world file's order
-     * @param wallNanos wall-clock time the steps took
-     * @param find      the confirmed find of the world's gold, or null
-     * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected, or 0
-     * @param departures the robots that went before the end, in the order they went
-     * @param joins     the robots that joined after the run started, in the order they came
-     */
-    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
-                     long connectedNanoTime, List<Departure> departures, List<Join> joins) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, departures, joins, List.of());
-    }
-
-    /**
-     * A report in which no robot joined after the start.
-     *
-     * @param steps     steps simulated
-     * @param timeMs    simulated time, ms
-     * @param endReason why it ended
-     * @param robots    every robot at the end, in the world file's order
-     * @param wallNanos wall-clock time the steps took
-     * @param find      the confirmed find of the world's gold, or null
-     * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected, or 0
-     * @param departures the robots that went before the end, in the order they went
-     */
-    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
-                     long connectedNanoTime, List<Departure> departures) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, departures, List.of());
-    }
-
-    /**
-     * A report in which every robot ran to the end.
-     *
-     * @param steps     steps simulated
-     * @param timeMs    simulated time, ms
-     * @param endReason why it ended
-     * @param robots    every robot at the end, in the world file's order
-     * @param wallNanos wall-clock time the steps took
-     * @param find      the confirmed find of the world's gold, or null
-     * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected, or 0
-     */
-    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
-                     long connectedNanoTime) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, connectedNanoTime, List.of(), List.of());
-    }
-
-    /**
      * @param robot a robot's name
      * @return how it last went before the end of the run, or empty if it ran to the end (or came back
      *         after it went: a join takes part from a later step than the one its robot went at)
@@ -112,19 +61,5 @@ public record RunReport(long steps, long timeMs, String endReason, List<RobotSum
      */
     public List<Join> joinsOf(String robot) {
         return joins.stream().filter(j -> j.robot().equals(robot)).toList();
-    }
-
-    /**
-     * A report that does not know when the robots connected ({@link #connectedNanoTime()} is 0).
-     *
-     * @param steps     steps simulated
-     * @param timeMs    simulated time, ms
-     * @param endReason why it ended
-     * @param robots    every robot at the end, in the world file's order
-     * @param wallNanos wall-clock time the steps took
-     * @param find      the confirmed find of the world's gold, or null
-     */
-    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find) {
-        this(steps, timeMs, endReason, robots, wallNanos, find, 0, List.of(), List.of());
     }
 }

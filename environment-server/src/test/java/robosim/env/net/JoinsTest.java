@@ -184,10 +184,15 @@ class JoinsTest {
                 rules.departures());
     }
 
+    /** @return the report of a run of 9 steps without robots, timings or a find, but these comings and goings */
+    private static RunReport report(List<Departure> departures, List<Join> joins) {
+        return new RunReport(9, 900, "done", List.of(), 0, null, 0, departures, joins, List.of());
+    }
+
     @Test
     void aRobotThatCameBackRanToTheEndInTheReport() {
-        RunReport report = new RunReport(9, 900, "done", List.of(), 0, null, 0,
-                List.of(new Departure("r2", Departure.Kind.LOST, 4, "gone")), List.of(new Join("r2", Join.Kind.REJOINED, 5)));
+        RunReport report = report(List.of(new Departure("r2", Departure.Kind.LOST, 4, "gone")),
+                List.of(new Join("r2", Join.Kind.REJOINED, 5)));
 
         assertEquals(Optional.empty(), report.departure("r2"));
         assertEquals(List.of(new Join("r2", Join.Kind.REJOINED, 5)), report.joinsOf("r2"));
@@ -196,8 +201,7 @@ class JoinsTest {
     @Test
     void aRobotThatWentAgainAfterComingBackIsReportedGone() {
         Departure second = new Departure("r2", Departure.Kind.LEFT, 5, "again");
-        RunReport report = new RunReport(9, 900, "done", List.of(), 0, null, 0,
-                List.of(new Departure("r2", Departure.Kind.LOST, 4, "gone"), second),
+        RunReport report = report(List.of(new Departure("r2", Departure.Kind.LOST, 4, "gone"), second),
                 List.of(new Join("r2", Join.Kind.REJOINED, 5)));
 
         assertEquals(Optional.of(second), report.departure("r2"));

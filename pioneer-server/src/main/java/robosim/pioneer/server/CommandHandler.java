@@ -73,7 +73,6 @@ final class CommandHandler {
     private final OdometryFrame frame;
     private final Set<Integer> loggedOnce = new HashSet<>();
     private volatile boolean sonarOn = true;
-    private volatile int bumpStall;
     private int transVelMax;
     private int rotVelMax;
     private int transAccel;
@@ -129,11 +128,6 @@ final class CommandHandler {
         return sonarOn;
     }
 
-    /** @return the BUMPSTALL setting: 0 none, 1 front, 2 rear, 3 both */
-    int bumpStall() {
-        return bumpStall;
-    }
-
     /**
      * Carries out one command.
      *
@@ -183,7 +177,7 @@ final class CommandHandler {
             case Commands.HEAD -> effects.request(new Command.SetHeading(frame.toEnvironmentHeading(d.intArgument("degrees"))));
             case Commands.DHEAD -> effects.request(new Command.SetDeltaHeading(d.intArgument("degrees")));
             case Commands.BUMPSTALL -> {
-                bumpStall = d.intArgument("argument");
+                int bumpStall = d.intArgument("argument"); // 0 none, 1 front, 2 rear, 3 both
                 once(id, "robot " + robot + ": BUMPSTALL " + bumpStall + " noted; a RoboSim robot stalls on any"
                         + " contact, whatever the setting");
             }

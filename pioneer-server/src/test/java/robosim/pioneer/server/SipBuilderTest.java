@@ -7,13 +7,14 @@ import org.junit.jupiter.api.Test;
 import robosim.params.ConversionFactors;
 import robosim.pioneer.Sip;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 class SipBuilderTest {
     static final ConversionFactors P3DX = new ConversionFactors(0.001534, 0.485, 1, 1, 0.0056, 20);
 
     private static RobotState state(double x, double y, double th, double left, double right, boolean stalled,
                                     int[] sonar, int bumpers) {
-        return new RobotState(5, 500, x, y, th, (left + right) / 2, 12.5, left, right, stalled, sonar, 0, new int[0],
+        return RobotStates.of(5, 500, x, y, th, (left + right) / 2, 12.5, left, right, stalled, sonar, 0, new int[0],
                 null, List.of(), List.of(), bumpers);
     }
 

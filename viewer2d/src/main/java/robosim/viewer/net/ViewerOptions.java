@@ -94,14 +94,6 @@ public record ViewerOptions(String host, int port, String name,
         return new ViewerOptions(host, port, name, connectTimeout, newTimeout, maxFrame);
     }
 
-    /**
-     * @param newMaxFrame the largest frame payload accepted, in bytes
-     * @return these options with it
-     */
-    public ViewerOptions withMaxFrame(int newMaxFrame) {
-        return new ViewerOptions(host, port, name, connectTimeout, readTimeout, newMaxFrame);
-    }
-
     /** @return {@code host:port}, for messages */
     public String peer() {
         return host + ":" + port;

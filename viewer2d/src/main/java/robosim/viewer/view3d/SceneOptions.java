@@ -81,15 +81,6 @@ public record SceneOptions(int width, Camera camera, Light light, boolean showNa
     }
 
     /**
-     * @param newLight the light
-     * @return these options with it
-     */
-    public SceneOptions withLight(Light newLight) {
-        return new SceneOptions(width, camera, newLight, showNames, showTrails, showCaption, showSonar, showLaser,
-                showKey);
-    }
-
-    /**
      * @param names   whether to label robots
      * @param trails  whether to draw trails
      * @param caption whether to write the caption

@@ -8,7 +8,7 @@ import java.util.Locale;
 import robosim.comms.CommsSettings;
 import robosim.env.world.Noise;
 import robosim.env.world.Obstacle;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
 import robosim.env.world.map.MapFile;
@@ -23,7 +23,7 @@ import robosim.geometry.Pose2D;
  */
 final class MapWorlds {
     /** The robot a map's world has when none is asked for. */
-    static final RobotRequest DEFAULT_ROBOT = new RobotRequest("p3dx", null);
+    static final RobotToPlace DEFAULT_ROBOT = new RobotToPlace("p3dx", null);
     /** How far each robot past the homes starts from the one before, along -y, mm (as MobileSim). */
     static final double ROBOT_SPACING = 1000;
 
@@ -37,15 +37,15 @@ final class MapWorlds {
     }
 
     /**
-     * Reads a map as a world: its walls and points, its forbidden zones, and the requested robots
+     * Reads a map as a world: its walls and points, its forbidden zones, and the robots to place
      * (one {@code p3dx} if none) at its homes.
      */
-    static World read(Path file, List<RobotRequest> requests) {
+    static World read(Path file, List<RobotToPlace> toPlace) {
         MapGeometry map = geometry(file, file, 0);
         Attributes attributes = new Attributes(file);
         List<Obstacle> obstacles = map.obstacles();
         RobotPlacer placer = new RobotPlacer(attributes, map.bounds(), obstacles, names(obstacles));
-        List<RobotSpec> robots = place(placer, requests.isEmpty() ? List.of(DEFAULT_ROBOT) : requests, map.homes());
+        List<RobotSpec> robots = place(placer, toPlace.isEmpty() ? List.of(DEFAULT_ROBOT) : toPlace, map.homes());
         String name = file.getFileName().toString();
         name = name.substring(0, name.length() - ".map".length());
         return new World(name, file, map.bounds().width(), map.bounds().height(), WorldReader.DEFAULT_STEP_MS,
@@ -73,16 +73,16 @@ final class MapWorlds {
     }
 
     /**
-     * Places the requested robots: the first at the first home, each further one at the next home,
+     * Places the robots asked for: the first at the first home, each further one at the next home,
      * or, when the homes have run out, {@value #ROBOT_SPACING} mm along -y from the one before.
      */
-    static List<RobotSpec> place(RobotPlacer placer, List<RobotRequest> requests, List<Pose2D> homes) {
-        List<String> names = RobotRequest.names(requests);
+    static List<RobotSpec> place(RobotPlacer placer, List<RobotToPlace> toPlace, List<Pose2D> homes) {
+        List<String> names = RobotToPlace.names(toPlace);
         List<RobotSpec> robots = new ArrayList<>();
         Pose2D at = null;
-        for (int i = 0; i < requests.size(); i++) {
+        for (int i = 0; i < toPlace.size(); i++) {
             at = i < homes.size() ? homes.get(i) : new Pose2D(at.x(), at.y() - ROBOT_SPACING, at.th());
-            robots.add(placer.place(requests.get(i), names.get(i), at));
+            robots.add(placer.place(toPlace.get(i), names.get(i), at));
         }
         return robots;
     }

@@ -20,7 +20,7 @@ import robosim.protocol.RobotParameters;
 import robosim.params.RobotParametersReader;
 import robosim.env.world.Bounds;
 import robosim.env.world.Obstacle;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.params.RobotParameterFiles;
 import robosim.env.world.RobotSpec;
 import robosim.protocol.LogLimiter;
@@ -111,21 +111,21 @@ final class RobotPlacer {
      * Places a robot asked for with {@code --robot}; its problems are reported with line 0, as the
      * option's, not the file's.
      *
-     * @param request the option
+     * @param robot   the option's robot
      * @param name    the robot's name
      * @param pose    where it starts
      * @return the robot, checked and placed
      */
-    RobotSpec place(RobotRequest request, String name, Pose2D pose) {
+    RobotSpec place(RobotToPlace robot, String name, Pose2D pose) {
         Element option = new RobotElement();
         Path file;
         try {
-            file = RobotParameterFiles.resolve(request.type()).toAbsolutePath().normalize();
+            file = RobotParameterFiles.resolve(robot.type()).toAbsolutePath().normalize();
         } catch (IllegalArgumentException ex) {
-            throw attributes.error(option, "--robot " + request + ": " + ex.getMessage());
+            throw attributes.error(option, "--robot " + robot + ": " + ex.getMessage());
         }
-        String type = RobotKind.ofRobotClass(parameters(option, name, request.type(), file).robotClass()).id();
-        return place(option, name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), request.type(), file);
+        String type = RobotKind.ofRobotClass(parameters(option, name, robot.type(), file).robotClass()).id();
+        return place(option, name, type, pose.x(), pose.y(), Math.toDegrees(pose.th()), robot.type(), file);
     }
 
     private RobotSpec place(Element e, String name, String type, double x, double y, double th, String params,

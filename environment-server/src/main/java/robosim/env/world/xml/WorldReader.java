@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import robosim.comms.CommsSettings;
 import robosim.env.world.Bounds;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.World;
 import robosim.env.world.map.MapGeometry;
 import robosim.geometry.Pose2D;
@@ -47,14 +47,14 @@ public final class WorldReader {
      * -y from the one before.
      *
      * @param file     the world or map file
-     * @param requests robots to add; for a map, none means one {@code p3dx}
+     * @param toPlace  robots to add; for a map, none means one {@code p3dx}
      * @return the world
      * @throws WorldFileException if a file cannot be read or breaks a rule of the format, or a
      *                            requested robot cannot be placed (the message then names it)
      */
-    public static World read(Path file, List<RobotRequest> requests) {
+    public static World read(Path file, List<RobotToPlace> toPlace) {
         if (MapWorlds.isMap(file)) {
-            return MapWorlds.read(file, requests);
+            return MapWorlds.read(file, toPlace);
         }
         WorldElement root = ElementReader.read(file);
         Attributes attributes = new Attributes(file);
@@ -139,7 +139,7 @@ public final class WorldReader {
         }
         List<Pose2D> homes = map != null ? map.homes()
                 : List.of(new Pose2D(bounds.minX() + width / 2, bounds.minY() + height / 2, 0));
-        robots.addAll(MapWorlds.place(placer, requests, homes));
+        robots.addAll(MapWorlds.place(placer, toPlace, homes));
         ObjectPlacer objectPlacer = new ObjectPlacer(attributes, bounds, obstacles, obstacleNames, robots);
         List<WorldObject> objects = new ArrayList<>();
         for (Element child : root.children) {

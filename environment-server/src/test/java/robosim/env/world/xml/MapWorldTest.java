@@ -13,7 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 import java.nio.file.Path;
 import robosim.env.world.Bounds;
 import robosim.env.world.ForbiddenZone;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
 
@@ -53,7 +53,7 @@ class MapWorldTest {
         fixtures = new WorldFixtures(dir);
     }
 
-    private World map(String text, RobotRequest... robots) {
+    private World map(String text, RobotToPlace... robots) {
         return WorldReader.read(fixtures.write("lab.map", text), List.of(robots));
     }
 
@@ -94,7 +94,7 @@ class MapWorldTest {
 
     @Test
     void twoRobotsWithOneHomeStartOneMetreApartAlongMinusY() {
-        List<RobotSpec> robots = map(LAB, new RobotRequest("p3dx", null), new RobotRequest("p3at", "scout2")).robots();
+        List<RobotSpec> robots = map(LAB, new RobotToPlace("p3dx", null), new RobotToPlace("p3at", "scout2")).robots();
         assertEquals(List.of("p3dx_1", "scout2"), robots.stream().map(RobotSpec::name).toList());
         assertEquals(List.of(1000.0, 0.0, 90.0), List.of(robots.get(1).x(), robots.get(1).y(), robots.get(1).th()));
         assertEquals("p3at.p", robots.get(1).parameterFile().getFileName().toString());
@@ -103,8 +103,8 @@ class MapWorldTest {
     @Test
     void eachRobotTakesTheNextHome() {
         String twoHomes = LAB.replace("Cairn: Goal", "Cairn: RobotHome -1000 0 180 \"\" ICON \"Home2\"\nCairn: Goal");
-        List<RobotSpec> robots = map(twoHomes, new RobotRequest("p3dx", null), new RobotRequest("p3dx", null),
-                new RobotRequest("p3dx", null)).robots();
+        List<RobotSpec> robots = map(twoHomes, new RobotToPlace("p3dx", null), new RobotToPlace("p3dx", null),
+                new RobotToPlace("p3dx", null)).robots();
         assertEquals(List.of("p3dx_1", "p3dx_2", "p3dx_3"), robots.stream().map(RobotSpec::name).toList());
         assertEquals(List.of(-1000.0, 0.0, 180.0), List.of(robots.get(1).x(), robots.get(1).y(), robots.get(1).th()));
         assertEquals(List.of(-1000.0, -1000.0), List.of(robots.get(2).x(), robots.get(2).y()));
@@ -123,8 +123,8 @@ class MapWorldTest {
     @Test
     void aRobotThatWouldStartInAWallIsNamed() {
         // the second robot, 1 m below the home, is clear; the fourth would straddle the bottom wall
-        WorldFileException e = assertThrows(WorldFileException.class, () -> map(LAB, new RobotRequest("p3dx", null),
-                new RobotRequest("p3dx", null), new RobotRequest("p3dx", null), new RobotRequest("p3dx", null)));
+        WorldFileException e = assertThrows(WorldFileException.class, () -> map(LAB, new RobotToPlace("p3dx", null),
+                new RobotToPlace("p3dx", null), new RobotToPlace("p3dx", null), new RobotToPlace("p3dx", null)));
         assertEquals(0, e.line());
         assertTrue(e.rule().contains("robot 'p3dx_4' at (1000, -2000) overlaps the map's obstacle from line 12"),
                 e.getMessage());
@@ -132,7 +132,7 @@ class MapWorldTest {
 
     @Test
     void anUnknownRobotTypeIsNamed() {
-        WorldFileException e = assertThrows(WorldFileException.class, () -> map(LAB, new RobotRequest("p9dx", null)));
+        WorldFileException e = assertThrows(WorldFileException.class, () -> map(LAB, new RobotToPlace("p9dx", null)));
         assertTrue(e.rule().startsWith("--robot p9dx: robot parameter file 'p9dx' not found"), e.getMessage());
     }
 
@@ -171,7 +171,7 @@ class MapWorldTest {
                   <robot name="r1" type="pioneer" x="-1000" y="0" th="0" params="../robots/p3dx.p"/>
                 </world>
                 """);
-        World w = WorldReader.read(file, List.of(new RobotRequest("p3at", null)));
+        World w = WorldReader.read(file, List.of(new RobotToPlace("p3at", null)));
         assertEquals(List.of("r1", "p3at_1"), w.robots().stream().map(RobotSpec::name).toList());
         assertEquals(List.of(1000.0, 1000.0), List.of(w.robots().get(1).x(), w.robots().get(1).y()));
         // the boundary walls run along the map's world, not along (0, 0)

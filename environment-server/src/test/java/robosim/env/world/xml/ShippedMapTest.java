@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.env.world.ForbiddenZone;
-import robosim.env.world.RobotRequest;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
 
@@ -19,7 +19,7 @@ class ShippedMapTest {
 
     @Test
     void theTourRobotsStartAtTheTwoHomes() {
-        World w = WorldReader.read(OFFICE, List.of(new RobotRequest("p3dx", "r1"), new RobotRequest("p3dx", "r2")));
+        World w = WorldReader.read(OFFICE, List.of(new RobotToPlace("p3dx", "r1"), new RobotToPlace("p3dx", "r2")));
         assertEquals(List.of("r1", "r2"), w.robots().stream().map(RobotSpec::name).toList());
         RobotSpec r1 = w.robots().get(0);
         RobotSpec r2 = w.robots().get(1);

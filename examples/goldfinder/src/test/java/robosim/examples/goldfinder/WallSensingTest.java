@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Timeout;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 import robosim.hw.RobotSensorResponse;
-import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarUnit;
 
@@ -53,7 +53,7 @@ class WallSensingTest {
 
         /** One cycle standing at the centre of cell (0, 0) of a 1500 mm maze, facing {@code th}. */
         void reads(double th, int[] laser, int[] sonar) {
-            responded(new RobotSensorResponse(new RobotState(1, 100, 750, 750, th, 0, 0, 0, 0, false, sonar, 0,
+            responded(new RobotSensorResponse(RobotStates.of(1, 100, 750, 750, th, 0, 0, 0, 0, false, sonar, 0,
                     laser, null)));
         }
     }

@@ -13,17 +13,17 @@ import java.util.Map;
  * @param type the parameter file: a shipped name or a path
  * @param name the robot's name, or {@code null} for the default, {@code TYPE_N}
  */
-public record RobotRequest(String type, String name) {
+public record RobotToPlace(String type, String name) {
 
     /**
      * Reads {@code TYPE} or {@code TYPE:NAME}. The name follows the last colon, so a path with a
      * drive letter ({@code C:\robots\p3dx.p}) needs a name after it.
      *
      * @param text the option's value
-     * @return the request
+     * @return the robot to place
      * @throws IllegalArgumentException if the type or the name is empty
      */
-    public static RobotRequest parse(String text) {
+    public static RobotToPlace parse(String text) {
         int colon = text.lastIndexOf(':');
         String type = colon < 0 ? text : text.substring(0, colon);
         String name = colon < 0 ? null : text.substring(colon + 1);
@@ -35,7 +35,7 @@ public record RobotRequest(String type, String name) {
             throw new IllegalArgumentException("'" + text + "' was supplied for --robot: the NAME after ':' is empty"
                     + " (leave out ':' for the default name)");
         }
-        return new RobotRequest(type, name);
+        return new RobotToPlace(type, name);
     }
 
     /**
@@ -43,13 +43,13 @@ public record RobotRequest(String type, String name) {
      * name without its extension and folder, numbered from 1 in order among the robots of that
      * type ({@code p3dx_1}, {@code p3dx_2}, {@code p3at_1}).
      *
-     * @param requests the requests, in order
+     * @param toPlace the robots to place, in order
      * @return their names, in the same order
      */
-    public static List<String> names(List<RobotRequest> requests) {
+    public static List<String> names(List<RobotToPlace> toPlace) {
         Map<String, Integer> counts = new HashMap<>();
         List<String> names = new ArrayList<>();
-        for (RobotRequest r : requests) {
+        for (RobotToPlace r : toPlace) {
             String base = r.baseType();
             int n = counts.merge(base, 1, Integer::sum);
             names.add(r.name != null ? r.name : base + "_" + n);

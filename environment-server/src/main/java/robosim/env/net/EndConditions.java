@@ -8,8 +8,8 @@ import robosim.env.world.EndRule;
  * When a run ends of itself: the world's {@link EndRule}, and {@code env --steps} whatever the rule.
  * Checked by the step loop between steps.
  */
-final class RunEnd {
-    private RunEnd() {
+final class EndConditions {
+    private EndConditions() {
     }
 
     /**

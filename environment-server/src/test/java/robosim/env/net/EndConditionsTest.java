@@ -18,7 +18,7 @@ import robosim.env.world.xml.WorldReader;
  * When a run ends of itself under each of the world's end rules, with {@code empty-room.xml}'s r1
  * and r2 marked connected or gone through the session rules (no sockets: robots are only counted).
  */
-class RunEndTest {
+class EndConditionsTest {
     private static World emptyRoom(EndRule end) {
         Path p = Path.of(System.getProperty("robosim.root", "")).toAbsolutePath();
         while (!Files.isDirectory(p.resolve("testLoadFiles"))) {
@@ -39,7 +39,7 @@ class RunEndTest {
         Simulation sim = new Simulation(emptyRoom(EndRule.DEFAULT));
         SessionRules rules = new SessionRules(sim);
 
-        assertEquals("every robot has disconnected", RunEnd.reason(sim, rules, 0));
+        assertEquals("every robot has disconnected", EndConditions.reason(sim, rules, 0));
     }
 
     @Test
@@ -48,9 +48,9 @@ class RunEndTest {
         SessionRules rules = new SessionRules(sim);
         steps(sim, 4);
 
-        assertNull(RunEnd.reason(sim, rules, 0));
+        assertNull(EndConditions.reason(sim, rules, 0));
         steps(sim, 1);
-        assertEquals("the world's step limit 5 reached", RunEnd.reason(sim, rules, 0));
+        assertEquals("the world's step limit 5 reached", EndConditions.reason(sim, rules, 0));
     }
 
     @Test
@@ -59,7 +59,7 @@ class RunEndTest {
         SessionRules rules = new SessionRules(sim);
         steps(sim, 3);
 
-        assertEquals("step limit 3 reached", RunEnd.reason(sim, rules, 3));
+        assertEquals("step limit 3 reached", EndConditions.reason(sim, rules, 3));
     }
 
     @Test
@@ -69,12 +69,12 @@ class RunEndTest {
         rules.connectedRobots().put("r1", null);
         rules.connectedRobots().put("r2", null);
         rules.start();
-        assertNull(RunEnd.reason(sim, rules, 0));
+        assertNull(EndConditions.reason(sim, rules, 0));
 
         rules.drop("r2", "removed by control client c after step 0");
 
         assertEquals("robot r2 dropped at step 0: removed by control client c after step 0 (the world ends the run"
-                + " when any robot leaves)", RunEnd.reason(sim, rules, 0));
+                + " when any robot leaves)", EndConditions.reason(sim, rules, 0));
     }
 
     @Test
@@ -86,8 +86,8 @@ class RunEndTest {
         rules.start();
         rules.drop("r2", "removed");
 
-        assertNull(RunEnd.reason(sim, rules, 0));
+        assertNull(EndConditions.reason(sim, rules, 0));
         rules.drop("r1", "removed");
-        assertEquals("every robot has disconnected", RunEnd.reason(sim, rules, 0));
+        assertEquals("every robot has disconnected", EndConditions.reason(sim, rules, 0));
     }
 }

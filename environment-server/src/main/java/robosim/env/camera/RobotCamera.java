@@ -16,7 +16,7 @@ import robosim.protocol.PtzModel;
  * <p>The channels start bound to {@link #DEFAULT_CHANNELS}: channel 1 red, 2 green, 3 blue,
  * 4 yellow, 5 cyan, 6 magenta, 7 orange, 8 purple; channels 9 to 32 are free.
  */
-public final class Camera {
+public final class RobotCamera {
     /** The lens's height when the robot does not give one, mm: a VC-C4 on a Pioneer 3-DX's top plate. */
     public static final double DEFAULT_MOUNT_HEIGHT = 300;
     /** The colours channels 1 to 8 start bound to. */
@@ -32,7 +32,7 @@ public final class Camera {
     private CameraView view;
 
     /** A camera switched off, its channels at their defaults. */
-    public Camera() {
+    public RobotCamera() {
         System.arraycopy(DEFAULT_RGB, 0, channels, 0, channels.length);
     }
 
