@@ -183,6 +183,7 @@ public class ArActionGotoStraight extends ArAction {
         if (state != State.GOING_TO_GOAL) {
             return null;
         }
+        desired.reset(); // as ARIA's: only what this cycle sets, not what an earlier one did
         ArRobot robot = getRobot();
         ArPose at = robot.getPose();
         distTravelled += at.findDistanceTo(lastPose);

@@ -3,6 +3,7 @@ package robosim.aria;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -84,6 +85,37 @@ class ArActionGotoStraightTest {
         assertEquals(90, d.getHeading(), 1e-9);
         assertEquals(0, d.getVelStrength(), "no forward motion yet");
         assertEquals(50, d.getMaxRotVel());
+    }
+
+    @Test
+    void whileDrivingTheRotationIsLimitedToTheMaxRotVelAndZeroMeansTheRobotsOwn() {
+        f.at(0, 0, 0, 0);
+        go.setGoal(new ArPose(1000, 0, 0));
+        go.setMaxRotVel(20);
+        ArActionDesired d = ActionFixture.fire(go);
+        assertEquals(400, d.getVel());
+        assertEquals(20, d.getMaxRotVel());
+        assertEquals(ArActionDesired.MAX_STRENGTH, d.getMaxRotVelStrength());
+        go.setMaxRotVel(0);
+        f.at(10, 0, 0, 100);
+        assertEquals(0, ActionFixture.fire(go).getMaxRotVelStrength(), "no limit of its own");
+        assertThrows(IllegalArgumentException.class, () -> go.setMaxRotVel(-1));
+    }
+
+    @Test
+    void eachFiringWantsOnlyWhatThisCycleNeedsAsAriasResetDesireDoes() {
+        f.at(0, 0, 0, 0);
+        go.setGoal(new ArPose(1000, 0, 0));
+        go.setTurnThreshold(30);
+        go.setMaxRotVel(20);
+        ArActionDesired driving = ActionFixture.fire(go);
+        assertEquals(400, driving.getVel());
+        f.at(10, 0, 90, 0); // turned away: the goal is now 90 degrees off
+        ArActionDesired turning = ActionFixture.fire(go);
+        assertEquals(0, turning.getVelStrength(), "turning in place: the last cycle's speed is not wanted again");
+        assertEquals(0, turning.getMaxRotVelStrength(), "nor the driving limit, with no turn speed set");
+        assertEquals(0, turning.getHeading(), 1e-6, "towards the goal, along +x");
+        assertSame(turning, go.getDesired(), "getDesired is the last firing's desire");
     }
 
     @Test

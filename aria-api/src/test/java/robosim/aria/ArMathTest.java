@@ -38,4 +38,10 @@ class ArMathTest {
         assertEquals(Integer.MIN_VALUE, ArMath.roundInt(-1e12));
         assertEquals(0, ArMath.roundInt(Double.NaN));
     }
+
+    @ParameterizedTest
+    @CsvSource({"10, 30, -20", "170, -170, -20", "-170, 170, 20", "90, -90, 180", "0, 0, 0"})
+    void subAngleIsTheDifferenceFixedIntoMinus180To180(double a, double b, double difference) {
+        assertEquals(difference, ArMath.subAngle(a, b), 1e-9);
+    }
 }

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.CameraView;
 import robosim.protocol.ColorBlob;
+import robosim.protocol.Command;
 import robosim.protocol.PtzModel;
 import robosim.protocol.RobotState;
 
@@ -108,5 +109,31 @@ class ArPTZTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> acts.setChannelColor(0, "red"));
         assertTrue(e.getMessage().contains("channels are 1 to 32"), e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> acts.setChannelColor(2, "#gg0000"));
+    }
+
+    @Test
+    void closingThePortStopsTheTrackingOnce() {
+        ConnectedRobot robot = new ConnectedRobot("p3dx");
+        ArACTS_1_2 acts = new ArACTS_1_2();
+        assertFalse(acts.closePort(), "never opened");
+        acts.openPort(robot);
+        assertTrue(acts.closePort());
+        assertFalse(acts.isConnected());
+        assertFalse(acts.closePort(), "already closed");
+        assertEquals(List.of(new Command.TrackColors(true), new Command.TrackColors(false)), robot.sent);
+    }
+
+    @Test
+    void aBlobsFieldsAreSetOneByOne() {
+        ArACTSBlob blob = new ArACTSBlob();
+        blob.setArea(120);
+        blob.setXCG(40);
+        blob.setYCG(30);
+        blob.setLeft(35);
+        blob.setRight(45);
+        blob.setTop(25);
+        blob.setBottom(36);
+        assertEquals(List.of(120, 40, 30, 35, 45, 25, 36), List.of(blob.getArea(), blob.getXCG(), blob.getYCG(),
+                blob.getLeft(), blob.getRight(), blob.getTop(), blob.getBottom()));
     }
 }

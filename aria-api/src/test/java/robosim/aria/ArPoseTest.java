@@ -30,4 +30,19 @@ class ArPoseTest {
         assertEquals(-90, ArMath.fixAngle(270), 1e-9);
         assertEquals(0, ArMath.fixAngle(720), 1e-9);
     }
+
+    @Test
+    void setPoseAndSetYChangeItInPlaceAndTheSquaredDistanceSparesTheRoot() {
+        ArPose p = new ArPose();
+        p.setPose(30, 40, 370);
+        assertEquals(30, p.getX());
+        assertEquals(40, p.getY());
+        assertEquals(10, p.getTh(), 1e-9, "normalised");
+        p.setY(-40);
+        assertEquals(-40, p.getY());
+        assertEquals(30, p.getX(), "the rest unchanged");
+        ArPose origin = new ArPose();
+        assertEquals(2500, p.squaredFindDistanceTo(origin), 1e-9);
+        assertEquals(p.findDistanceTo(origin) * p.findDistanceTo(origin), origin.squaredFindDistanceTo(p), 1e-9);
+    }
 }

@@ -146,4 +146,36 @@ class ArSickBufferTest {
         Cycles.cycle(robot, 300, -4983, 0, 0);
         assertTrue(sick.getCumulativeBuffer().isEmpty());
     }
+
+    @Test
+    void aWiderInsertDistanceLetsFartherReadingsInAndOneOrLessLetsAnyIn() {
+        sick.setMaxInsertDistCumulative(5000);
+        assertEquals(5000, sick.getMaxInsertDistCumulative());
+        scan(100, 90, 4000);
+        assertEquals(1, sick.getCumulativeBuffer().size());
+        sick.setMaxInsertDistCumulative(1);
+        scan(200, 45, 5900);
+        assertEquals(2, sick.getCumulativeBuffer().size(), "any reading that hit something");
+    }
+
+    @Test
+    void aCleanIntervalOfZeroCleansWithEveryScan() {
+        scan(100, 90, 1000);
+        assertEquals(1, sick.getCumulativeBuffer().size());
+        sick.setCumulativeCleanInterval(0);
+        assertEquals(0, sick.getCumulativeCleanInterval());
+        ringScan(200, 2500); // 100 ms later: cleaned all the same
+        assertTrue(sick.getCumulativeBuffer().stream().noneMatch(p -> p.getX() == 1018 && p.getY() == 0),
+                sick.getCumulativeBuffer().toString());
+    }
+
+    @Test
+    void aCleanDistanceBelowOneNeverCleans() {
+        sick.setCumulativeCleanDist(0);
+        assertEquals(0, sick.getCumulativeCleanDist());
+        scan(100, 90, 1000);
+        ringScan(1101, 2500); // a clean is due, but clears nothing
+        assertTrue(sick.getCumulativeBuffer().stream().anyMatch(p -> p.getX() == 1018 && p.getY() == 0),
+                sick.getCumulativeBuffer().toString());
+    }
 }

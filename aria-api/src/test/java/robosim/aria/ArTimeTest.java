@@ -89,4 +89,21 @@ class ArTimeTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> t.setSec(-1));
         assertEquals("-1 was supplied for sec: simulated time is 0 or more", e.getMessage());
     }
+
+    @Test
+    void theSixtyFourBitNamesAnswerAsThePlainOnes() {
+        ArTime start = new ArTime(); // 1500
+        ArTime later = new ArTime(start);
+        assertTrue(later.addMSecLL(2700)); // 4200
+        assertEquals(2, start.secSinceLL(later), "4200 - 1500 ms, whole seconds");
+        assertEquals(4, later.getSecLL());
+        assertEquals(200, later.getMSecLL());
+        Cycles.cycle(robot, 3700, 0, 0, 0);
+        assertEquals(2, start.secSinceLL(), "2200 ms ago");
+        assertEquals(500, later.mSecToLL(), "500 ms ahead");
+        assertEquals(0, later.secToLL(), "truncated");
+        assertEquals(-2, start.secToLL());
+        assertFalse(later.addMSecLL(-5000), "below 0");
+        assertEquals(0, later.getTimeMs());
+    }
 }

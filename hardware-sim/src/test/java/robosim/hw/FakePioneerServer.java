@@ -84,7 +84,7 @@ final class FakePioneerServer implements AutoCloseable {
             for (int i = 0; i < sips; i++) {
                 out.write(new Sip(false, 10 * i, 0, 0, 0, 0, 130, 0, 0, Sip.FLAG_SONARS, 0,
                         List.of(new Sip.SonarReading(3, 700)), 0xff, 0xff, 130, 0, 0, 0, 0, -127, 0).toPacket().encode());
-                Thread.sleep(50);
+                Thread.sleep(50); // MobileSim's SIP cycle: a peer's pace, what the link under test must follow
             }
         }
     }

@@ -14,6 +14,8 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
@@ -30,6 +32,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Await;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameReader;
@@ -56,6 +59,8 @@ class HardwareSimulatorTest {
     private HardwareSimulator made;
     private final BlockingQueue<RobotSensorResponse> responses = new LinkedBlockingQueue<>();
     private final RobotCode code = new RobotCode();
+    /** The thread {@link #connecting} connects on. */
+    private Thread connector;
     private FakeEnvironment env;
 
     @BeforeEach
@@ -99,7 +104,7 @@ class HardwareSimulatorTest {
     /** Connects on a thread of its own, for tests of a connect that fails. */
     private CompletableFuture<Welcome> connecting(HardwareSimulator hw, int port) {
         CompletableFuture<Welcome> welcome = new CompletableFuture<>();
-        code.start("connecting", () -> {
+        connector = code.start("connecting", () -> {
             try {
                 welcome.complete(hw.connect("127.0.0.1", port));
             } catch (Throwable e) {
@@ -189,7 +194,8 @@ class HardwareSimulatorTest {
         int port = FakeEnvironment.closedPort();
         HardwareSimulator hw = hardware("r1", OPTIONS);
         CompletableFuture<Welcome> welcome = connecting(hw, port);
-        Thread.sleep(300); // a deliberate head start, not a wait: the robot finds nobody at first
+        Await.until(Duration.ofMillis(WAIT_MS), "the robot found nobody and waits to try again",
+                () -> waitsToRetry(connector));
         try (ServerSocket late = new ServerSocket()) {
             late.setReuseAddress(true);
             try {
@@ -209,6 +215,12 @@ class HardwareSimulatorTest {
                 assertEquals(new Bye("the test is over"), in.read());
             }
         }
+    }
+
+    /** @return whether the thread is pausing between two connect attempts: it found nobody listening */
+    private static boolean waitsToRetry(Thread t) {
+        return t.getState() == Thread.State.TIMED_WAITING
+                && Arrays.stream(t.getStackTrace()).anyMatch(f -> f.getMethodName().equals("connectSocket"));
     }
 
     // ---- each step's requests ----

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robosim.hw.FakeLink.WAIT_MS;
 
 import java.io.IOException;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CountDownLatch;
@@ -18,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Await;
 import robosim.protocol.Command;
 import robosim.protocol.RobotHello;
 
@@ -92,11 +94,7 @@ class HardwareSimulatorUnitTest {
     @Test
     void aStepThatWakesNobodyIsAnsweredByTheLinksThreadAtOnce() throws Exception {
         Thread code = robot(() -> hw.await(t -> t >= 10_000));
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
-        while (code.getState() != Thread.State.WAITING) {
-            assertTrue(System.nanoTime() < deadline, "the code never yielded");
-            Thread.sleep(1);
-        }
+        Await.until(Duration.ofMillis(WAIT_MS), "the code yields", () -> code.getState() == Thread.State.WAITING);
 
         for (long step = 1; step <= 2; step++) {
             link.step(step);

@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -21,6 +22,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Await;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameReader;
@@ -170,10 +172,7 @@ class SharedLinkTest {
         assertFalse(r1.isEnded());
         out.write(new Bye("done: step limit 2 reached"));
         assertEquals(null, in.read(), "the link closes");
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
-        while (!r1.isEnded() && System.nanoTime() < deadline) {
-            Thread.sleep(5);
-        }
+        Await.until(Duration.ofMillis(WAIT_MS), "r1 ends with the link", r1::isEnded);
         assertEquals(RunEnd.Kind.RUN_ENDED, r1.runEnd().kind());
         assertEquals("step limit 2 reached", r1.endReason());
     }

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
@@ -20,6 +21,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import robosim.protocol.Await;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
 import robosim.protocol.FrameReader;
@@ -81,12 +83,9 @@ class StepGateTest {
     }
 
     /** Waits (bounded) until {@code t} is blocked in {@code Object.wait}. */
-    private static void awaitWaiting(Thread t) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
-        while (t.getState() != Thread.State.WAITING && t.getState() != Thread.State.TIMED_WAITING) {
-            assertTrue(System.nanoTime() < deadline, t.getName() + " never started waiting: " + t.getState());
-            Thread.sleep(2);
-        }
+    private static void awaitWaiting(Thread t) {
+        Await.until(Duration.ofMillis(WAIT_MS), t.getName() + " starts waiting",
+                () -> t.getState() == Thread.State.WAITING || t.getState() == Thread.State.TIMED_WAITING);
     }
 
     @Test
@@ -150,16 +149,17 @@ class StepGateTest {
         });
         assertTrue(joined.await(WAIT_MS, TimeUnit.MILLISECONDS));
         AtomicReference<String> state = new AtomicReference<>("old");
-        assertFalse(gate.advance(1, 100, () -> state.set("new")), "held: nobody may send yet");
-        Thread.sleep(150);
-        assertEquals("old", state.get(), "the state must not change while the robot's code runs");
+        CountDownLatch installed = new CountDownLatch(1);
+        assertFalse(gate.advance(1, 100, () -> {
+            state.set("new");
+            installed.countDown();
+        }), "held: nobody may send yet");
+        assertFalse(installed.await(150, TimeUnit.MILLISECONDS), "the state must not change while the robot's code runs");
+        assertEquals("old", state.get());
         assertEquals(0, gate.step());
         mayYield.countDown();
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WAIT_MS);
-        while (!"new".equals(state.get()) && System.nanoTime() < deadline) {
-            Thread.sleep(2);
-        }
-        assertEquals("new", state.get(), "installed by the thread that yielded");
+        assertTrue(installed.await(WAIT_MS, TimeUnit.MILLISECONDS), "installed by the thread that yielded");
+        assertEquals("new", state.get());
         assertEquals(1, gate.step());
     }
 
@@ -237,7 +237,8 @@ class StepGateTest {
 
         gate.advance(1, 100, () -> {
             try {
-                Thread.sleep(100); // a slow update: a waiter woken early would see "old"
+                // a slow update: it waits for a waiter woken early, who would see "old"
+                woke.await(100, TimeUnit.MILLISECONDS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -268,6 +269,7 @@ class StepGateTest {
                 try {
                     hw.connect("127.0.0.1", listener.getLocalPort());
                     for (int k = 0; !hw.isEnded(); k++) {
+                        // the dawdling is the point: requests must not depend on the code's timing
                         for (Command c : batch(k)) {
                             Thread.sleep(jitter.nextInt(12));
                             hw.request(new RobotRequest(c));

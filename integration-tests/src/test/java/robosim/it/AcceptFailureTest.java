@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -18,6 +20,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.cli.Main;
+import robosim.protocol.Await;
 
 /**
  * When the Environment's file table is full, {@code accept} fails as long as connections wait: the
@@ -96,19 +99,21 @@ class AcceptFailureTest {
     }
 
     /** Waits (bounded) until the log holds a match; returns the whole log. */
-    private static String awaitLine(Path log, Process env, Pattern wanted) throws IOException, InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (System.nanoTime() < deadline) {
-            String text = Files.readString(log);
-            if (wanted.matcher(text).find()) {
-                return text;
-            }
-            if (!env.isAlive()) {
-                throw new AssertionError("the Environment ended (" + env.exitValue() + ") before '" + wanted + "':\n"
-                        + text);
-            }
-            Thread.sleep(50);
+    private static String awaitLine(Path log, Process env, Pattern wanted) {
+        boolean inTime = Await.within(Duration.ofSeconds(60), () -> wanted.matcher(read(log)).find() || !env.isAlive());
+        String text = read(log);
+        if (wanted.matcher(text).find()) {
+            return text;
         }
-        throw new AssertionError("no '" + wanted + "' within 60 s:\n" + Files.readString(log));
+        throw new AssertionError((inTime ? "the Environment ended (" + env.exitValue() + ") before '" + wanted + "'"
+                : "no '" + wanted + "' within 60 s") + ":\n" + text);
+    }
+
+    private static String read(Path log) {
+        try {
+            return Files.readString(log);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 }

@@ -29,6 +29,7 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.Limits;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
+import robosim.protocol.Await;
 import robosim.protocol.Bye;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ViewerHello;
@@ -267,16 +268,11 @@ class AccessAndCapsTest {
     }
 
     /** Waits (bounded) for env's line naming its robot port. */
-    private static int awaitPort(StringWriter out) throws InterruptedException {
+    private static int awaitPort(StringWriter out) {
         Pattern robots = Pattern.compile("robots on 127\\.0\\.0\\.1:(\\d+)");
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        while (System.nanoTime() < deadline) {
+        return Await.value(Await.PATIENCE, "env prints its robot port", () -> {
             Matcher m = robots.matcher(out.toString());
-            if (m.find()) {
-                return Integer.parseInt(m.group(1));
-            }
-            Thread.sleep(20);
-        }
-        throw new AssertionError("env printed no robot port within 30 s:\n" + out);
+            return m.find() ? Integer.valueOf(m.group(1)) : null;
+        });
     }
 }

@@ -133,26 +133,28 @@ public final class AriaHandshakeClient implements Closeable {
         pause(CYCLE_MS);
         send(Commands.comInt(Commands.OPEN, 1));
         long opened = System.nanoTime();
-        long asked = 0;
+        long resend = TimeUnit.MILLISECONDS.toNanos(CONFIG_RESEND_MS);
+        long limit = TimeUnit.MILLISECONDS.toNanos(CONFIG_MS);
+        long asked = opened - resend;
         while (true) {
             long now = System.nanoTime();
-            if (now - asked >= TimeUnit.MILLISECONDS.toNanos(CONFIG_RESEND_MS)) {
+            if (now - asked >= resend) {
                 send(Commands.comInt(Commands.CONFIG, 1));
                 asked = now;
             }
-            PioneerPacket p;
-            while ((p = receive(0)) != null) {
+            // what comes until CONFIG is due again, or the wait is over
+            long waitNanos = Math.max(0, Math.min(asked + resend - now, opened + limit - now));
+            for (PioneerPacket p = receive(TimeUnit.NANOSECONDS.toMillis(waitNanos) + 1); p != null; p = receive(0)) {
                 if (p.id() == Commands.CONFIG_PACKET) {
                     send(Commands.comInt(Commands.BATTERYINFO, 1));
                     return new Handshake(identity, ConfigPacket.decode(p),
                             TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - opened));
                 }
             }
-            if (System.nanoTime() - opened > TimeUnit.MILLISECONDS.toNanos(CONFIG_MS)) {
+            if (System.nanoTime() - opened > limit) {
                 throw new IOException("no CONFIG reply within " + CONFIG_MS + " ms of OPEN: ARIA goes on without the"
                         + " robot's serial number, so it does not know the robot is simulated" + ended());
             }
-            pause(CYCLE_MS * 8 / 10);
         }
     }
 
@@ -199,6 +201,7 @@ public final class AriaHandshakeClient implements Closeable {
         }
     }
 
+    /** ARIA's pace between its connect tries: the peer's timing is what the port under test must take. */
     private static void pause(long ms) throws IOException {
         try {
             Thread.sleep(ms);

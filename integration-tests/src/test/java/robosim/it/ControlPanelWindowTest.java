@@ -14,6 +14,7 @@ import java.awt.event.InputEvent;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
@@ -32,6 +33,7 @@ import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.panel.window.ControlPanelWindow;
 import robosim.panel.window.RunForm;
+import robosim.protocol.Await;
 import robosim.viewer.window.Displays;
 
 /**
@@ -53,14 +55,8 @@ class ControlPanelWindowTest {
         }
     }
 
-    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > end) {
-                throw new AssertionError("not within 60 s: " + what);
-            }
-            Thread.sleep(50);
-        }
+    private static void await(String what, BooleanSupplier condition) {
+        Await.until(Duration.ofSeconds(60), what, condition);
     }
 
     private <T> T onEdt(java.util.function.Supplier<T> read) throws Exception {
@@ -162,7 +158,7 @@ class ControlPanelWindowTest {
             click("pause");
             await("paused again", () -> uncheck(() -> log().matches("(?s).*pause: paused after step \\d+.*")));
             long paused = h.sim.stepCount();
-            Thread.sleep(300);
+            Thread.sleep(300); // a wait for something NOT to happen: no condition marks it
             assertEquals(paused, h.sim.stepCount(), "no step runs while paused");
 
             SwingUtilities.invokeAndWait(() -> assertTrue(window.robots().select("r1")));
@@ -296,7 +292,16 @@ class ControlPanelWindowTest {
         if (dir == null || dir.isBlank()) {
             return;
         }
-        Thread.sleep(1500);
+        await("the table shows r1 moved", () -> uncheck(() -> onEdt(() -> {
+            javax.swing.JTable table = window.robots().table();
+            for (int row = 0; row < table.getRowCount(); row++) {
+                if (table.getValueAt(row, 0).equals("r1") && table.getValueAt(row, 3).toString().startsWith("3000, 1500")) {
+                    return true;
+                }
+            }
+            return false;
+        })));
+        new Robot().waitForIdle();
         Rectangle bounds = onEdt(() -> {
             Point p = window.getLocationOnScreen();
             return new Rectangle(p.x, p.y, window.getWidth(), window.getHeight());

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -109,6 +110,12 @@ class GoldFinderTeamTest {
             // r1 claims the corner beside it (one cell away, as near as r2 can ever be, and r1 goes
             // first), says it drives there, and fails while it turns
             Gold r1 = new Gold("r1", "127.0.0.1", env.robotPort());
+            CountDownLatch atStep8 = new CountDownLatch(1);
+            r1.addUserTask("test: step 8", 0, () -> {
+                if (r1.getStep() >= 8) {
+                    atStep8.countDown();
+                }
+            });
             Future<Void> program = Background.run("gold-r1", () -> {
                 if (r1.blockingConnect()) {
                     r1.search();
@@ -121,10 +128,7 @@ class GoldFinderTeamTest {
                     r2.disconnect();
                 }
             });
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-            while (r1.getStep() < 8 && System.nanoTime() < deadline) {
-                Thread.sleep(1);
-            }
+            assertTrue(atStep8.await(60, TimeUnit.SECONDS), "r1 reaches step 8");
             r1.disconnect();
             program.get(30, TimeUnit.SECONDS);
             env.await(120);

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
@@ -18,6 +19,7 @@ import robosim.pioneer.Commands;
 import robosim.pioneer.PioneerClient;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.Sip;
+import robosim.protocol.Await;
 
 /**
  * A client that floods its Pioneer port with commands slows only itself: its commands coalesce to
@@ -98,11 +100,9 @@ class PioneerFloodTest {
             assertFalse(flood.isAlive(), "a flood that keeps on is closed");
             assertTrue(run.env.sim.robotNames().contains("r1"), "its robot stays in the run");
             assertNotNull(PioneerPortTest.latest(honest), "the honest client is still sent its status");
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (logs.lines().stream().noneMatch(l -> l.contains("left: it has sent more than 200 packets"))
-                    && System.nanoTime() < deadline) {
-                Thread.sleep(20); // the line comes as the port closes the connection
-            }
+            // the line comes as the port closes the connection
+            Await.within(Duration.ofSeconds(10),
+                    () -> logs.lines().stream().anyMatch(l -> l.contains("left: it has sent more than 200 packets")));
             List<String> lines = logs.lines();
             assertTrue(lines.stream().anyMatch(l -> l.contains("left: it has sent more than 200 packets")),
                     why.get() + " " + flooder.endReason() + " " + lines);

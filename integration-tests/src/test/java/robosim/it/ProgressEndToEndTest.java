@@ -94,7 +94,8 @@ class ProgressEndToEndTest {
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback().withMaxSteps(5));
              LauncherJvm robot = new LauncherJvm("robot", "--quiet", WANDER, "r1", "127.0.0.1",
                      Integer.toString(h.robotPort()))) {
-            // left waiting for longer than the first two waiting lines would take
+            // left waiting for longer than the first two waiting lines would take: a wait for
+            // something NOT to happen, which no condition marks, so a fixed time is the point
             Thread.sleep(TimeUnit.SECONDS.toMillis(8));
             wanderers(h.robotPort(), "r2");
             assertEquals("step limit 5 reached", h.await().endReason());

@@ -20,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import robosim.aria.ArRobot;
 import robosim.examples.wander.Wander;
+import robosim.protocol.Await;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.recording.RecordingReader;
@@ -43,16 +44,11 @@ class RecordCommandsTest {
         return Background.supply("robosim " + args[0], () -> cl.execute(args));
     }
 
-    private static Matcher awaitPorts(StringWriter out) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        while (System.nanoTime() < deadline) {
+    private static Matcher awaitPorts(StringWriter out) {
+        return Await.value(Await.PATIENCE, "the Environment says its ports", () -> {
             Matcher m = PORTS.matcher(out.toString());
-            if (m.find()) {
-                return m;
-            }
-            Thread.sleep(20);
-        }
-        throw new AssertionError("the Environment did not say its ports:\n" + out);
+            return m.find() ? m : null;
+        });
     }
 
     private static List<byte[]> snapshotRecords(Path recording) throws Exception {

@@ -5,8 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutorService;
@@ -22,6 +24,8 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.Departure;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
+import robosim.protocol.Await;
+import robosim.protocol.CapturedLog;
 import robosim.protocol.Bye;
 import robosim.protocol.ControlReply;
 
@@ -60,6 +64,14 @@ class RunControlTest {
         assertEquals(text, reply.text());
     }
 
+    private static ControlReply askUnchecked(ControlPeer control, String op, String... args) {
+        try {
+            return control.ask(op, args);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
     private static void refused(String reason, ControlReply reply) {
         assertFalse(reply.ok(), "confirmed: " + reply.text());
         assertTrue(reply.text().contains(reason), reply.text());
@@ -79,7 +91,8 @@ class RunControlTest {
             start(h, true);
             confirmed("paused after step 0", control.reply());
             confirmed("ran 7 steps; paused after step 7", control.ask("step", "7"));
-            Thread.sleep(1_600);
+            ScriptedRobot last = robots.get(robots.size() - 1);
+            Await.until("a keep-alive while paused (one after each silent second)", () -> last.keepAlives.get() >= 1);
             confirmed("already paused at step 7", control.ask("pause"));
             confirmed("ran 1 step; paused after step 8", control.ask("step", "1"));
             confirmed("resumed after step 8", control.ask("resume"));
@@ -87,7 +100,7 @@ class RunControlTest {
 
             assertEquals("step limit 60 reached", report.endReason());
             assertEquals(uninterrupted, report.robots(), "the same trajectories, pose for pose");
-            assertTrue(robots.get(robots.size() - 1).keepAlives.get() >= 1, "kept alive while paused");
+            assertTrue(last.keepAlives.get() >= 1, "kept alive while paused");
             assertTrue(report.departures().isEmpty(), "no robot was lost while paused: " + report.departures());
         }
     }
@@ -202,12 +215,12 @@ class RunControlTest {
                 // half a frame: its length says 100 bytes, 10 come, and the client is gone
                 a.peer.sendRaw(new byte[] {0, 0, 0, 100, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
             }
-            ControlReply stepped = b.ask("step", "1");
-            for (int i = 0; i < 200 && !stepped.ok(); i++) {
-                assertTrue(stepped.text().startsWith("a step N is under way"), stepped.text());
-                Thread.sleep(20);
-                stepped = b.ask("step", "1");
-            }
+            // refused while a's step 3 is under way: asked again until it is taken
+            ControlReply stepped = Await.value(Await.PATIENCE, "the step taken once a's steps are run", () -> {
+                ControlReply r = askUnchecked(b, "step", "1");
+                assertTrue(r.ok() || r.text().startsWith("a step N is under way"), r.text());
+                return r.ok() ? r : null;
+            });
             confirmed("ran 1 step; paused after step 4", stepped);
             confirmed("stopped after step 4", b.ask("stop"));
             RunReport report = h.await();
@@ -223,12 +236,14 @@ class RunControlTest {
 
     @Test
     void theControlCommandPrintsTheAnswerAndExitsOneOnARefusal() throws Exception {
-        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback())) {
+        try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", ServerOptions.loopback());
+             CapturedLog log = new CapturedLog("robosim.env.net")) {
             String port = Integer.toString(h.viewerPort());
             Future<Integer> pause = threads.submit(() -> control(new StringWriter(), new StringWriter(),
                     "control", "--viewer-port", port, "pause"));
             // the pause is taken once the run starts: it waits for its robots
-            Thread.sleep(300);
+            Await.until("robosim control attached before the run", () -> log.lines().stream()
+                    .anyMatch(l -> l.startsWith("control client ") && l.endsWith(" attached at step 0")));
             start(h, false);
             assertEquals(0, pause.get(30, TimeUnit.SECONDS));
 

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import robosim.aria.ArRobot;
@@ -17,6 +18,7 @@ import robosim.env.net.RunProgress;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.examples.wander.Wander;
+import robosim.protocol.Await;
 import robosim.protocol.FrameReader;
 
 /**
@@ -48,6 +50,13 @@ class RunProgressTest {
         });
     }
 
+    /** @return whether the server told, while it waited for robots, a status that passes the test */
+    private static boolean told(List<RunProgress.Status> seen, Predicate<RunProgress.Status> test) {
+        synchronized (seen) {
+            return seen.stream().anyMatch(s -> s.phase() == RunProgress.Phase.CONNECTING && test.test(s));
+        }
+    }
+
     @Test
     void theServerSaysWhomItWaitsForThenHowFarTheRunHasCome() throws Exception {
         List<RunProgress.Status> seen = new ArrayList<>();
@@ -64,9 +73,9 @@ class RunProgressTest {
             }, 100);
             server.bind();
             CompletableFuture<RunReport> report = run(server);
-            Thread.sleep(500);
+            Await.until("a status before any robot connects", () -> told(seen, s -> s.connected() == 0));
             wander(server.robotPort(), "r1");
-            Thread.sleep(1000);
+            Await.until("a status with r1 connected and r2 missing", () -> told(seen, s -> s.connected() == 1));
             wander(server.robotPort(), "r2");
             assertEquals("step limit 30 reached", report.get(60, TimeUnit.SECONDS).endReason());
         }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.net.ServerSocket;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -31,6 +32,7 @@ import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.hw.RunEnd;
 import robosim.hw.RunEndWatch;
+import robosim.protocol.Await;
 import robosim.protocol.RunSecret;
 
 /**
@@ -85,12 +87,9 @@ class StartRaceTest {
     }
 
     /** Waits until the watch follows robots of these names: each has read its secret and begun to connect. */
-    private static void awaitConnecting(RunEndWatch watch, List<String> names) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (!watch.beforeFirstStep().stream().map(RunEndWatch.BeforeFirstStep::robot).toList().containsAll(names)) {
-            assertTrue(System.nanoTime() < deadline, "the robots began to connect within 60 s");
-            Thread.sleep(10);
-        }
+    private static void awaitConnecting(RunEndWatch watch, List<String> names) {
+        Await.until(Duration.ofSeconds(60), "the robots begin to connect", () -> watch.beforeFirstStep().stream()
+                .map(RunEndWatch.BeforeFirstStep::robot).toList().containsAll(names));
     }
 
     @Test
@@ -199,11 +198,8 @@ class StartRaceTest {
             assertTrue(r1.getConnectionError().contains(RunSecret.REFUSED_WRONG), r1.getConnectionError());
             // not the connect timeout's 60 s: refused once, looked again, found the same, gave up
             assertTrue(tookMs < 30_000, "ended at once, not at the connect timeout: " + tookMs + " ms");
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (statuses.stream().noneMatch(s -> s.refused().containsKey("r1"))) {
-                assertTrue(System.nanoTime() < deadline, "a status names the refused robot");
-                Thread.sleep(10);
-            }
+            Await.until("a status names the refused robot",
+                    () -> statuses.stream().anyMatch(s -> s.refused().containsKey("r1")));
             RunProgress.Status s = statuses.stream().filter(x -> x.refused().containsKey("r1")).findFirst().orElseThrow();
             assertEquals(Map.of("r1", RunSecret.REFUSED_WRONG), s.refused());
             assertEquals(RunProgress.Phase.CONNECTING, s.phase());

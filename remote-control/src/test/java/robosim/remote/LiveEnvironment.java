@@ -2,14 +2,15 @@ package robosim.remote;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
+import robosim.protocol.Await;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
@@ -89,17 +90,27 @@ public final class LiveEnvironment implements AutoCloseable {
      * @param condition what to wait for
      * @param timeoutMs the longest wait
      * @return whether it came true in time
-     * @throws InterruptedException if interrupted
      */
-    public static boolean await(BooleanSupplier condition, long timeoutMs) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > end) {
-                return false;
-            }
-            Thread.sleep(20);
-        }
-        return true;
+    public static boolean await(BooleanSupplier condition, long timeoutMs) {
+        return Await.within(Duration.ofMillis(timeoutMs), condition);
+    }
+
+    /** @return the latest step run, 0 before the first */
+    public long step() {
+        Snapshot s = latest;
+        return s == null ? 0 : s.step();
+    }
+
+    /**
+     * Waits until the run has gone on for some steps: what a robot was told before now has reached
+     * the Environment and been acted on.
+     *
+     * @param steps how many steps
+     * @return whether they ran within a few seconds
+     */
+    public boolean awaitSteps(int steps) {
+        long until = step() + steps;
+        return await(() -> step() >= until, 5_000L + 200L * steps);
     }
 
     @Override

@@ -11,14 +11,12 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.protocol.Await;
 
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class ChildJvmTest {
-    private static List<String> awaitLines(List<String> lines, int n) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        while (lines.size() < n && System.nanoTime() < end) {
-            Thread.sleep(20);
-        }
+    private static List<String> awaitLines(List<String> lines, int n) {
+        Await.within(Await.PATIENCE, () -> lines.size() >= n); // fewer lines fail the caller's check, which shows them
         return List.copyOf(lines);
     }
 

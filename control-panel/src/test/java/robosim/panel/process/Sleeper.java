@@ -23,6 +23,6 @@ public final class Sleeper {
             System.out.println("child: " + p.pid());
         }
         System.out.flush();
-        Thread.sleep(120_000);
+        Thread.sleep(120_000); // the point: a JVM that runs on until it is stopped
     }
 }

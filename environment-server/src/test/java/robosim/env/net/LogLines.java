@@ -1,11 +1,13 @@
 package robosim.env.net;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import java.util.logging.Logger;
+import robosim.protocol.Await;
 
 /**
  * Keeps the warnings and info lines the server's loggers publish during a test. The count lines of
@@ -47,17 +49,9 @@ final class LogLines extends Handler implements AutoCloseable {
      *
      * @return it
      */
-    String awaitCount(String start) throws InterruptedException {
-        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
-        while (System.nanoTime() < deadline) {
-            for (String line : counts()) {
-                if (line.startsWith(start)) {
-                    return line;
-                }
-            }
-            Thread.sleep(20);
-        }
-        throw new AssertionError("no count line '" + start + "...' within 10 s: " + counts());
+    String awaitCount(String start) {
+        return Await.value(Duration.ofSeconds(10), "a count line '" + start + "...' (so far " + counts() + ")",
+                () -> counts().stream().filter(line -> line.startsWith(start)).findFirst().orElse(null));
     }
 
     synchronized List<String> warnings() {

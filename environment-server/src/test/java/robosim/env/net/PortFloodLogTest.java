@@ -10,6 +10,7 @@ import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.IntFunction;
@@ -23,6 +24,7 @@ import robosim.protocol.CommsUpdate;
 import robosim.protocol.ControlHello;
 import robosim.protocol.ControlRequest;
 import robosim.protocol.FrameReader;
+import robosim.protocol.Await;
 import robosim.protocol.CapturedLog;
 import robosim.protocol.FrameWriter;
 import robosim.protocol.Message;
@@ -193,12 +195,9 @@ class PortFloodLogTest {
     }
 
     /** Waits for the count line of the kind, then checks the lines are few, short and free of control characters. */
-    private void bounded(long started, String kind) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (snapshot().stream().noneMatch(l -> l.contains(" more " + kind + " in the last 1000 ms"))) {
-            assertTrue(System.nanoTime() < deadline, "no count line of " + kind + " within 10 s: " + snapshot());
-            Thread.sleep(20);
-        }
+    private void bounded(long started, String kind) {
+        Await.until(Duration.ofSeconds(10), "a count line of " + kind,
+                () -> snapshot().stream().anyMatch(l -> l.contains(" more " + kind + " in the last 1000 ms")));
         long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - started) + 1;
         List<String> got = snapshot();
         // a whole line and a count line a second for each kind, and the lines that come once

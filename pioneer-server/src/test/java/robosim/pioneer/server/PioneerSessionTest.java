@@ -7,6 +7,7 @@ import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -15,6 +16,7 @@ import org.junit.jupiter.api.Timeout;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.RobotIdentity;
 import robosim.params.ConversionFactors;
+import robosim.protocol.Await;
 import robosim.protocol.RobotParameters;
 
 /** A session against clients that misbehave: they must not hold a port or the robot's thread. */
@@ -43,12 +45,8 @@ class PioneerSessionTest {
         }
     }
 
-    private static boolean endsWithin(PioneerSession s, long ms) throws InterruptedException {
-        long deadline = System.nanoTime() + ms * 1_000_000;
-        while (!s.isEnded() && System.nanoTime() < deadline) {
-            Thread.sleep(20);
-        }
-        return s.isEnded();
+    private static boolean endsWithin(PioneerSession s, long ms) {
+        return Await.within(Duration.ofMillis(ms), s::isEnded);
     }
 
     @Test
@@ -74,7 +72,7 @@ class PioneerSessionTest {
         while (!s.isEnded() && System.nanoTime() - start < TimeUnit.MILLISECONDS.toNanos(PioneerSession.HANDSHAKE_MS + 5000)) {
             out.write(0);
             out.flush();
-            Thread.sleep(400);
+            Thread.sleep(400); // a peer that trickles: never silent, never a packet; its pace is the point
         }
         assertTrue(s.isEnded(), "closed after the handshake time");
         assertTrue(System.nanoTime() - start >= TimeUnit.MILLISECONDS.toNanos(PioneerSession.HANDSHAKE_MS - 100));

@@ -115,7 +115,7 @@ class RemoteWindowTest {
     private void assertStops() throws Exception {
         assertTrue(LiveEnvironment.await(() -> r1().vel() == 0 && r1().rotVel() == 0, 5_000), "stops: " + r1());
         double x = r1().x();
-        Thread.sleep(500);
+        assertTrue(env.awaitSteps(5), "the run goes on");
         assertEquals(x, r1().x(), 1e-6, "stays stopped");
     }
 
@@ -163,9 +163,12 @@ class RemoteWindowTest {
         assertTrue(LiveEnvironment.await(() -> onEdt(() -> session.window().find("distance").isFocusOwner()), 5_000),
                 "the distance field has the keyboard");
         mouse.keyPress(KeyEvent.VK_UP);
-        Thread.sleep(500);
-        mouse.keyRelease(KeyEvent.VK_UP);
-        Thread.sleep(300);
+        try {
+            assertTrue(env.awaitSteps(5), "held while the run goes on");
+        } finally {
+            mouse.keyRelease(KeyEvent.VK_UP);
+        }
+        assertTrue(env.awaitSteps(3), "the run goes on");
         assertEquals(0, r1().vel());
         assertEquals(1500, r1().x(), 1e-6);
     }
@@ -179,7 +182,7 @@ class RemoteWindowTest {
         click("move");
         assertTrue(LiveEnvironment.await(() -> onEdt(() -> session.window().statusText()).startsWith("'far' was supplied"),
                 5_000));
-        Thread.sleep(300);
+        assertTrue(env.awaitSteps(3), "the run goes on");
         assertEquals(0, r1().vel());
     }
 
@@ -218,7 +221,8 @@ class RemoteWindowTest {
             ((javax.swing.JCheckBox) session.window().find("laser")).doClick();
             return null;
         });
-        Thread.sleep(1500);
+        assertTrue(env.awaitSteps(3), "steps with the laser on reach the window");
+        mouse.waitForIdle();
         Rectangle bounds = onEdt(() -> session.window().frame().getBounds());
         BufferedImage shot = mouse.createScreenCapture(bounds);
         Path out = Files.createDirectories(Path.of(folder)).resolve("remote-control.png");
