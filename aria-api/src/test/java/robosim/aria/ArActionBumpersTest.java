@@ -8,6 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /** ARIA's rule for the turn away from pressed bumpers (ArActionBumpers.cpp's findDegreesToTurn). */
 class ArActionBumpersTest {
@@ -31,7 +32,7 @@ class ArActionBumpersTest {
 
     /** One cycle of a robot at the origin driving at a velocity, with these contact sectors pressed. */
     private static void cycle(ArRobot robot, long timeMs, double vel, int sectors) {
-        robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, 0, 0, 0, vel, 0, vel,
+        robot.responded(new RobotSensorResponse(RobotStates.of(robot.getCounter() + 1, timeMs, 0, 0, 0, vel, 0, vel,
                 vel, false, new int[0], 0, new int[0], null, List.of(), List.of(), sectors)));
     }
 

@@ -8,6 +8,7 @@ import robosim.protocol.CameraView;
 import robosim.protocol.GripperState;
 import robosim.protocol.HeatReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 
 /**
  * A robot that counts as connected, with no Environment: it keeps the commands it sends, in order,
@@ -48,7 +49,7 @@ final class ConnectedRobot extends ArRobot {
     /** One cycle at a pose, with these wheel velocities. */
     void cycleWheels(double x, double y, double th, double left, double right) {
         long step = getCounter() + 1;
-        responded(new RobotSensorResponse(new RobotState(step, 100 * step, x, y, th, (left + right) / 2, 0, left, right,
+        responded(new RobotSensorResponse(RobotStates.of(step, 100 * step, x, y, th, (left + right) / 2, 0, left, right,
                 false, new int[0], 0, new int[0], null)));
     }
 }
