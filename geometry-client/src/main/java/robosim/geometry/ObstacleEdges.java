@@ -11,12 +11,12 @@ import org.locationtech.jts.geom.Polygon;
  * The static obstacles' edges, kept by the cells of a uniform grid so that a query looks only at
  * the edges near it. They are numbered, and answered, in the order of the leaves of a JTS STRtree
  * of them ({@link StrOrder}): the order the {@link GeometryClient} looked them up in before it had
- * grids, so the answers, ties included, are the same. An edge is four numbers in one array, not an
- * object: a scanned map may have millions.
+ * grids, so the answers, ties included, are the same. The order is worked out on the edges'
+ * coordinates in one array, and no envelope is kept per edge: a scanned map may have millions.
  */
 final class ObstacleEdges {
-    /** Per edge, in the tree's order: x1, y1, x2, y2. */
-    private final double[] xy;
+    /** The edges, in the tree's order. */
+    private final Segment[] edges;
     private final CellGrid grid;
 
     /**
@@ -28,16 +28,17 @@ final class ObstacleEdges {
         double[] found = edges(obstacles);
         int[] order = StrOrder.leafOrder(found);
         int n = order.length;
-        xy = new double[4 * n];
+        edges = new Segment[n];
         for (int i = 0; i < n; i++) {
-            System.arraycopy(found, 4 * order[i], xy, 4 * i, 4);
+            int e = 4 * order[i];
+            edges[i] = new Segment(found[e], found[e + 1], found[e + 2], found[e + 3]);
         }
         found = null; // garbage before the grid is built
         grid = n == 0 ? null : new CellGrid(extent, cellSize, n);
         for (int i = 0; i < n; i++) {
-            int e = 4 * i;
+            Segment s = edges[i];
             // the edge's envelope, as new Envelope(x1, x2, y1, y2) makes it
-            grid.add(i, lo(e), lo(e + 1), hi(e), hi(e + 1));
+            grid.add(i, lo(s.x1(), s.x2()), lo(s.y1(), s.y2()), hi(s.x1(), s.x2()), hi(s.y1(), s.y2()));
         }
     }
 
@@ -77,12 +78,12 @@ final class ObstacleEdges {
     }
 
     /** The lower of an edge's two values along an axis, as {@link Envelope}'s constructor picks it. */
-    private double lo(int at) {
-        return xy[at] < xy[at + 2] ? xy[at] : xy[at + 2];
+    private static double lo(double a, double b) {
+        return a < b ? a : b;
     }
 
-    private double hi(int at) {
-        return xy[at] < xy[at + 2] ? xy[at + 2] : xy[at];
+    private static double hi(double a, double b) {
+        return a < b ? b : a;
     }
 
     /** @return the area the obstacles cover, or null if there are none */
@@ -110,17 +111,17 @@ final class ObstacleEdges {
         int[] near = grid.query(env);
         List<Segment> out = new ArrayList<>(near.length + room);
         for (int i : near) {
-            if (intersects(4 * i, env)) {
-                out.add(new Segment(xy[4 * i], xy[4 * i + 1], xy[4 * i + 2], xy[4 * i + 3]));
+            if (intersects(edges[i], env)) {
+                out.add(edges[i]);
             }
         }
         return out;
     }
 
     /** Whether an edge's envelope intersects {@code env}, as {@link Envelope#intersects(Envelope)} answers. */
-    private boolean intersects(int e, Envelope env) {
-        return !env.isNull() && !(env.getMinX() > hi(e) || env.getMaxX() < lo(e)
-                || env.getMinY() > hi(e + 1) || env.getMaxY() < lo(e + 1));
+    private static boolean intersects(Segment s, Envelope env) {
+        return !env.isNull() && !(env.getMinX() > hi(s.x1(), s.x2()) || env.getMaxX() < lo(s.x1(), s.x2())
+                || env.getMinY() > hi(s.y1(), s.y2()) || env.getMaxY() < lo(s.y1(), s.y2()));
     }
 
     /**
@@ -143,9 +144,7 @@ final class ObstacleEdges {
         double[] best = {maxRange};
         grid.walkRay(ox, oy, dx, dy, maxRange, (ids, count, exit) -> {
             for (int i = 0; i < count; i++) {
-                int e = 4 * ids[i];
-                best[0] = Math.min(best[0],
-                        Segment.rayHit(xy[e], xy[e + 1], xy[e + 2] - xy[e], xy[e + 3] - xy[e + 1], ox, oy, dx, dy));
+                best[0] = Math.min(best[0], edges[ids[i]].rayHit(ox, oy, dx, dy));
             }
             // a hit in a later cell lies at or beyond this one's exit; the margin absorbs rounding
             return best[0] < exit - EXIT_MARGIN;
