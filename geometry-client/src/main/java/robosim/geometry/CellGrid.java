@@ -30,7 +30,7 @@ final class CellGrid {
     private final int[][] cells;
     private final int[] counts;
     /** Per item: the first and last cell column and row of its envelope. */
-    private int[] ranges = new int[4 * 16];
+    private int[] ranges;
     private int size;
 
     /**
@@ -39,6 +39,16 @@ final class CellGrid {
      *                 than {@value #MAX_CELLS} cells
      */
     CellGrid(Envelope extent, double cellSize) {
+        this(extent, cellSize, 16);
+    }
+
+    /**
+     * @param extent   the area the grid covers; must not be null
+     * @param cellSize the side of a cell, mm, greater than 0; larger if the extent would need more
+     *                 than {@value #MAX_CELLS} cells
+     * @param expected how many items it will likely hold, so that their ranges need no regrowing
+     */
+    CellGrid(Envelope extent, double cellSize, int expected) {
         if (extent.isNull()) {
             throw new IllegalArgumentException("a body grid needs an extent");
         }
@@ -55,6 +65,7 @@ final class CellGrid {
         this.ny = (int) Math.ceil(h / c);
         this.cells = new int[nx * ny][];
         this.counts = new int[nx * ny];
+        this.ranges = new int[4 * Math.max(1, expected)];
     }
 
     /** @return the side of a cell, mm */
@@ -85,6 +96,19 @@ final class CellGrid {
      * @param env its envelope
      */
     void add(int id, Envelope env) {
+        add(id, env.getMinX(), env.getMinY(), env.getMaxX(), env.getMaxY());
+    }
+
+    /**
+     * Lists a new item; ids must come in order 0, 1, 2, ...
+     *
+     * @param id   the item's id
+     * @param minX its envelope's least x
+     * @param minY its least y
+     * @param maxX its greatest x
+     * @param maxY its greatest y
+     */
+    void add(int id, double minX, double minY, double maxX, double maxY) {
         if (id != size) {
             throw new IllegalArgumentException(id + " was supplied for id: the next item's id is " + size);
         }
@@ -93,10 +117,10 @@ final class CellGrid {
         }
         size++;
         int r = 4 * id;
-        ranges[r] = column(env.getMinX());
-        ranges[r + 1] = row(env.getMinY());
-        ranges[r + 2] = column(env.getMaxX());
-        ranges[r + 3] = row(env.getMaxY());
+        ranges[r] = column(minX);
+        ranges[r + 1] = row(minY);
+        ranges[r + 2] = column(maxX);
+        ranges[r + 3] = row(maxY);
         insert(id);
     }
 

@@ -8,9 +8,6 @@ import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
 import org.locationtech.jts.geom.Polygon;
-import org.locationtech.jts.geom.prep.PreparedGeometry;
-import org.locationtech.jts.geom.prep.PreparedGeometryFactory;
-import org.locationtech.jts.index.strtree.STRtree;
 import org.locationtech.jts.operation.distance.DistanceOp;
 
 /**
@@ -23,9 +20,11 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  * nearest point of any edge that lies inside the cone's wedge (no reflections, no beam pattern).
  *
  * <p>The bodies, and the obstacles' edges, are kept by the cells of uniform grids ({@link CellGrid}),
- * so a query looks only at what is near it. The bodies it looks at are taken in body-id order, as a
- * scan of all bodies would; the edges in the order a JTS STRtree of them answers a query (the order
- * of its leaves), as this class looked them up before it had grids. The answers are the same.
+ * so a query looks only at what is near it, and so are the obstacles' polygons ({@link ObstacleIndex}).
+ * The bodies it looks at are taken in body-id order, as a scan of all bodies would; the edges and
+ * the polygons in the order a JTS STRtree of them answers a query (the order of its leaves, worked
+ * out by {@link StrOrder} without building one), as this class looked them up when it kept them in
+ * STRtrees. The answers are the same.
  *
  * <p>Threads: the methods that change the world ({@link #addBody}, {@link #moveBody},
  * {@link #replaceBody}) must not run while any other method runs. The queries sensors use
@@ -53,8 +52,11 @@ public final class GeometryClient {
     /** The side of a cell of the grids, mm: a few robots across. */
     static final double DEFAULT_CELL_SIZE = 2000;
 
+    /** Makes the obstacles' polygons: one for all, not one each (its precision model is the default). */
+    private static final GeometryFactory POLYGONS = new GeometryFactory();
+
     private final GeometryFactory factory = new GeometryFactory();
-    private final STRtree obstacleIndex = new STRtree();
+    private final ObstacleIndex obstacleIndex;
     private final ObstacleEdges edges;
     private final Bodies bodies;
 
@@ -73,11 +75,8 @@ public final class GeometryClient {
         if (!(cellSize > 0) || !Double.isFinite(cellSize)) {
             throw new IllegalArgumentException(cellSize + " was supplied for cellSize: it must be greater than 0");
         }
-        for (Polygon p : obstacles) {
-            obstacleIndex.insert(p.getEnvelopeInternal(), PreparedGeometryFactory.prepare(p));
-        }
-        obstacleIndex.build();
         Envelope extent = ObstacleEdges.extent(obstacles);
+        obstacleIndex = new ObstacleIndex(obstacles, extent, cellSize);
         edges = new ObstacleEdges(obstacles, extent, cellSize);
         bodies = new Bodies(extent, cellSize, factory);
     }
@@ -103,7 +102,7 @@ public final class GeometryClient {
             ring[i] = new Coordinate(xy[2 * i], xy[2 * i + 1]);
         }
         ring[ring.length - 1] = ring[0].copy();
-        return new GeometryFactory().createPolygon(ring);
+        return POLYGONS.createPolygon(ring);
     }
 
     /**
@@ -262,11 +261,11 @@ public final class GeometryClient {
         for (Coordinate c : ring) {
             env.expandToInclude(c);
         }
-        List<?> obstacles = obstacleIndex.query(env);
-        if (!obstacles.isEmpty()) {
+        int[] obstacles = obstacleIndex.query(env);
+        if (obstacles.length > 0) {
             Polygon g = factory.createPolygon(ring);
-            for (Object o : obstacles) {
-                if (((PreparedGeometry) o).intersects(g)) {
+            for (int o : obstacles) {
+                if (obstacleIndex.prepared(o).intersects(g)) {
                     return true;
                 }
             }
@@ -348,9 +347,8 @@ public final class GeometryClient {
         Envelope env = new Envelope(body.envelope);
         env.expandBy(tolerance);
         List<Double> out = new ArrayList<>();
-        for (Object o : obstacleIndex.query(env)) {
-            Geometry g = ((PreparedGeometry) o).getGeometry();
-            addContact(body, g, tolerance, out);
+        for (int o : obstacleIndex.query(env)) {
+            addContact(body, obstacleIndex.polygon(o), tolerance, out);
         }
         for (Bodies.Body other : bodies.near(env, id)) {
             addContact(body, other.polygon, tolerance, out);

@@ -2,21 +2,21 @@ package robosim.geometry;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.CoordinateSequence;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.LineString;
 import org.locationtech.jts.geom.Polygon;
-import org.locationtech.jts.index.strtree.STRtree;
 
 /**
  * The static obstacles' edges, kept by the cells of a uniform grid so that a query looks only at
  * the edges near it. They are numbered, and answered, in the order of the leaves of a JTS STRtree
- * of them: the order the {@link GeometryClient} looked them up in before it had grids, so the
- * answers, ties included, are the same.
+ * of them ({@link StrOrder}): the order the {@link GeometryClient} looked them up in before it had
+ * grids, so the answers, ties included, are the same. The order is worked out on the edges'
+ * coordinates in one array, and no envelope is kept per edge: a scanned map may have millions.
  */
 final class ObstacleEdges {
+    /** The edges, in the tree's order. */
     private final Segment[] edges;
-    private final Envelope[] envelopes;
     private final CellGrid grid;
 
     /**
@@ -25,24 +25,65 @@ final class ObstacleEdges {
      * @param cellSize  the side of a grid cell, mm
      */
     ObstacleEdges(List<Polygon> obstacles, Envelope extent, double cellSize) {
-        STRtree index = new STRtree();
+        double[] found = edges(obstacles);
+        int[] order = StrOrder.leafOrder(found);
+        int n = order.length;
+        edges = new Segment[n];
+        for (int i = 0; i < n; i++) {
+            int e = 4 * order[i];
+            edges[i] = new Segment(found[e], found[e + 1], found[e + 2], found[e + 3]);
+        }
+        found = null; // garbage before the grid is built
+        grid = n == 0 ? null : new CellGrid(extent, cellSize, n);
+        for (int i = 0; i < n; i++) {
+            Segment s = edges[i];
+            // the edge's envelope, as new Envelope(x1, x2, y1, y2) makes it
+            grid.add(i, lo(s.x1(), s.x2()), lo(s.y1(), s.y2()), hi(s.x1(), s.x2()), hi(s.y1(), s.y2()));
+        }
+    }
+
+    /** @return every edge of every ring, x1, y1, x2, y2 each, in the order of the rings' points */
+    private static double[] edges(List<Polygon> obstacles) {
+        int n = 0;
         for (Polygon p : obstacles) {
-            addRing(index, p.getExteriorRing());
+            n += edgeCount(p.getExteriorRing());
             for (int i = 0; i < p.getNumInteriorRing(); i++) {
-                addRing(index, p.getInteriorRingN(i));
+                n += edgeCount(p.getInteriorRingN(i));
             }
         }
-        index.build();
-        // an STRtree answers a query with the leaves that meet it, in the order of its leaves
-        List<?> ordered = index.query(new Envelope(Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY,
-                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY));
-        edges = ordered.toArray(new Segment[0]);
-        envelopes = new Envelope[edges.length];
-        grid = edges.length == 0 ? null : new CellGrid(extent, cellSize);
-        for (int i = 0; i < edges.length; i++) {
-            envelopes[i] = envelope(edges[i]);
-            grid.add(i, envelopes[i]);
+        double[] out = new double[4 * n];
+        int at = 0;
+        for (Polygon p : obstacles) {
+            at = addRing(out, at, p.getExteriorRing());
+            for (int i = 0; i < p.getNumInteriorRing(); i++) {
+                at = addRing(out, at, p.getInteriorRingN(i));
+            }
         }
+        return out;
+    }
+
+    private static int edgeCount(LineString ring) {
+        return Math.max(0, ring.getNumPoints() - 1);
+    }
+
+    private static int addRing(double[] out, int at, LineString ring) {
+        CoordinateSequence c = ring.getCoordinateSequence();
+        for (int i = 0; i + 1 < c.size(); i++) {
+            out[at++] = c.getX(i);
+            out[at++] = c.getY(i);
+            out[at++] = c.getX(i + 1);
+            out[at++] = c.getY(i + 1);
+        }
+        return at;
+    }
+
+    /** The lower of an edge's two values along an axis, as {@link Envelope}'s constructor picks it. */
+    private static double lo(double a, double b) {
+        return a < b ? a : b;
+    }
+
+    private static double hi(double a, double b) {
+        return a < b ? b : a;
     }
 
     /** @return the area the obstacles cover, or null if there are none */
@@ -58,18 +99,6 @@ final class ObstacleEdges {
         return extent;
     }
 
-    private static void addRing(STRtree index, LineString ring) {
-        Coordinate[] c = ring.getCoordinates();
-        for (int i = 0; i + 1 < c.length; i++) {
-            Segment s = new Segment(c[i].x, c[i].y, c[i + 1].x, c[i + 1].y);
-            index.insert(envelope(s), s);
-        }
-    }
-
-    private static Envelope envelope(Segment s) {
-        return new Envelope(s.x1(), s.x2(), s.y1(), s.y2());
-    }
-
     /**
      * @param env  an area
      * @param room how many more items the list will be given
@@ -82,11 +111,17 @@ final class ObstacleEdges {
         int[] near = grid.query(env);
         List<Segment> out = new ArrayList<>(near.length + room);
         for (int i : near) {
-            if (envelopes[i].intersects(env)) {
+            if (intersects(edges[i], env)) {
                 out.add(edges[i]);
             }
         }
         return out;
+    }
+
+    /** Whether an edge's envelope intersects {@code env}, as {@link Envelope#intersects(Envelope)} answers. */
+    private static boolean intersects(Segment s, Envelope env) {
+        return !env.isNull() && !(env.getMinX() > hi(s.x1(), s.x2()) || env.getMaxX() < lo(s.x1(), s.x2())
+                || env.getMinY() > hi(s.y1(), s.y2()) || env.getMaxY() < lo(s.y1(), s.y2()));
     }
 
     /**
