@@ -37,6 +37,8 @@ import robosim.hw.RobotMessage;
 public class Gold extends ArRobot {
     /** The gold is found when the heat sensor places it this near, mm. */
     public static final double FOUND_DISTANCE = 1000;
+    /** The world property the maze's cell size, mm, is read from: {@code bin/robosim maze} writes it. */
+    public static final String CELL_SIZE_PROPERTY = "cellSize";
     /** Steps between the reports a robot repeats while nothing changes. */
     static final int HEARTBEAT = 10;
     /** How many of its sensed cells a report carries: the newest half, and old ones in turn. */
@@ -93,7 +95,7 @@ public class Gold extends ArRobot {
 
     /**
      * A Gold robot as the original's robot applications make one: the maze's cell size comes from
-     * the world (its {@value MazeWorldWriter#CELL_SIZE_PROPERTY} property, in the Environment's
+     * the world (its {@value #CELL_SIZE_PROPERTY} property, in the Environment's
      * welcome) and the seed of its tie-breaks from the run's seed, once it has connected.
      *
      * @param name the robot's name, {@code r<number>}: lower numbers go first where robots meet
@@ -169,11 +171,11 @@ public class Gold extends ArRobot {
      * @throws IllegalStateException if the world gives no cell size, or one under 1000 mm
      */
     public void search() {
-        cellSize = getWorldNumber(MazeWorldWriter.CELL_SIZE_PROPERTY).orElseThrow(() -> new IllegalStateException(
-                "robot " + getName() + ": world gives no " + MazeWorldWriter.CELL_SIZE_PROPERTY
+        cellSize = getWorldNumber(CELL_SIZE_PROPERTY).orElseThrow(() -> new IllegalStateException(
+                "robot " + getName() + ": world gives no " + CELL_SIZE_PROPERTY
                         + " property; GoldFinder needs the maze's cell size, mm (see robosim maze)"));
         if (!(cellSize >= 1000)) {
-            throw new IllegalStateException("robot " + getName() + ": the world's " + MazeWorldWriter.CELL_SIZE_PROPERTY
+            throw new IllegalStateException("robot " + getName() + ": the world's " + CELL_SIZE_PROPERTY
                     + " is " + cellSize + ": GoldFinder's mazes have cells of at least 1000 mm");
         }
         random = new SplittableRandom(getRunSeed() * 31 + rank);
@@ -308,7 +310,7 @@ public class Gold extends ArRobot {
     private void tellWhereIAm() {
         boolean moving = phase == Phase.ANNOUNCE || phase == Phase.TURN || phase == Phase.MOVE;
         if (moving && dir >= 0) {
-            tell(cx + runCells * Maze.DIRECTIONS[dir][0], cy + runCells * Maze.DIRECTIONS[dir][1], false);
+            tell(cx + runCells * Directions.dx(dir), cy + runCells * Directions.dy(dir), false);
         } else {
             tell(NONE, NONE, false);
         }
@@ -351,8 +353,8 @@ public class Gold extends ArRobot {
         int[] ahead = WallSensing.cellsAhead(this, laser, cellSize);
         int added = 0;
         for (int j = 0; j < ahead.length; j++) {
-            int x = cx + (j + 1) * Maze.DIRECTIONS[d][0];
-            int y = cy + (j + 1) * Maze.DIRECTIONS[d][1];
+            int x = cx + (j + 1) * Directions.dx(d);
+            int y = cy + (j + 1) * Directions.dy(d);
             if (!map.isSensed(x, y)) {
                 map.sensed(x, y, ahead[j]);
                 ownCells.add(new int[] {x, y, ahead[j]});
@@ -382,7 +384,7 @@ public class Gold extends ArRobot {
         if (d < 0 && plan.target() >= 0) {
             d = TeamPlan.firstStep(map, cx, cy, plan.target(), order);
             if (d >= 0 && !plan.claim()
-                    && MazeKnowledge.key(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1]) == plan.target()) {
+                    && MazeKnowledge.key(cx + Directions.dx(d), cy + Directions.dy(d)) == plan.target()) {
                 d = -1; // following: the frontier itself is the claimant's to enter
             }
         }
@@ -396,8 +398,8 @@ public class Gold extends ArRobot {
             idle();
             return;
         }
-        int nx = cx + Maze.DIRECTIONS[d][0];
-        int ny = cy + Maze.DIRECTIONS[d][1];
+        int nx = cx + Directions.dx(d);
+        int ny = cy + Directions.dy(d);
         if (map.holder(nx, ny) != null) {
             waitFor(nx, ny, d);
             return;
@@ -421,14 +423,14 @@ public class Gold extends ArRobot {
             long here = path.get(cells - 1);
             long next = path.get(cells);
             if (!map.isSensed(MazeKnowledge.keyX(here), MazeKnowledge.keyY(here))
-                    || MazeKnowledge.keyX(next) - MazeKnowledge.keyX(here) != Maze.DIRECTIONS[d][0]
-                    || MazeKnowledge.keyY(next) - MazeKnowledge.keyY(here) != Maze.DIRECTIONS[d][1]
+                    || MazeKnowledge.keyX(next) - MazeKnowledge.keyX(here) != Directions.dx(d)
+                    || MazeKnowledge.keyY(next) - MazeKnowledge.keyY(here) != Directions.dy(d)
                     || (!plan.claim() && next == target)) {
                 break;
             }
             cells++;
         }
-        return path.isEmpty() || path.get(0) != MazeKnowledge.key(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1])
+        return path.isEmpty() || path.get(0) != MazeKnowledge.key(cx + Directions.dx(d), cy + Directions.dy(d))
                 ? 1 : cells;
     }
 
@@ -444,7 +446,7 @@ public class Gold extends ArRobot {
         runCells = cells;
         want = -1;
         waited = 0;
-        tell(cx + cells * Maze.DIRECTIONS[d][0], cy + cells * Maze.DIRECTIONS[d][1], false);
+        tell(cx + cells * Directions.dx(d), cy + cells * Directions.dy(d), false);
         lookedAhead = false;
         phase = Phase.ANNOUNCE;
     }
@@ -473,7 +475,7 @@ public class Gold extends ArRobot {
             return -1;
         }
         int d = Math.floorMod((int) Math.round((getTh() + heat.getBearing()) / 90), 4);
-        return map.open(cx, cy, d) && !map.isSensed(cx + Maze.DIRECTIONS[d][0], cy + Maze.DIRECTIONS[d][1]) ? d : -1;
+        return map.open(cx, cy, d) && !map.isSensed(cx + Directions.dx(d), cy + Directions.dy(d)) ? d : -1;
     }
 
     /** The four directions, starting at a seeded one, so teammates fan out differently. */
@@ -497,7 +499,7 @@ public class Gold extends ArRobot {
     /** Whether this robot wants the waiting teammate's cell and gives way to it by number. */
     private boolean mutual(String mate, int d) {
         MazeKnowledge.Mate m = map.mate(mate);
-        return m != null && m.x() == cx + Maze.DIRECTIONS[d][0] && m.y() == cy + Maze.DIRECTIONS[d][1]
+        return m != null && m.x() == cx + Directions.dx(d) && m.y() == cy + Directions.dy(d)
                 && rankOf(mate) < rank;
     }
 
@@ -512,8 +514,8 @@ public class Gold extends ArRobot {
         if (waited >= PATIENCE * (1 + rank % 3)) {
             // stuck: any free open side other than the one wanted, then think again
             for (int s : order()) {
-                int sx = cx + Maze.DIRECTIONS[s][0];
-                int sy = cy + Maze.DIRECTIONS[s][1];
+                int sx = cx + Directions.dx(s);
+                int sy = cy + Directions.dy(s);
                 if (s != d && map.open(cx, cy, s) && map.isSensed(sx, sy) && map.holder(sx, sy) == null) {
                     go(s, 1);
                     return;
@@ -565,7 +567,7 @@ public class Gold extends ArRobot {
     private void announce() {
         boolean contested = false;
         for (int k = 1; k <= runCells; k++) {
-            contested |= contested(cx + k * Maze.DIRECTIONS[dir][0], cy + k * Maze.DIRECTIONS[dir][1]);
+            contested |= contested(cx + k * Directions.dx(dir), cy + k * Directions.dy(dir));
         }
         if (contested) {
             phase = Phase.DECIDE;
@@ -615,7 +617,7 @@ public class Gold extends ArRobot {
                 return;
             }
             // to the far cell's centre, measured from where the robot is: a start off the centre is made good
-            move(along(cx + runCells * Maze.DIRECTIONS[dir][0], cy + runCells * Maze.DIRECTIONS[dir][1]));
+            move(along(cx + runCells * Directions.dx(dir), cy + runCells * Directions.dy(dir)));
             phase = Phase.MOVE;
         }
     }
@@ -624,8 +626,8 @@ public class Gold extends ArRobot {
         if (isStalled()) {
             // something unexpected is in the way: back to the centre of the last cell it drove through
             stop();
-            int dx = Maze.DIRECTIONS[dir][0];
-            int dy = Maze.DIRECTIONS[dir][1];
+            int dx = Directions.dx(dir);
+            int dy = Directions.dy(dir);
             int crossed = (int) Math.floor(along(cx, cy) / -cellSize);
             crossed = Math.max(0, Math.min(runCells - 1, crossed));
             cx += crossed * dx;
@@ -637,8 +639,8 @@ public class Gold extends ArRobot {
             return;
         }
         if (isMoveDone(1) && isStopped()) {
-            cx += runCells * Maze.DIRECTIONS[dir][0];
-            cy += runCells * Maze.DIRECTIONS[dir][1];
+            cx += runCells * Directions.dx(dir);
+            cy += runCells * Directions.dy(dir);
             phase = Phase.DECIDE;
             if (!map.isSensed(cx, cy)) {
                 senseHere();
@@ -659,7 +661,7 @@ public class Gold extends ArRobot {
         double reach = scan[scan.length / 2] + getParameters().laserX();
         double front = getParameters().robotLengthFront() + CLEARANCE;
         int cells = 0;
-        while (cells < runCells && along(cx + (cells + 1) * Maze.DIRECTIONS[dir][0], cy + (cells + 1) * Maze.DIRECTIONS[dir][1])
+        while (cells < runCells && along(cx + (cells + 1) * Directions.dx(dir), cy + (cells + 1) * Directions.dy(dir))
                 + front <= reach) {
             cells++;
         }
@@ -671,8 +673,8 @@ public class Gold extends ArRobot {
      * centre: negative when the centre lies behind.
      */
     private double along(int x, int y) {
-        return ((x + 0.5) * cellSize - getX()) * Maze.DIRECTIONS[dir][0]
-                + ((y + 0.5) * cellSize - getY()) * Maze.DIRECTIONS[dir][1];
+        return ((x + 0.5) * cellSize - getX()) * Directions.dx(dir)
+                + ((y + 0.5) * cellSize - getY()) * Directions.dy(dir);
     }
 
     private void back() {
