@@ -16,11 +16,11 @@ import robosim.env.net.ServerOptions;
 import robosim.protocol.RobotParameters;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
+import robosim.env.world.maze.Maze;
+import robosim.env.world.maze.MazeWorldWriter;
 import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.Gold;
 import robosim.examples.goldfinder.GoldFinder;
-import robosim.examples.goldfinder.Maze;
-import robosim.examples.goldfinder.MazeWorldWriter;
 
 /**
  * Does cooperation pay? Steps until the gold is found, for teams of several sizes, over the same

@@ -10,9 +10,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.env.world.World;
+import robosim.env.world.maze.Maze;
+import robosim.env.world.maze.MazeWorldWriter;
 import robosim.env.world.xml.WorldReader;
-import robosim.examples.goldfinder.Maze;
-import robosim.examples.goldfinder.MazeWorldWriter;
 import robosim.params.RobotParameterFiles;
 
 /** The lower bound the GoldFinder benchmark reports: the shortest path driven at top speed. */

@@ -19,7 +19,9 @@ import robosim.comms.CommsSettings;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
+import robosim.env.world.maze.MazeWorldWriter;
 import robosim.env.world.xml.WorldReader;
+import robosim.examples.goldfinder.Gold;
 import robosim.examples.goldfinder.GoldFinder;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
@@ -81,6 +83,12 @@ class GoldFinderTest {
             assertNoOverlap(seed, run);
         }
         assertTrue(found >= 9, "found in " + found + " of 10 mazes within " + STEP_LIMIT + " steps; missed " + misses);
+    }
+
+    /** A Gold robot reads its maze's cell size from the world property the maze generator writes. */
+    @Test
+    void theRobotsReadTheCellSizeUnderTheNameTheMazeGeneratorWritesIt() {
+        assertEquals(MazeWorldWriter.CELL_SIZE_PROPERTY, Gold.CELL_SIZE_PROPERTY);
     }
 
     @Test

@@ -25,11 +25,11 @@ import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
+import robosim.env.world.maze.MazeWorldWriter;
 import robosim.protocol.RunSecret;
 import robosim.env.world.xml.WorldFileException;
 import robosim.env.world.xml.WorldReader;
 import robosim.examples.goldfinder.GoldFinder;
-import robosim.examples.goldfinder.MazeWorldWriter;
 import robosim.viewer.net.ViewerSummary;
 
 /**

@@ -9,9 +9,9 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import robosim.env.world.maze.Maze;
+import robosim.env.world.maze.MazeWorldWriter;
 import robosim.env.world.xml.WorldReader;
-import robosim.examples.goldfinder.Maze;
-import robosim.examples.goldfinder.MazeWorldWriter;
 import robosim.params.RobotParameterFiles;
 
 /** {@code robosim maze}: writes a perfect maze as a world file for GoldFinder. */

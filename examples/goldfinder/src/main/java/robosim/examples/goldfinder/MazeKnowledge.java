@@ -125,7 +125,7 @@ final class MazeKnowledge {
         if ((o & (1 << dir)) != 0) {
             return true;
         }
-        Integer other = openSides.get(key(x + Maze.DIRECTIONS[dir][0], y + Maze.DIRECTIONS[dir][1]));
+        Integer other = openSides.get(key(x + Directions.dx(dir), y + Directions.dy(dir)));
         return other != null && (other & (1 << ((dir + 2) % 4))) != 0;
     }
 
@@ -145,7 +145,7 @@ final class MazeKnowledge {
             return false;
         }
         for (int d = 0; d < 4; d++) {
-            if (open(x + Maze.DIRECTIONS[d][0], y + Maze.DIRECTIONS[d][1], (d + 2) % 4)) {
+            if (open(x + Directions.dx(d), y + Directions.dy(d), (d + 2) % 4)) {
                 return true;
             }
         }
@@ -159,8 +159,8 @@ final class MazeKnowledge {
             int x = keyX(e.getKey());
             int y = keyY(e.getKey());
             for (int d = 0; d < 4; d++) {
-                int nx = x + Maze.DIRECTIONS[d][0];
-                int ny = y + Maze.DIRECTIONS[d][1];
+                int nx = x + Directions.dx(d);
+                int ny = y + Directions.dy(d);
                 if ((e.getValue() & (1 << d)) != 0 && !isSensed(nx, ny)) {
                     out.add(key(nx, ny));
                 }
@@ -193,8 +193,8 @@ final class MazeKnowledge {
                 continue;
             }
             for (int d : order) {
-                int nx = cx + Maze.DIRECTIONS[d][0];
-                int ny = cy + Maze.DIRECTIONS[d][1];
+                int nx = cx + Directions.dx(d);
+                int ny = cy + Directions.dy(d);
                 long k = key(nx, ny);
                 if (open(cx, cy, d) && !out.containsKey(k) && !blocked.contains(k)) {
                     out.put(k, new Reach(here.cells() + 1, here.first() < 0 ? d : here.first(), d));
@@ -230,8 +230,8 @@ final class MazeKnowledge {
         while (cx != x || cy != y) {
             out.add(0, key(cx, cy));
             int d = reach.get(key(cx, cy)).last();
-            cx -= Maze.DIRECTIONS[d][0];
-            cy -= Maze.DIRECTIONS[d][1];
+            cx -= Directions.dx(d);
+            cy -= Directions.dy(d);
         }
         return out;
     }

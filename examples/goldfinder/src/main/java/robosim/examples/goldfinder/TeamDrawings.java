@@ -3,11 +3,14 @@ package robosim.examples.goldfinder;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
+import robosim.aria.ArRobot;
 import robosim.protocol.Figure;
 
 /**
- * What a Gold robot draws for the viewers (with {@code --drawings}), so that a user sees how the
- * team divides the maze: three layers, in the robot's own colour.
+ * What a Gold robot draws of what it believes, for the viewers (with {@code --drawings}), so that a
+ * user sees how the team divides the maze: three layers, in the robot's own colour. The static
+ * methods make each layer's figures; {@link #update} sends a layer again when it has changed, at
+ * most every {@value #DRAW_EVERY} steps.
  */
 final class TeamDrawings {
     /** The cells the robot sensed itself: its share of the work, filled. */
@@ -16,8 +19,65 @@ final class TeamDrawings {
     static final String KNOWN = "known";
     /** The frontier it claimed (a square) or follows (a smaller square), with its way there. */
     static final String CLAIM = "claim";
+    /** The fewest steps between two drawings. */
+    static final int DRAW_EVERY = 10;
 
-    private TeamDrawings() {
+    private final ArRobot robot;
+    private final int rank;
+    private final double cellSize;
+    private final MazeKnowledge map;
+    private final List<int[]> ownCells;
+    private final Course course;
+    /** When it last drew, and what: its own cells' count, the known cells' count, its target and its cell then. */
+    private long drawnAt = Long.MIN_VALUE / 2;
+    private int drawnCells;
+    private int drawnKnown;
+    private long drawnTarget = -1;
+    private long drawnFrom = -1;
+
+    /**
+     * @param robot    the robot that draws
+     * @param rank     its number, which places its dots
+     * @param cellSize the maze's cell size, mm
+     * @param map      what it knows
+     * @param ownCells the cells it sensed itself, in order
+     * @param course   where it is and its plan
+     */
+    TeamDrawings(ArRobot robot, int rank, double cellSize, MazeKnowledge map, List<int[]> ownCells, Course course) {
+        this.robot = robot;
+        this.rank = rank;
+        this.cellSize = cellSize;
+        this.map = map;
+        this.ownCells = ownCells;
+        this.course = course;
+    }
+
+    /**
+     * Draws again each layer that changed since it was last drawn, unless the last drawing is
+     * fewer than {@value #DRAW_EVERY} steps old.
+     */
+    void update() {
+        if (robot.getStep() - drawnAt < DRAW_EVERY) {
+            return;
+        }
+        if (ownCells.size() != drawnCells) {
+            drawnCells = ownCells.size();
+            robot.draw(EXPLORED, explored(ownCells, cellSize));
+            drawnAt = robot.getStep();
+        }
+        if (map.sensedCount() != drawnKnown) {
+            // what teammates told counts too: each robot's known map shows what reached it
+            drawnKnown = map.sensedCount();
+            robot.draw(KNOWN, known(map, rank, cellSize));
+            drawnAt = robot.getStep();
+        }
+        long target = course.plan().target();
+        if (target != drawnTarget || (target >= 0 && course.here() != drawnFrom)) {
+            drawnTarget = target;
+            drawnFrom = course.here();
+            robot.draw(CLAIM, claim(map, course.x(), course.y(), course.plan(), cellSize));
+            drawnAt = robot.getStep();
+        }
     }
 
     /**

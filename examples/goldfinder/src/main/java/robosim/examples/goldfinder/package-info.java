@@ -1,9 +1,28 @@
 /**
- * GoldFinder: a team of Pioneers searches a maze for gold by their sensors alone. Each {@link
- * robosim.examples.goldfinder.Gold} robot reads walls with its laser and sonars ({@code WallSensing}),
- * keeps what it and its teammates sensed ({@code MazeKnowledge}), claims the nearest frontier no
- * nearer teammate has claimed ({@code TeamPlan}) and tells its team by {@link
- * robosim.examples.goldfinder.MazeMessage}; {@link robosim.examples.goldfinder.GoldFinder} starts
- * one robot the original's way or a team as threads; and the maze generator makes its worlds.
+ * GoldFinder: a team of Pioneers searches a maze for gold by their sensors alone, and tells each
+ * other what it found. Start with {@link robosim.examples.goldfinder.Gold}, the robot and its loop;
+ * each part of what it does is a class of one job:
+ *
+ * <ul>
+ *   <li>{@code TeamTalk}: the team messages ({@link robosim.examples.goldfinder.MazeMessage}), what
+ *       a robot tells and what it hears;</li>
+ *   <li>{@code SearchPhases}: the search's phases, a state machine: decide, announce, turn, drive,
+ *       back off, done;</li>
+ *   <li>{@code Survey} and {@code WallSensing}: what a robot senses of the cells with its laser and
+ *       sonars;</li>
+ *   <li>{@code MazeKnowledge}: the map of cells it believes, and where its teammates are and go;</li>
+ *   <li>{@code Wayfinder} and {@code TeamPlan}: the frontier it claims, the side it leaves by, how
+ *       far it drives, and how it gives way to teammates;</li>
+ *   <li>{@code HeatGuide}: what its heat sensor says of the gold;</li>
+ *   <li>{@code Driving}: the motion primitives: turn to a side, drive a run of cells, back off;</li>
+ *   <li>{@code Course}: where it is and where it goes;</li>
+ *   <li>{@code TeamDrawings}: the drawing of what it believes, for viewers;</li>
+ *   <li>{@code Directions}: the numbering of a cell's four sides.</li>
+ * </ul>
+ *
+ * {@link robosim.examples.goldfinder.GoldFinder} starts one robot the original's way, or a team as
+ * threads. The mazes they search are made by the Environment's maze generator ({@code
+ * robosim.env.world.maze}, run by {@code bin/robosim maze}); of a maze, a robot is told only its
+ * cell size, by the world's {@code cellSize} property.
  */
 package robosim.examples.goldfinder;

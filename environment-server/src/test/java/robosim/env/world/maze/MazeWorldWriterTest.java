@@ -1,4 +1,4 @@
-package robosim.examples.goldfinder;
+package robosim.env.world.maze;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package robosim.examples.goldfinder;
+package robosim.env.world.maze;
 
 import java.util.ArrayList;
 import java.util.Comparator;
