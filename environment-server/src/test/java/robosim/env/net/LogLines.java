@@ -54,6 +54,30 @@ final class LogLines extends Handler implements AutoCloseable {
                 () -> counts().stream().filter(line -> line.startsWith(start)).findFirst().orElse(null));
     }
 
+    /**
+     * Waits until the lines of a rate-limited kind account for so many events: each whole line
+     * (a warning that starts so) for one, each count line of the kind for its count. However the
+     * events fall into periods on a busy machine, that sum is the number of events.
+     *
+     * @param whole  how the kind's whole lines start
+     * @param kind   the kind, as its count lines name it
+     * @param events how many there were
+     */
+    void awaitAccounted(String whole, String kind, int events) {
+        Await.until(Duration.ofSeconds(10), "lines accounting for " + events + " " + kind + " (so far " + warnings()
+                + " and " + counts() + ")", () -> accounted(whole, kind) == events);
+    }
+
+    private synchronized int accounted(String whole, String kind) {
+        int n = (int) warnings.stream().filter(l -> l.startsWith(whole)).count();
+        for (String c : counts) {
+            if (c.contains(" more " + kind + " in the last ")) {
+                n += Integer.parseInt(c.substring(0, c.indexOf(' ')));
+            }
+        }
+        return n;
+    }
+
     synchronized List<String> warnings() {
         return new ArrayList<>(warnings);
     }

@@ -215,11 +215,11 @@ class SessionRulesTest {
             assertTrue(peer.closedByEnvironment());
         }
         assertEquals(Set.of(), rules.connectedRobots().keySet());
-        // the first refusal is logged whole, the others within the second counted in one line
-        assertEquals(1, log.warnings().size(), "one line: " + log.warnings());
+        // the first refusal is logged whole, the others within its second counted in one line (on a
+        // busy machine the refusals may span more seconds: a whole line or a count for each)
         assertTrue(log.warnings().get(0).startsWith("refusing robot r1: robot r1's parameters break a bound: NaN"),
                 log.warnings().get(0));
-        log.awaitCount((cases.size() - 1) + " more refused robot hellos in the last 1000 ms");
+        log.awaitAccounted("refusing robot r1: ", "refused robot hellos", cases.size());
     }
 
     @Test
