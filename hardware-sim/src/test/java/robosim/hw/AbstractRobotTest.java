@@ -417,6 +417,7 @@ class AbstractRobotTest {
             }
         };
         log.addHandler(capture);
+        long started = System.nanoTime();
         try {
             run(robot, () -> {
                 for (int i = 0; i < 30; i++) {
@@ -437,8 +438,9 @@ class AbstractRobotTest {
                 assertEquals("\u001b[2Jno robot r7 for message " + step, nextSeen());
             }
             assertEquals("done", nextSeen());
+            long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - started) + 1;
             long logged = lines.stream().filter(l -> l.contains("the Environment refused a request")).count();
-            assertTrue(logged >= 1 && logged <= 3, "30 refusals in a few steps: " + lines);
+            assertTrue(logged >= 1 && logged <= seconds, "30 refusals in " + seconds + " s: " + lines);
             assertTrue(lines.stream().allMatch(l -> l.chars().allMatch(c -> c >= 0x20 && c < 0x7f)), lines.toString());
         } finally {
             log.removeHandler(capture);
