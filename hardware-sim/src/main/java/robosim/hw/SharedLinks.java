@@ -44,7 +44,7 @@ final class SharedLinks {
             if (link == null || link.hasEnded()) {
                 link = new SharedLink(this, host, port, options, secret);
                 open.put(key, link);
-                runtime.thread("hw-link-" + key, link::read).start();
+                runtime.thread("hw-link-" + runtime.name() + "-" + key, link::read).start();
             }
             return link;
         }
