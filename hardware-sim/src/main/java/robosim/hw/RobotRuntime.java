@@ -27,9 +27,9 @@ import java.util.regex.Pattern;
  *
  * <p>A runtime opens with its first robot (a robot uses it from the moment it begins to connect
  * until its part in the run ends) and closes when its last robot leaves: its threads stop and its
- * links close. A runtime made with {@link #create} opens again for the next robot given it; the
- * default runtime is closed for good, and the next robot given no runtime makes a fresh one, which
- * reads the system properties again.
+ * links close. A runtime made with {@link #create} opens again for the next robot given it. A robot
+ * given no runtime joins the default runtime while other robots use it; otherwise it makes a fresh
+ * default runtime, which reads the system properties then, and the one before stays closed.
  */
 public final class RobotRuntime {
     /** The default runtime's name. */
@@ -52,8 +52,6 @@ public final class RobotRuntime {
     private volatile long latestMs;
     /** Robots using the runtime; guarded by this. */
     private int robots;
-    /** A default runtime whose robots have all left; guarded by this. */
-    private boolean closedForGood;
     /** Running while the runtime has robots; guarded by this. */
     private Watchdog watchdog;
 
@@ -105,7 +103,10 @@ public final class RobotRuntime {
         }
     }
 
-    /** @return the default runtime, made (not yet open) if there has been none */
+    /**
+     * @return the default runtime, made (not yet open) if there has been none; a robot that connects
+     *         while it has no robots makes a fresh one
+     */
     static RobotRuntime defaultRuntime() {
         synchronized (DEFAULT_LOCK) {
             if (defaultRuntime == null) {
@@ -125,25 +126,30 @@ public final class RobotRuntime {
      */
     static RobotRuntime enter(RobotRuntime given) {
         if (given != null && !given.isDefault) {
-            given.tryEnter();
+            given.enter(true);
             return given;
         }
         synchronized (DEFAULT_LOCK) {
-            RobotRuntime current = defaultRuntime();
-            if (current.tryEnter()) {
+            RobotRuntime current = defaultRuntime;
+            if (current != null && current.enter(false)) {
                 return current;
             }
             // the watches follow every default runtime's robots, so the fresh one takes them over
             defaultRuntime = new RobotRuntime(DEFAULT_NAME, RuntimeChoices.fromSystemProperties(), true,
-                    current.runEndWatches);
-            defaultRuntime.tryEnter();
+                    current == null ? new RunEndWatches() : current.runEndWatches);
+            defaultRuntime.enter(true);
             return defaultRuntime;
         }
     }
 
-    /** @return whether a robot may use the runtime now (it is not a closed default), opening it if it is the first */
-    private synchronized boolean tryEnter() {
-        if (closedForGood) {
+    /**
+     * A robot begins to use the runtime, which opens if it is the first.
+     *
+     * @param mayOpen whether it may be the first; if not, it enters only a runtime open now
+     * @return whether it entered
+     */
+    private synchronized boolean enter(boolean mayOpen) {
+        if (robots == 0 && !mayOpen) {
             return false;
         }
         if (robots++ == 0) {
@@ -157,7 +163,6 @@ public final class RobotRuntime {
         if (robots == 0 || --robots > 0) {
             return;
         }
-        closedForGood = isDefault;
         watchdog.stop();
         watchdog = null;
         sharedLinks.closeAll("the program's robots of runtime " + name + " have all left");

@@ -210,7 +210,8 @@ class RobotRuntimeTest {
         TestRobot robot = new TestRobot("r1", 1);
         robot.setRuntime(runtime);
         FakeLink link = new FakeLink();
-        robot.connect(OPTIONS, link);
+        // connected on a code thread: the connecting thread becomes the robot's
+        RobotCode.join(code.start("code-r1", () -> robot.connect(OPTIONS, link)));
         try {
             assertThrows(IllegalStateException.class, () -> robot.setRuntime(null));
             assertSame(runtime, robot.getRuntime());
