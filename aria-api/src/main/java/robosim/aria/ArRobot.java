@@ -119,7 +119,6 @@ public class ArRobot extends AbstractRobot {
         lock.lock();
         try {
             super.responded(response);
-            SimulatedClock.stateArrived(response.state().timeMs());
             if (cycleStopped) {
                 return;
             }

@@ -2,8 +2,8 @@ package robosim.aria;
 
 /**
  * A moment in simulated time (ARIA's {@code ArTime}, ariaUtil.h), to the millisecond. "Now" is the
- * simulated time of the robot the calling thread belongs to, else of the latest state any robot in
- * this JVM received (see docs/ARIA-SEMANTICS.md); robots run in lockstep, so all of them see the same
+ * simulated time of the robot the calling thread belongs to, else of the latest state a robot of the
+ * default {@link robosim.hw.RobotRuntime} received (see docs/ARIA-SEMANTICS.md); robots run in lockstep, so all of them see the same
  * time, and a program's timing repeats exactly from run to run. Simulated time starts at 0 (ARIA's
  * clock starts a million seconds on, to leave room to go back; here going below 0 is refused).
  *

@@ -8,6 +8,7 @@ import java.util.OptionalDouble;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
@@ -30,6 +31,9 @@ import robosim.protocol.RobotParameters;
  * <p>The thread that connects, and every thread that waits with {@link #sleepSimulated}, is part of
  * the robot's code: each step the robot's requests are sent once all of them have yielded, which
  * keeps runs deterministic.
+ *
+ * <p>A robot uses a {@link RobotRuntime} with the other robots of its program: the default runtime,
+ * unless it is given one with {@link #setRuntime} before it connects.
  */
 public abstract class AbstractRobot {
     private static final Logger LOG = Logger.getLogger(AbstractRobot.class.getName());
@@ -46,6 +50,10 @@ public abstract class AbstractRobot {
     private volatile int stepMs = 100;
     private volatile WelcomeFacts facts;
     private volatile HardwareSimulator hardware;
+    /** The runtime given, or null for the default one. */
+    private volatile RobotRuntime givenRuntime;
+    /** The runtime the latest connection used, once it began. */
+    private volatile RobotRuntime usedRuntime;
     private volatile String connectionError;
     /** How the last attempt to connect ended, while {@link #hardware} is null. */
     private volatile RunEnd lastEnd;
@@ -83,6 +91,29 @@ public abstract class AbstractRobot {
     }
 
     /**
+     * Gives the robot the runtime it is to share with other robots of its program, instead of the
+     * default runtime. The robot begins to use it when it connects.
+     *
+     * @param runtime its runtime, or null for the default one
+     * @throws IllegalStateException if the robot is connected
+     */
+    public void setRuntime(RobotRuntime runtime) {
+        if (isConnected()) {
+            throw new IllegalStateException("robot " + name + " is connected: give it a runtime before it connects");
+        }
+        this.givenRuntime = runtime;
+    }
+
+    /**
+     * @return the runtime the robot uses: the one given to it, else the default runtime it used when
+     *         it last connected; null when given none and it has not connected
+     */
+    public RobotRuntime getRuntime() {
+        RobotRuntime given = givenRuntime;
+        return given != null ? given : usedRuntime;
+    }
+
+    /**
      * Connects to the Environment and waits for its welcome; the calling thread becomes part of the
      * robot's code.
      *
@@ -90,7 +121,7 @@ public abstract class AbstractRobot {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connect(HardwareOptions options) throws IOException {
-        connectFinding(options, o -> EnvironmentLinks.to(host, port, o));
+        connectFinding(options, (runtime, o) -> EnvironmentLinks.to(runtime, host, port, o));
     }
 
     /**
@@ -100,8 +131,8 @@ public abstract class AbstractRobot {
      * left. Any other refusal, or the same secret refused again, ends the attempt at once. The
      * connect timeout bounds the whole.
      */
-    private void connectFinding(HardwareOptions options, Function<HardwareOptions, EnvironmentLink> links)
-            throws IOException {
+    private void connectFinding(HardwareOptions options,
+                                BiFunction<RobotRuntime, HardwareOptions, EnvironmentLink> links) throws IOException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.connectTimeoutMs());
         // found now too, so that a secret that breaks its rule is said before any connection
         SecretLookup lookup = new SecretLookup(host, port, RunSecret.find(null, host, port));
@@ -111,7 +142,7 @@ public abstract class AbstractRobot {
                 long leftMs = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
                 HardwareOptions attempt = tries == 1 ? options
                         : new HardwareOptions(Math.max(1, leftMs), options.lostAfterMs(), options.yieldWarningMs());
-                connect(attempt, links.apply(attempt), lookup.given(), lookup);
+                connect(attempt, runtime -> links.apply(runtime, attempt), lookup.given(), lookup);
                 return;
             } catch (RefusedException e) {
                 // a shared link's refusal is of the secret the robot that opened the link presented
@@ -128,14 +159,14 @@ public abstract class AbstractRobot {
     /**
      * Connects as {@link #connect(HardwareOptions)} does, presenting a secret the caller already
      * holds (a bridge inside the Environment's own process) instead of looking for one. It always
-     * reaches the Environment itself, whatever {@link EnvironmentLinks#PIONEER_PROPERTY} says.
+     * reaches the Environment itself, whatever Pioneer robot server its runtime names.
      *
      * @param options timeouts
      * @param secret  the run secret, or null when the run has none
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     protected void connectPresenting(HardwareOptions options, String secret) throws IOException {
-        connect(options, EnvironmentLinks.toEnvironment(host, port, options), secret);
+        connect(options, runtime -> EnvironmentLinks.toEnvironment(runtime, host, port, options), secret, null);
     }
 
     /**
@@ -147,22 +178,21 @@ public abstract class AbstractRobot {
      */
     void connect(HardwareOptions options, EnvironmentLink link) throws IOException {
         EnvironmentLink[] first = {link};
-        connectFinding(options, o -> {
+        connectFinding(options, (runtime, o) -> {
             EnvironmentLink l = first[0];
             first[0] = null;
-            return l != null ? l : EnvironmentLinks.to(host, port, o);
+            return l != null ? l : EnvironmentLinks.to(runtime, host, port, o);
         });
     }
 
-    private void connect(HardwareOptions options, EnvironmentLink link, String secret) throws IOException {
-        connect(options, link, secret, null);
-    }
-
-    /** @param lookup gives the secret once connected, or null to present {@code secret} */
-    private void connect(HardwareOptions options, EnvironmentLink link, String secret, Supplier<String> lookup)
-            throws IOException {
+    /**
+     * @param links  makes the robot's link, given the runtime it uses
+     * @param lookup gives the secret once connected, or null to present {@code secret}
+     */
+    private void connect(HardwareOptions options, Function<RobotRuntime, EnvironmentLink> links, String secret,
+                         Supplier<String> lookup) throws IOException {
         HardwareSimulator hw = new HardwareSimulator(new RobotHello(name, robotType, parameters, secret),
-                this::responded, options);
+                this::responded, options, givenRuntime);
         if (lookup != null) {
             hw.lookUpSecret(lookup);
         }
@@ -170,11 +200,15 @@ public abstract class AbstractRobot {
         hardware = hw;
         Welcome w;
         try {
-            w = hw.connect(link);
+            w = hw.connect(links);
         } catch (IOException | RuntimeException e) {
             hardware = null;
             lastEnd = hw.runEnd();
             throw e;
+        } finally {
+            if (hw.runtime() != null) {
+                usedRuntime = hw.runtime();
+            }
         }
         stepMs = w.stepMs();
         facts = WelcomeFacts.of(name, w);
@@ -219,6 +253,7 @@ public abstract class AbstractRobot {
      */
     protected void responded(RobotSensorResponse response) {
         state = response.state();
+        clock().stateArrived(response.state().timeMs());
         for (MessageDelivery m : response.state().messages()) {
             inbox.add(new RobotMessage(m));
         }
@@ -546,6 +581,12 @@ public abstract class AbstractRobot {
      */
     public long getRunSeed() {
         return facts.seed();
+    }
+
+    /** @return the runtime whose clock the robot's states set: its own, else the default one */
+    private RobotRuntime clock() {
+        RobotRuntime runtime = getRuntime();
+        return runtime != null ? runtime : RobotRuntime.defaultRuntime();
     }
 
     /** @return simulated time of the latest state, ms */

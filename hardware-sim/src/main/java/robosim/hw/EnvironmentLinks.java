@@ -1,43 +1,41 @@
 package robosim.hw;
 
 import java.util.Locale;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 
 /**
- * Chooses each robot's {@link EnvironmentLink}. By default ({@code auto}) a robot alone in its JVM
- * has a connection of its own, with one frame per robot each way each step, as every robot had
- * before shared links; from the second robot of a JVM connected to the same Environment on, the
- * robots share one connection, each step's states arriving in one frame and their requests leaving
- * in one. Runs are the same either way: the Environment steps each robot as it would over a
- * connection of its own.
+ * Chooses each robot's {@link EnvironmentLink}, as its {@link RobotRuntime}'s choices say. By
+ * default ({@code auto}) a robot alone in its runtime has a connection of its own, with one frame
+ * per robot each way each step, as every robot had before shared links; from the second robot of a
+ * runtime connected to the same Environment on, the robots share one connection, each step's states
+ * arriving in one frame and their requests leaving in one. Runs are the same either way: the
+ * Environment steps each robot as it would over a connection of its own.
  *
- * <p>The system property {@code robosim.link} overrides the choice: {@code own} gives every robot a
- * connection of its own, {@code shared} puts every robot, the first too, on the shared one.
+ * <p>The links chosen can be {@code own}, a connection of its own for every robot, or
+ * {@code shared}, every robot, the first too, on the shared one. The default runtime takes the
+ * choice from the system property {@value #PROPERTY}.
  *
- * <p>The system property {@value #PIONEER_PROPERTY}, set to a Pioneer robot server's
- * {@code host:port}, sends every robot of the JVM there instead, through a {@link PioneerLink}: the
- * same program then drives MobileSim, a real Pioneer behind a serial-to-TCP bridge, or RoboSim's
- * own Pioneer port, whatever Environment host and port it was given.
+ * <p>A runtime may send its robots to a Pioneer robot server's {@code host:port} instead (the default
+ * runtime when the system property {@value #PIONEER_PROPERTY} names one), through a
+ * {@link PioneerLink}: the same program then drives MobileSim, a real Pioneer behind a
+ * serial-to-TCP bridge, or RoboSim's own Pioneer port, whatever Environment host and port it was
+ * given.
  */
 public final class EnvironmentLinks {
-    /** The system property that chooses the links. */
+    /** The system property that chooses the default runtime's links. */
     public static final String PROPERTY = "robosim.link";
-    /** The system property that sends the robots to a Pioneer robot server, {@code host:port}. */
+    /** The system property that sends the default runtime's robots to a Pioneer robot server, {@code host:port}. */
     public static final String PIONEER_PROPERTY = "robosim.pioneer";
-    /** Robots of this JVM connected or connecting, by the Environment's host and port. */
-    private static final Map<String, Integer> ROBOTS = new ConcurrentHashMap<>();
 
     private EnvironmentLinks() {
     }
 
     /** How robots reach the Environment. */
     public enum Mode {
-        /** The first robot of a JVM alone, the others sharing one connection. */
+        /** The first robot of a runtime alone, the others sharing one connection. */
         AUTO,
         /** A connection for each robot. */
         OWN,
-        /** One connection for every robot of the JVM. */
+        /** One connection for every robot of the runtime. */
         SHARED;
 
         /**
@@ -56,37 +54,41 @@ public final class EnvironmentLinks {
     }
 
     /**
-     * A link for one robot, not yet open, as {@link Mode#configured()} chooses.
+     * A link for one robot of a runtime, not yet open, as the runtime's choices say.
      *
+     * @param runtime the runtime the robot uses, open
      * @param host    the Environment's host
      * @param port    its robot port
      * @param options timeouts
      * @return the link
      */
-    public static EnvironmentLink to(String host, int port, HardwareOptions options) {
-        String pioneer = System.getProperty(PIONEER_PROPERTY);
-        if (pioneer != null && !pioneer.isBlank()) {
-            return pioneer(pioneer, options);
+    static EnvironmentLink to(RobotRuntime runtime, String host, int port, HardwareOptions options) {
+        String pioneer = runtime.choices().pioneer();
+        if (pioneer != null) {
+            PioneerLink server = pioneer(pioneer, options);
+            return new PioneerLink(server.host(), server.port(), options, runtime.choices().virtualThreads());
         }
-        return toEnvironment(host, port, options);
+        return toEnvironment(runtime, host, port, options);
     }
 
     /**
-     * A link to the Environment itself, whatever {@value #PIONEER_PROPERTY} says: for robots that
-     * bridge the Environment to Pioneer clients.
+     * A link to the Environment itself, whatever Pioneer robot server the runtime names: for robots
+     * that bridge the Environment to Pioneer clients.
      *
+     * @param runtime the runtime the robot uses, open
      * @param host    the Environment's host
      * @param port    its robot port
      * @param options timeouts
      * @return the link
      */
-    public static EnvironmentLink toEnvironment(String host, int port, HardwareOptions options) {
-        Mode mode = Mode.configured();
+    static EnvironmentLink toEnvironment(RobotRuntime runtime, String host, int port, HardwareOptions options) {
+        Mode mode = runtime.choices().links();
         String key = host + ":" + port;
-        int robots = ROBOTS.merge(key, 1, Integer::sum);
-        Runnable released = () -> ROBOTS.computeIfPresent(key, (k, n) -> n > 1 ? n - 1 : null);
+        int robots = runtime.countRobotAt(key);
+        Runnable released = () -> runtime.uncountRobotAt(key);
         boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1;
-        return shared ? new LinkMember(host, port, options, released) : new SocketLink(host, port, options, released);
+        return shared ? new LinkMember(runtime, host, port, options, released)
+                : new SocketLink(runtime, host, port, options, released);
     }
 
     /**

@@ -4,10 +4,10 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import java.util.function.LongPredicate;
 import java.util.function.Supplier;
 import java.util.logging.Logger;
@@ -21,34 +21,22 @@ import robosim.protocol.Welcome;
  * {@link RequestQueue}; the link delivers each step through {@link StepReceiver}, and the
  * simulator hands the step's {@link RobotSensorResponse} to the robot once its code has yielded.
  * Once the code has yielded again, the queue is drained and sent as the robot's requests for the
- * step, by the last robot thread to yield, so no thread wakes just to send. One watchdog thread
- * per JVM sends for robots whose code ended without yielding, warns about code that does not
- * yield, and sends what shared links have collected when some of their robots are late.
+ * step, by the last robot thread to yield, so no thread wakes just to send. The watchdog of the
+ * robot's {@link RobotRuntime} sends for robots whose code ended without yielding, warns about code
+ * that does not yield, and sends what shared links have collected when some of their robots are
+ * late. The robot uses its runtime from the moment it begins to connect until its part ends.
  */
 public final class HardwareSimulator implements RequestQueue, StepReceiver {
     private static final Logger LOG = Logger.getLogger(HardwareSimulator.class.getName());
-    private static final long WATCH_MS = 50;
-    private static final Set<HardwareSimulator> WATCHED = ConcurrentHashMap.newKeySet();
-
-    static {
-        Thread watchdog = new Thread(() -> {
-            while (true) {
-                for (HardwareSimulator hw : WATCHED) {
-                    hw.watch();
-                }
-                SharedLink.sendLingering();
-                try {
-                    Thread.sleep(WATCH_MS);
-                } catch (InterruptedException e) {
-                    return;
-                }
-            }
-        }, "hw-watchdog");
-        watchdog.setDaemon(true);
-        watchdog.start();
-    }
+    /** How often the watchdog looks after each robot, ms. */
+    static final long WATCH_MS = 50;
 
     private final RobotHello hello;
+    /** The runtime the robot was given, or null for the default one. */
+    private final RobotRuntime given;
+    /** The runtime it uses, from the moment it begins to connect. */
+    private volatile RobotRuntime runtime;
+    private final AtomicBoolean leftRuntime = new AtomicBoolean();
     private final StepGate gate = new StepGate();
     private final Consumer<RobotSensorResponse> responses;
     private final Queue<RobotRequest> robotRequestQueue = new ConcurrentLinkedQueue<>();
@@ -72,14 +60,27 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * @param options   timeouts
      */
     public HardwareSimulator(RobotHello hello, Consumer<RobotSensorResponse> responses, HardwareOptions options) {
-        this.hello = hello;
-        this.responses = responses;
-        this.options = options;
+        this(hello, responses, options, null);
     }
 
     /**
-     * Connects over the link {@link EnvironmentLinks} chooses for this JVM, says hello and waits
-     * (bounded) for the Environment's welcome. The calling thread becomes part of the robot's code.
+     * @param hello     the robot's name, type and parameters
+     * @param responses receives each step's response while the robot's code is yielded
+     * @param options   timeouts
+     * @param runtime   the runtime the robot uses, or null for the default one
+     */
+    public HardwareSimulator(RobotHello hello, Consumer<RobotSensorResponse> responses, HardwareOptions options,
+                             RobotRuntime runtime) {
+        this.hello = hello;
+        this.responses = responses;
+        this.options = options;
+        this.given = runtime;
+    }
+
+    /**
+     * Connects over the link its {@link RobotRuntime} chooses (see {@link EnvironmentLinks}), says
+     * hello and waits (bounded) for the Environment's welcome. The calling thread becomes part of the
+     * robot's code.
      *
      * @param host the Environment's host
      * @param port its robot port
@@ -87,7 +88,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     public Welcome connect(String host, int port) throws IOException {
-        return connect(EnvironmentLinks.to(host, port, options));
+        return connect(rt -> EnvironmentLinks.to(rt, host, port, options));
     }
 
     /**
@@ -98,17 +99,49 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * @throws IOException if the connection fails or the Environment refuses the robot
      */
     public Welcome connect(EnvironmentLink link) throws IOException {
+        return connect(rt -> link);
+    }
+
+    /**
+     * Begins to use the robot's runtime, then connects over the link {@code links} makes for it.
+     *
+     * @param links the robot's link, given the runtime it uses
+     * @return the welcome
+     * @throws IOException if the connection fails or the Environment refuses the robot
+     */
+    Welcome connect(Function<RobotRuntime, EnvironmentLink> links) throws IOException {
+        RobotRuntime rt = RobotRuntime.enter(given);
+        runtime = rt;
+        EnvironmentLink link;
+        try {
+            link = links.apply(rt);
+        } catch (RuntimeException e) {
+            leaveRuntime();
+            throw e;
+        }
+        return open(link);
+    }
+
+    /** @return the runtime the robot uses, once it has begun to connect; else null */
+    RobotRuntime runtime() {
+        return runtime;
+    }
+
+    private Welcome open(EnvironmentLink link) throws IOException {
         Thread me = Thread.currentThread();
         // joined first: a step that comes before the welcome returns waits for this thread's yield
         gate.join(me);
         this.link = link;
         joinedNanos = System.nanoTime();
-        RunEndWatch.joining(this);
+        runtime.runEndWatches().joining(this);
         try {
             Welcome w = link.open(hello, secret, this);
             welcomedAfterStep = w.state().step();
             welcomed = true;
-            WATCHED.add(this);
+            runtime.watch(this);
+            if (gate.isClosed()) {
+                runtime.unwatch(this); // it ended as it was welcomed
+            }
             return w;
         } catch (IOException | RuntimeException e) {
             gate.leave(me);
@@ -274,7 +307,7 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
      * Looks after robots whose code ended without yielding, and warns about code that never yields.
      * Robots whose step was answered, or came less than a watch period ago, cost one volatile read.
      */
-    private void watch() {
+    void watch() {
         long unsent = gate.unsentNanos();
         if (unsent < WATCH_MS * 1_000_000L) {
             return;
@@ -308,15 +341,30 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
             runEnd = e;
         }
         LOG.fine(e::describe);
-        RunEndWatch.ended(this, e);
+        RobotRuntime rt = runtime;
+        if (rt != null) {
+            rt.runEndWatches().ended(this, e);
+        }
     }
 
     private void close() {
-        WATCHED.remove(this);
+        RobotRuntime rt = runtime;
+        if (rt != null) {
+            rt.unwatch(this);
+        }
         gate.close();
         EnvironmentLink l = link;
         if (l != null) {
             l.close();
+        }
+        leaveRuntime();
+    }
+
+    /** The robot no longer uses its runtime, once its link has closed; the runtime closes after its last robot. */
+    private void leaveRuntime() {
+        RobotRuntime rt = runtime;
+        if (rt != null && leftRuntime.compareAndSet(false, true)) {
+            rt.leave();
         }
     }
 }

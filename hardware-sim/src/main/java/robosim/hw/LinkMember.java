@@ -8,10 +8,11 @@ import robosim.protocol.RobotHello;
 import robosim.protocol.Welcome;
 
 /**
- * One robot's part of its JVM's {@link SharedLink} to an Environment: opening it joins the link
+ * One robot's part of its runtime's {@link SharedLink} to an Environment: opening it joins the link
  * (connecting it if none is open), closing it leaves the link, which goes on for the others.
  */
 final class LinkMember extends ReleasedOnClose {
+    private final RobotRuntime runtime;
     private final String host;
     private final int port;
     private final HardwareOptions options;
@@ -19,8 +20,9 @@ final class LinkMember extends ReleasedOnClose {
     private volatile String name;
     private volatile StepReceiver receiver;
 
-    LinkMember(String host, int port, HardwareOptions options, Runnable released) {
+    LinkMember(RobotRuntime runtime, String host, int port, HardwareOptions options, Runnable released) {
         super(released);
+        this.runtime = runtime;
         this.host = host;
         this.port = port;
         this.options = options;
@@ -36,7 +38,7 @@ final class LinkMember extends ReleasedOnClose {
         this.name = hello.name();
         this.receiver = receiver;
         try {
-            link = SharedLink.to(host, port, options, secret != null ? secret : hello::token);
+            link = runtime.sharedLinks().to(host, port, options, secret != null ? secret : hello::token);
             return link.join(this, hello);
         } catch (IOException | RuntimeException e) {
             close();

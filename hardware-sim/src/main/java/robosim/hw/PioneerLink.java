@@ -39,6 +39,7 @@ public final class PioneerLink extends ReleasedOnClose {
     private final String host;
     private final int port;
     private final HardwareOptions options;
+    private final boolean virtualThreads;
     private volatile PioneerClient client;
     private SipToState states;
     private CommandToPackets commands;
@@ -50,6 +51,16 @@ public final class PioneerLink extends ReleasedOnClose {
      * @param options timeouts: to connect and be answered, and the silence after which the server is lost
      */
     public PioneerLink(String host, int port, HardwareOptions options) {
+        this(host, port, options, RobotThreads.virtual());
+    }
+
+    /**
+     * @param host           the robot server's host
+     * @param port           its port
+     * @param options        timeouts
+     * @param virtualThreads whether its reader is a virtual thread where the JDK allows (a runtime's choice)
+     */
+    PioneerLink(String host, int port, HardwareOptions options, boolean virtualThreads) {
         super(() -> { });
         if (port <= 0 || port > 65535) {
             throw new IllegalArgumentException(port + " was supplied for the Pioneer server's port: a port is 1 to 65535");
@@ -57,6 +68,7 @@ public final class PioneerLink extends ReleasedOnClose {
         this.host = host;
         this.port = port;
         this.options = options;
+        this.virtualThreads = virtualThreads;
     }
 
     @Override
@@ -81,7 +93,7 @@ public final class PioneerLink extends ReleasedOnClose {
             openedNanos = System.nanoTime();
             RobotState state = states.state(first, 0, 0, List.of());
             int cycle = config.sipCycle() > 0 ? config.sipCycle() : DEFAULT_CYCLE_MS;
-            RobotThreads.unstarted("hw-pioneer-" + hello.name(), () -> read(receiver)).start();
+            RobotThreads.unstarted("hw-pioneer-" + hello.name(), () -> read(receiver), virtualThreads).start();
             // a robot server has no world and no run: no properties, seed 0
             return new Welcome(hello.name(), cycle, state, Map.of(), 0);
         } catch (IOException | RuntimeException e) {

@@ -1,8 +1,8 @@
 package robosim.hw;
 
 /**
- * What both kinds of link do on closing: close once, and tell {@link EnvironmentLinks} that the
- * robot no longer holds a link to its Environment.
+ * What the kinds of link do on closing: close once, and tell the robot's {@link RobotRuntime} that
+ * the robot no longer holds a link to its Environment.
  */
 abstract class ReleasedOnClose implements EnvironmentLink {
     private final Runnable released;

@@ -4,50 +4,45 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 
 /**
- * Follows the robots of this JVM from the moment it is opened: how many are still in their run
- * (connecting or connected), and how each of the others ended. It is for a launcher that runs a
- * robot program and reports its robots' ends ({@code robosim robot}); a program reads its own
+ * Follows the robots of a {@link RobotRuntime} from the moment it is opened: how many are still in
+ * their run (connecting or connected), and how each of the others ended. It is for a launcher that
+ * runs a robot program and reports its robots' ends ({@code robosim robot}); a program reads its own
  * robot's end with {@link AbstractRobot#getRunEnd()}.
  */
 public final class RunEndWatch implements AutoCloseable {
-    private static final Set<RunEndWatch> OPEN = ConcurrentHashMap.newKeySet();
-
+    private final RunEndWatches watches;
     private final Set<HardwareSimulator> running = new HashSet<>();
     private final List<RunEnd> ends = new ArrayList<>();
 
-    private RunEndWatch() {
+    RunEndWatch(RunEndWatches watches) {
+        this.watches = watches;
     }
 
-    /** @return a watch that follows every robot that begins to connect from now on, until closed */
+    /**
+     * @return a watch that follows, until closed, every robot of the default runtime (every robot
+     *         given no runtime of its own) that begins to connect from now on, in this default
+     *         runtime and in the fresh ones made after it closes
+     */
     public static RunEndWatch open() {
-        RunEndWatch w = new RunEndWatch();
-        OPEN.add(w);
-        return w;
+        return RobotRuntime.defaultRuntime().runEndWatches().open();
     }
 
-    /** A robot began to connect. */
-    static void joining(HardwareSimulator hw) {
-        for (RunEndWatch w : OPEN) {
-            w.add(hw);
-        }
+    /**
+     * @param runtime the runtime whose robots to follow
+     * @return a watch that follows every robot of {@code runtime} that begins to connect from now on, until closed
+     */
+    public static RunEndWatch open(RobotRuntime runtime) {
+        return runtime.runEndWatches().open();
     }
 
-    /** A robot's part in the run ended; called once per robot. */
-    static void ended(HardwareSimulator hw, RunEnd end) {
-        for (RunEndWatch w : OPEN) {
-            w.remove(hw, end);
-        }
-    }
-
-    private synchronized void add(HardwareSimulator hw) {
+    synchronized void add(HardwareSimulator hw) {
         running.add(hw);
         notifyAll();
     }
 
-    private synchronized void remove(HardwareSimulator hw, RunEnd end) {
+    synchronized void remove(HardwareSimulator hw, RunEnd end) {
         if (running.remove(hw)) {
             ends.add(end);
             notifyAll();
@@ -128,6 +123,6 @@ public final class RunEndWatch implements AutoCloseable {
     /** Stops following robots. */
     @Override
     public void close() {
-        OPEN.remove(this);
+        watches.closed(this);
     }
 }

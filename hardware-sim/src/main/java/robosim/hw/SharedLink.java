@@ -12,10 +12,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -32,10 +30,10 @@ import robosim.protocol.TimeSteps;
 import robosim.protocol.Welcome;
 
 /**
- * One connection to an Environment that many robots of this JVM share: each step one
+ * One connection to an Environment that many robots of a {@link RobotRuntime} share: each step one
  * {@link TimeSteps} frame in, read by one thread that hands each robot its state (the robots of a
  * large frame in chunks, on one thread per processor, since each robot's cycle runs as its state is
- * handed over), and one
+ * handed over: {@link SharedLinks#handers()}), and one
  * {@link LinkRequests} frame out, written by the thread that completes it (the last robot to
  * yield). Each robot keeps its own {@link HardwareSimulator}, request queue and state. When some
  * robots are late, the requests of the others go after {@link #LINGER_MS} in a frame of their own,
@@ -50,16 +48,7 @@ final class SharedLink {
     static final long LINGER_MS = 100;
     /** Robots whose states one task hands out; a frame of fewer than two chunks is handed out by the reader. */
     static final int HANDING_CHUNK = 25;
-    /**
-     * The threads that hand the robots of a large frame their states, one per processor (none on
-     * one processor), shared by the JVM's links.
-     */
-    private static final ExecutorService HANDERS = handers(Runtime.getRuntime().availableProcessors());
-    /** The open links, by the Environment's host and port. */
-    private static final Map<String, SharedLink> OPEN = new ConcurrentHashMap<>();
-    /** Held while a link connects, so that robots connecting together open one link. */
-    private static final Object CONNECTING = new Object();
-
+    private final SharedLinks owner;
     private final String host;
     private final int port;
     private final HardwareOptions options;
@@ -82,19 +71,19 @@ final class SharedLink {
     private record Joining(LinkMember member, CompletableFuture<Welcome> welcome) {
     }
 
-    private static ExecutorService handers(int processors) {
-        if (processors < 2) {
-            return null;
-        }
-        AtomicInteger made = new AtomicInteger();
-        return Executors.newFixedThreadPool(processors, r -> {
-            Thread t = new Thread(r, "hw-link-hand-" + made.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
-    }
-
-    private SharedLink(String host, int port, HardwareOptions options, Supplier<String> secret) throws IOException {
+    /**
+     * Connects and says the link's hello; {@link #read} is to run on a thread of its own.
+     *
+     * @param owner   the runtime's links, told when this one ends
+     * @param host    the Environment's host
+     * @param port    its robot port
+     * @param options timeouts (the first robot's serve the whole link)
+     * @param secret  gives the run secret the link presents (the opening robot's)
+     * @throws IOException if it cannot connect
+     */
+    SharedLink(SharedLinks owner, String host, int port, HardwareOptions options, Supplier<String> secret)
+            throws IOException {
+        this.owner = owner;
         this.host = host;
         this.port = port;
         this.options = options;
@@ -111,41 +100,29 @@ final class SharedLink {
         }
     }
 
-    /**
-     * The JVM's open link to an Environment, connected if none is open.
-     *
-     * @param host    the Environment's host
-     * @param port    its robot port
-     * @param options timeouts (the first robot's serve the whole link)
-     * @param secret  gives the run secret the link presents once connected (the opening robot's)
-     * @return the link
-     * @throws IOException if it cannot connect
-     */
-    static SharedLink to(String host, int port, HardwareOptions options, Supplier<String> secret) throws IOException {
-        String key = host + ":" + port;
-        synchronized (CONNECTING) {
-            SharedLink link = OPEN.get(key);
-            if (link == null || link.endReason != null) {
-                link = new SharedLink(host, port, options, secret);
-                OPEN.put(key, link);
-                SharedLink started = link;
-                RobotThreads.unstarted("hw-link-" + key, started::read).start();
-            }
-            return link;
-        }
+    /** @return whether the link has ended: a robot that comes later opens a new one */
+    boolean hasEnded() {
+        return endReason != null;
     }
 
-    /** Sends, on every open link, the requests of robots that are ready when others are late. */
-    static void sendLingering() {
-        long now = System.nanoTime();
-        for (SharedLink link : OPEN.values()) {
-            LinkRequests ready;
-            synchronized (link) {
-                ready = link.batch.isEmpty() || now - link.batchOpenedNanos < TimeUnit.MILLISECONDS.toNanos(LINGER_MS)
-                        ? null : link.takeBatch();
-            }
-            link.write(ready);
+    /** @return the Environment's host and port, {@code host:port} */
+    String environment() {
+        return host + ":" + port;
+    }
+
+    /**
+     * Sends the requests of the robots that are ready, if the open step's frame has waited
+     * {@link #LINGER_MS} for the others.
+     *
+     * @param now {@link System#nanoTime()} now
+     */
+    void sendLingering(long now) {
+        LinkRequests ready;
+        synchronized (this) {
+            ready = batch.isEmpty() || now - batchOpenedNanos < TimeUnit.MILLISECONDS.toNanos(LINGER_MS)
+                    ? null : takeBatch();
         }
+        write(ready);
     }
 
     /** Says a robot's hello on the link and waits (bounded) for its welcome or refusal. */
@@ -175,7 +152,8 @@ final class SharedLink {
         }
     }
 
-    private void read() {
+    /** Reads the Environment's messages until the link ends; runs on the link's own thread. */
+    void read() {
         RunEnd.Kind kind = RunEnd.Kind.LOST;
         String reason = SocketLink.CLOSED;
         try {
@@ -250,7 +228,8 @@ final class SharedLink {
                 }
             }
         }
-        if (to.size() < 2 * HANDING_CHUNK || HANDERS == null) {
+        ExecutorService handers = to.size() < 2 * HANDING_CHUNK ? null : owner.handers();
+        if (handers == null) {
             hand(ts, to, 0, to.size());
             return;
         }
@@ -258,7 +237,7 @@ final class SharedLink {
         // chunks, as each robot's own link thread would run them, and go back to reading
         for (int from = 0; from < to.size(); from += HANDING_CHUNK) {
             int start = from;
-            HANDERS.execute(() -> hand(ts, to, start, Math.min(to.size(), start + HANDING_CHUNK)));
+            handers.execute(() -> hand(ts, to, start, Math.min(to.size(), start + HANDING_CHUNK)));
         }
     }
 
@@ -319,6 +298,15 @@ final class SharedLink {
         write(complete);
     }
 
+    /**
+     * Closes the link, its robots having all left: the runtime is closing.
+     *
+     * @param reason why, for the log
+     */
+    void close(String reason) {
+        endAll(RunEnd.Kind.LEFT, reason);
+    }
+
     private void endAll(RunEnd.Kind kind, String reason) {
         synchronized (this) {
             if (endReason != null) {
@@ -329,7 +317,7 @@ final class SharedLink {
             }
             endReason = "the Environment at " + host + ":" + port + ": " + reason;
         }
-        OPEN.remove(host + ":" + port, this);
+        owner.ended(this);
         try {
             socket.close();
         } catch (IOException e) {

@@ -34,6 +34,7 @@ final class SocketLink extends ReleasedOnClose {
     /** One codec for every link of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
     static final MessageCodec CODEC = new MessageCodec();
 
+    private final RobotRuntime runtime;
     private final String host;
     private final int port;
     private final HardwareOptions options;
@@ -42,13 +43,15 @@ final class SocketLink extends ReleasedOnClose {
     private FrameReader reader;
 
     /**
+     * @param runtime  the runtime whose choices make the link's thread
      * @param host     the Environment's host
      * @param port     its robot port
      * @param options  timeouts
      * @param released run once when the link closes
      */
-    SocketLink(String host, int port, HardwareOptions options, Runnable released) {
+    SocketLink(RobotRuntime runtime, String host, int port, HardwareOptions options, Runnable released) {
         super(released);
+        this.runtime = runtime;
         this.host = host;
         this.port = port;
         this.options = options;
@@ -130,7 +133,7 @@ final class SocketLink extends ReleasedOnClose {
                 throw refusal(host, port, first);
             }
             socket.setSoTimeout((int) options.lostAfterMs());
-            RobotThreads.unstarted("hw-" + hello.name(), () -> read(receiver)).start();
+            runtime.thread("hw-" + hello.name(), () -> read(receiver)).start();
             return w;
         } catch (IOException | RuntimeException e) {
             close();

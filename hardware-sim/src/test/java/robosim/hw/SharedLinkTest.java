@@ -42,6 +42,9 @@ import robosim.protocol.Welcome;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class SharedLinkTest {
     private static final HardwareOptions OPTIONS = new HardwareOptions(WAIT_MS, WAIT_MS, 60_000);
+    /** Every robot of the test on the shared link, apart from any other robot of the JVM. */
+    private final RobotRuntime runtime = RobotRuntime.create("shared-link-test",
+            RuntimeChoices.defaults().withLinks(EnvironmentLinks.Mode.SHARED));
     private final MessageCodec codec = new MessageCodec();
     private final RobotCode code = new RobotCode();
     private ServerSocket listener;
@@ -53,14 +56,12 @@ class SharedLinkTest {
 
     @BeforeEach
     void listen() throws IOException {
-        System.setProperty(EnvironmentLinks.PROPERTY, "shared");
         listener = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
         listener.setSoTimeout((int) WAIT_MS);
     }
 
     @AfterEach
     void close() throws Exception {
-        System.clearProperty(EnvironmentLinks.PROPERTY);
         try {
             if (env != null) {
                 env.close();
@@ -71,8 +72,8 @@ class SharedLinkTest {
         }
     }
 
-    private static HardwareSimulator hardware(String name) {
-        return new HardwareSimulator(new RobotHello(name, "pioneer", TestRobot.PARAMETERS), r -> { }, OPTIONS);
+    private HardwareSimulator hardware(String name) {
+        return new HardwareSimulator(new RobotHello(name, "pioneer", TestRobot.PARAMETERS), r -> { }, OPTIONS, runtime);
     }
 
     /** Starts robot code that connects {@code hw}, then runs {@code body}. */

@@ -15,7 +15,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -25,6 +24,8 @@ import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
 import robosim.hw.EnvironmentLinks;
+import robosim.hw.RobotRuntime;
+import robosim.hw.RuntimeChoices;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 
@@ -37,11 +38,6 @@ import robosim.protocol.Snapshot;
 class SharedLinkTest {
     @TempDir
     Path dir;
-
-    @AfterEach
-    void defaultLinks() {
-        System.clearProperty(EnvironmentLinks.PROPERTY);
-    }
 
     /**
      * A room of {@code robots} Pioneers on a grid, 1.5 m apart (0.8 m from 17 robots on), close
@@ -75,9 +71,15 @@ class SharedLinkTest {
         return ThreadedRun.world(dir, "crowd-" + robots + ".xml", xml.append("</world>\n").toString());
     }
 
+    /** A runtime of the test's own whose robots reach the Environment as {@code mode} says. */
+    private static RobotRuntime links(EnvironmentLinks.Mode mode) {
+        return RobotRuntime.create("links-" + mode.name().toLowerCase(Locale.ROOT), RuntimeChoices.defaults().withLinks(mode));
+    }
+
     /** Drives by its sonars until the run ends: ahead while the front is clear, else turning. */
-    private static Boolean wander(String name, int port) {
+    private static Boolean wander(String name, int port, RobotRuntime runtime) {
         ArRobot robot = new ArRobot(name, "127.0.0.1", port, "p3dx");
+        robot.setRuntime(runtime);
         if (!robot.blockingConnect()) {
             throw new IllegalStateException(name + ": " + robot.getConnectionError());
         }
@@ -91,14 +93,16 @@ class SharedLinkTest {
         return true;
     }
 
-    /** Runs {@code robots} wanderers for {@code steps} steps with the links {@code mode} chooses. */
-    private List<Snapshot> run(Path world, int robots, long steps, String mode) throws Exception {
-        System.setProperty(EnvironmentLinks.PROPERTY, mode);
+    /**
+     * Runs {@code robots} wanderers for {@code steps} steps on {@code runtime}: one with the links it
+     * chooses, or null for the default runtime, as a program that does not know of runtimes.
+     */
+    private List<Snapshot> run(Path world, int robots, long steps, RobotRuntime runtime) throws Exception {
         try (ThreadedRun run = new ThreadedRun(world, 7, steps)) {
             List<Future<Boolean>> programs = new ArrayList<>();
             for (int k = 0; k < robots; k++) {
                 String name = "b" + k;
-                programs.add(run.robot(() -> wander(name, run.port())));
+                programs.add(run.robot(() -> wander(name, run.port(), runtime)));
             }
             RunReport report = run.await();
             assertEquals("step limit " + steps + " reached", report.endReason());
@@ -115,8 +119,8 @@ class SharedLinkTest {
     void oneConnectionForManyRobotsGivesTheRunOfAConnectionEach() throws Exception {
         Path world = room(12);
 
-        List<Snapshot> own = run(world, 12, 150, "own");
-        List<Snapshot> shared = run(world, 12, 150, "shared");
+        List<Snapshot> own = run(world, 12, 150, links(EnvironmentLinks.Mode.OWN));
+        List<Snapshot> shared = run(world, 12, 150, links(EnvironmentLinks.Mode.SHARED));
 
         assertEquals(151, own.size());
         assertEquals(own.size(), shared.size());
@@ -132,7 +136,7 @@ class SharedLinkTest {
 
     @Test
     void twoOfTwoHundredRobotsOnOneLinkThatStopAnsweringAreDroppedAloneAtTheDeadline() throws Exception {
-        System.setProperty(EnvironmentLinks.PROPERTY, "shared");
+        RobotRuntime runtime = links(EnvironmentLinks.Mode.SHARED);
         int robots = 200;
         long steps = 12;
         Set<String> stuck = Set.of("b17", "b123");
@@ -146,6 +150,7 @@ class SharedLinkTest {
                 String name = "b" + k;
                 Thread t = new Thread(() -> {
                     ArRobot robot = new ArRobot(name, "127.0.0.1", env.server.robotPort(), "p3dx");
+                    robot.setRuntime(runtime);
                     if (!robot.blockingConnect()) {
                         return;
                     }
@@ -194,8 +199,8 @@ class SharedLinkTest {
         Level was = net.getLevel();
         net.setLevel(Level.INFO);
         try (LogCapture log = new LogCapture("robosim.env.net")) {
-            List<Snapshot> auto = run(world, 3, 60, "auto");
-            List<Snapshot> own = run(world, 3, 60, "own");
+            List<Snapshot> auto = run(world, 3, 60, null);
+            List<Snapshot> own = run(world, 3, 60, links(EnvironmentLinks.Mode.OWN));
 
             List<String> connected = log.lines().stream().filter(l -> l.startsWith("robot ") && l.contains(" connected")).toList();
             assertEquals(6, connected.size(), connected.toString());

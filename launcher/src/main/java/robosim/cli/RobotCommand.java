@@ -18,6 +18,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import robosim.hw.EnvironmentLinks;
 import robosim.hw.HardwareOptions;
 import robosim.hw.PioneerLink;
+import robosim.hw.RuntimeChoices;
 
 /**
  * {@code robosim robot}: runs a robot program in this JVM, as the original's
@@ -131,6 +132,11 @@ final class RobotCommand implements Callable<Integer> {
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
+        }
+        try {
+            RuntimeChoices.fromSystemProperties(); // the program's robots' runtime reads them as it is made
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         ClassLoader loader = getClass().getClassLoader();
         if (classpath != null) {
