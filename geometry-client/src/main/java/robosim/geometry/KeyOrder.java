@@ -7,7 +7,7 @@ import java.util.Arrays;
  * significant first, skipping the bytes all keys of the range share. Equal keys keep their items'
  * order, so the result is the one order any stable sort gives.
  */
-final class KeyOrder {
+public final class KeyOrder {
     /** Ranges this short are sorted by insertion. */
     private static final int INSERTION_RUN = 24;
 
@@ -21,7 +21,7 @@ final class KeyOrder {
      * @param d a double, not NaN
      * @return its key
      */
-    static long key(double d) {
+    public static long key(double d) {
         long bits = Double.doubleToRawLongBits(d + 0.0); // -0.0 + 0.0 is 0.0
         return bits < 0 ? ~bits : bits ^ Long.MIN_VALUE;
     }
@@ -37,7 +37,7 @@ final class KeyOrder {
      * @param keyScratch  room for the keys of the range, at the same indexes
      * @param itemScratch room for the items of the range, at the same indexes
      */
-    static void sort(long[] keys, int[] items, int from, int to, long[] keyScratch, int[] itemScratch) {
+    public static void sort(long[] keys, int[] items, int from, int to, long[] keyScratch, int[] itemScratch) {
         if (to - from <= INSERTION_RUN) {
             insertion(keys, items, from, to);
             return;

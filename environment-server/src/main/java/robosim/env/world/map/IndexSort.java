@@ -1,5 +1,7 @@
 package robosim.env.world.map;
 
+import robosim.geometry.KeyOrder;
+
 /**
  * Sorts item indices by one number of the items, then another, on primitive arrays: stably by
  * the second number, then stably by the first, each a radix sort of the numbers (as longs that
@@ -50,77 +52,11 @@ final class IndexSort {
         byColumn(idx, table, first, keys, keyBuffer, idxBuffer);
     }
 
-    /** Below this many items a column is sorted by insertion: a hull's few corners need no more. */
-    private static final int SMALL = 32;
-
-    /** Sorts {@code idx} stably by one column: by insertion when small, else by radix, a byte at a time. */
+    /** Sorts {@code idx} stably by one column, as {@link KeyOrder} sorts: by the column's values, -0 as 0. */
     private static void byColumn(int[] idx, Table table, int column, long[] keys, long[] keyBuffer, int[] idxBuffer) {
-        int n = idx.length;
-        for (int i = 0; i < n; i++) {
-            keys[i] = key(table.at(idx[i], column)) ^ Long.MIN_VALUE; // unsigned order, for the bytes
+        for (int i = 0; i < idx.length; i++) {
+            keys[i] = KeyOrder.key(table.at(idx[i], column));
         }
-        if (n < SMALL) {
-            insertion(idx, keys, n);
-            return;
-        }
-        int[][] counts = new int[8][256];
-        for (int i = 0; i < n; i++) {
-            for (int b = 0; b < 8; b++) {
-                counts[b][(int) (keys[i] >>> (8 * b)) & 0xff]++;
-            }
-        }
-        long[] fromKeys = keys;
-        int[] from = idx;
-        long[] toKeys = keyBuffer;
-        int[] to = idxBuffer;
-        for (int b = 0; b < 8; b++) {
-            int[] count = counts[b];
-            if (count[(int) (fromKeys[0] >>> (8 * b)) & 0xff] == n) {
-                continue; // every key has this byte: the pass would change nothing
-            }
-            for (int d = 0, sum = 0; d < 256; d++) {
-                int c = count[d];
-                count[d] = sum;
-                sum += c;
-            }
-            for (int i = 0; i < n; i++) {
-                int at = count[(int) (fromKeys[i] >>> (8 * b)) & 0xff]++;
-                toKeys[at] = fromKeys[i];
-                to[at] = from[i];
-            }
-            long[] tk = fromKeys;
-            fromKeys = toKeys;
-            toKeys = tk;
-            int[] t = from;
-            from = to;
-            to = t;
-        }
-        if (from != idx) {
-            System.arraycopy(from, 0, idx, 0, n);
-        }
-    }
-
-    private static void insertion(int[] idx, long[] keys, int n) {
-        for (int i = 1; i < n; i++) {
-            long k = keys[i];
-            int v = idx[i];
-            int j = i - 1;
-            while (j >= 0 && Long.compareUnsigned(keys[j], k) > 0) {
-                keys[j + 1] = keys[j];
-                idx[j + 1] = idx[j];
-                j--;
-            }
-            keys[j + 1] = k;
-            idx[j + 1] = v;
-        }
-    }
-
-    /**
-     * @param v a number, not NaN
-     * @return a long that orders as {@code v} does among numbers compared with {@code <}: -0 is 0
-     */
-    static long key(double v) {
-        long bits = Double.doubleToRawLongBits(v + 0.0);
-        return bits >= 0 ? bits : bits ^ Long.MAX_VALUE;
+        KeyOrder.sort(keys, idx, 0, idx.length, keyBuffer, idxBuffer);
     }
 }
