@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -20,11 +21,13 @@ import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
 import robosim.hw.EnvironmentLinks;
 import robosim.hw.HardwareOptions;
+import robosim.hw.RobotRuntime;
 import robosim.params.ConversionFactors;
 import robosim.params.RobotParameterFiles;
 import robosim.pioneer.server.PioneerPortOptions;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.pioneer.server.ServedRobot;
+import robosim.protocol.Await;
 
 /**
  * The same ArRobot program, unchanged, drives a robot once through the Environment's own protocol
@@ -54,6 +57,10 @@ class PioneerLinkEndToEndTest {
             directTruth = env.sim.summary("r1");
         }
 
+        // the property is read as the default runtime is made: the first robot's must have closed, so
+        // that the next robot makes a fresh one (a robot that came while it had robots would join it)
+        Await.until(Duration.ofSeconds(30), "the first run's robot has left the default runtime",
+                () -> RobotRuntime.currentDefault().map(r -> r.robots() == 0).orElse(true));
         Drive pioneer;
         RobotSummary pioneerTruth;
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 1, ServerOptions.loopback());
