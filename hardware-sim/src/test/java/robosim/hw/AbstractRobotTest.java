@@ -24,6 +24,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import robosim.protocol.Bye;
+import robosim.protocol.CapturedLog;
 import robosim.protocol.Command;
 import robosim.protocol.Command.Addressing;
 import robosim.protocol.MessageDelivery;
@@ -400,23 +401,7 @@ class AbstractRobotTest {
     @Test
     void aRequestRefusedEveryStepIsLoggedOnceASecondButEachComplaintIsPolled() throws Exception {
         TestRobot robot = new TestRobot("r1", env.port());
-        java.util.logging.Logger log = java.util.logging.Logger.getLogger("robosim.hw");
-        List<String> lines = new java.util.concurrent.CopyOnWriteArrayList<>();
-        java.util.logging.Handler capture = new java.util.logging.Handler() {
-            @Override
-            public void publish(java.util.logging.LogRecord r) {
-                lines.add(r.getMessage());
-            }
-
-            @Override
-            public void flush() {
-            }
-
-            @Override
-            public void close() {
-            }
-        };
-        log.addHandler(capture);
+        CapturedLog log = new CapturedLog("robosim.hw");
         long started = System.nanoTime();
         try {
             run(robot, () -> {
@@ -439,11 +424,12 @@ class AbstractRobotTest {
             }
             assertEquals("done", nextSeen());
             long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - started) + 1;
+            List<String> lines = log.lines();
             long logged = lines.stream().filter(l -> l.contains("the Environment refused a request")).count();
             assertTrue(logged >= 1 && logged <= seconds, "30 refusals in " + seconds + " s: " + lines);
             assertTrue(lines.stream().allMatch(l -> l.chars().allMatch(c -> c >= 0x20 && c < 0x7f)), lines.toString());
         } finally {
-            log.removeHandler(capture);
+            log.close();
         }
     }
 

@@ -131,14 +131,7 @@ final class PioneerPort implements Closeable {
                 }
                 return;
             }
-            try {
-                admit(s);
-            } catch (IOException | RuntimeException e) {
-                LIMITED.warning("failures to serve robot " + served.name() + "'s ARIA clients", () -> "robot "
-                        + served.name() + ": could not serve the ARIA client at " + s.getRemoteSocketAddress() + ": "
-                        + e.getMessage());
-                close(s);
-            }
+            admit(s);
         }
     }
 
@@ -150,30 +143,44 @@ final class PioneerPort implements Closeable {
      * connection waits, and the one it replaces is refused at once, so a flood of connections is
      * refused as fast as it comes.
      */
-    private synchronized void admit(Socket s) throws IOException {
-        PioneerSession there = current;
-        if (there != null && !there.isEnded()) {
-            if (!there.isHeard()) {
-                there.end("it sent nothing, and the ARIA client from " + s.getRemoteSocketAddress()
-                        + " wants the port");
-            } else if (there.isGivingWay()) {
-                there.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
-                        + s.getRemoteSocketAddress() + " wants the port");
-            } else {
-                letWait(s);
-                return;
-            }
+    private synchronized void admit(Socket s) {
+        if (takeFrom(current, s)) {
+            serve(s);
+        } else {
+            letWait(s);
         }
-        serve(s);
     }
 
-    /** Serves a connection as the port's client. */
-    private void serve(Socket s) throws IOException {
-        s.setTcpNoDelay(true);
-        PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
-                served.parameters().robotClass(), served.parameters().subclass()));
-        current = session;
-        session.start(this::connected);
+    /**
+     * Whether a connection may have the port: it is free, or the client there has sent nothing or
+     * has been silent for long, and is ended to make room.
+     */
+    private static boolean takeFrom(PioneerSession there, Socket s) {
+        if (there == null || there.isEnded()) {
+            return true;
+        }
+        String why = !there.isHeard() ? "it sent nothing" : there.isGivingWay()
+                ? "silent for " + PioneerSession.SILENT_MS + " ms" : null;
+        if (why != null) {
+            there.end(why + ", and the ARIA client from " + s.getRemoteSocketAddress() + " wants the port");
+        }
+        return why != null;
+    }
+
+    /** Serves a connection as the port's client; one that cannot be served is closed, with a line. */
+    private void serve(Socket s) {
+        try {
+            s.setTcpNoDelay(true);
+            PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
+                    served.parameters().robotClass(), served.parameters().subclass()));
+            current = session;
+            session.start(this::connected);
+        } catch (IOException | RuntimeException e) {
+            LIMITED.warning("failures to serve robot " + served.name() + "'s ARIA clients", () -> "robot "
+                    + served.name() + ": could not serve the ARIA client at " + s.getRemoteSocketAddress() + ": "
+                    + e.getMessage());
+            close(s);
+        }
     }
 
     /** Lets a connection wait for the port, in place of the one waiting, which is refused. */
@@ -192,8 +199,7 @@ final class PioneerPort implements Closeable {
     /** Serves the waiting connection once the port is free, or refuses it when its wait is over. */
     private synchronized void checkWaiting() {
         Socket s = waiting;
-        PioneerSession there = current;
-        boolean free = there == null || there.isEnded() || there.isGivingWay();
+        boolean free = s != null && !closed && takeFrom(current, s);
         if (s != null && !closed && !free && System.nanoTime() - waitingUntilNanos < 0) {
             return;
         }
@@ -203,21 +209,10 @@ final class PioneerPort implements Closeable {
         if (s == null) {
             return;
         }
-        if (closed || !free) {
-            refuse(s);
-            return;
-        }
-        try {
-            if (there != null && !there.isEnded()) {
-                there.end("silent for " + PioneerSession.SILENT_MS + " ms, and the ARIA client from "
-                        + s.getRemoteSocketAddress() + " wants the port");
-            }
+        if (free) {
             serve(s);
-        } catch (IOException | RuntimeException e) {
-            LIMITED.warning("failures to serve robot " + served.name() + "'s ARIA clients", () -> "robot "
-                    + served.name() + ": could not serve the ARIA client at " + s.getRemoteSocketAddress() + ": "
-                    + e.getMessage());
-            close(s);
+        } else {
+            refuse(s); // the port closed, or the wait is over and the client there stays
         }
     }
 

@@ -273,11 +273,6 @@ final class PioneerSession {
         return heard;
     }
 
-    /** @return whether the handshake is done */
-    boolean isConnected() {
-        return phase == Phase.CONNECTED;
-    }
-
     /** @return whether the client has sent OPEN: status packets flow */
     boolean isOpen() {
         return opened && !ended;
