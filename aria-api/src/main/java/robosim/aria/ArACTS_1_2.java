@@ -167,7 +167,7 @@ public final class ArACTS_1_2 {
     private List<ColorBlob> blobs(int channel) {
         ArRobot r = robot;
         RobotState s = r == null ? null : r.currentState();
-        CameraView v = s == null ? null : s.camera();
+        CameraView v = s == null ? null : s.get(CameraView.PART);
         List<ColorBlob> out = new ArrayList<>();
         if (v != null) {
             for (ColorBlob b : v.blobs()) {

@@ -186,7 +186,7 @@ public class ArGripper {
         if (type == Type.QUERYTYPE && robot != null && robot.isConnected()) {
             RobotState s = robot.currentState();
             if (s != null && s.step() > 0) {
-                type = s.gripper() != null ? Type.GENIO : Type.NOGRIPPER;
+                type = s.get(GripperState.PART) != null ? Type.GENIO : Type.NOGRIPPER;
                 LOG.fine(() -> "gripper of robot " + robot.getName() + " queried: "
                         + (type == Type.GENIO ? "using General IO" : "the robot has no gripper"));
             }
@@ -251,7 +251,7 @@ public class ArGripper {
             return null;
         }
         RobotState s = robot.currentState();
-        return s == null ? null : s.gripper();
+        return s == null ? null : s.get(GripperState.PART);
     }
 
     /** @return the switch byte, or -1 when there is nothing to read */

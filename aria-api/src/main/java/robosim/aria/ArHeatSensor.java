@@ -54,7 +54,7 @@ public final class ArHeatSensor {
     private HeatReading reading() {
         ArRobot r = robot;
         RobotState s = r == null ? null : r.currentState();
-        HeatReading h = s == null ? null : s.heat();
+        HeatReading h = s == null ? null : s.get(HeatReading.PART);
         return h == null ? new HeatReading(0, 0, 0) : h;
     }
 

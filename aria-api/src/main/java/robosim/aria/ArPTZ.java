@@ -165,7 +165,7 @@ public abstract class ArPTZ {
 
     private CameraView view() {
         RobotState s = robot.currentState();
-        return s == null ? null : s.camera();
+        return s == null ? null : s.get(CameraView.PART);
     }
 
     /** @return the pan the Environment last reported, degrees; the pan asked for before any report */

@@ -7,10 +7,12 @@ import robosim.hw.HardwareOptions;
 import robosim.params.BumperParameters;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
+import robosim.protocol.BatteryReading;
 import robosim.protocol.Command;
 import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarReading;
 
 /**
  * The Pioneer Robot-Object, with ARIA's {@code ArRobot} semantics (see docs/ARIA-SEMANTICS.md): units
@@ -36,8 +38,6 @@ public class ArRobot extends AbstractRobot {
     public static final double STOPPED_VEL = 4;
     /** ARIA's {@code isStopped} rotational threshold, deg/s. */
     public static final double STOPPED_ROT_VEL = 1;
-    /** The battery voltage RoboSim's robots report, volts: ARIA's 12 V scale, a full battery. */
-    public static final double NOMINAL_BATTERY_VOLTAGE = 12.0;
 
     private final SonarRing sonar;
     private final ReentrantLock lock = new ReentrantLock();
@@ -53,6 +53,8 @@ public class ArRobot extends AbstractRobot {
     private volatile double maxTransVel;
     private final DriveLimits driveLimits = new DriveLimits();
     private final Odometer odometer = new Odometer();
+    /** The battery's readings and their averages. */
+    private final BatteryGauge battery = new BatteryGauge();
     private volatile double moveDoneDist = DEFAULT_MOVE_DONE;
     private volatile double headingDoneDiff = DEFAULT_HEADING_DONE;
     private volatile double stoppedVel = STOPPED_VEL;
@@ -124,8 +126,10 @@ public class ArRobot extends AbstractRobot {
             }
             counter++;
             RobotState s = response.state();
-            sonar.update(s.sonar(), s.sonarNew(), getPose(), counter, s.timeMs());
+            SonarReading ring = s.get(SonarReading.PART);
+            sonar.update(ring.ranges(), ring.fresh(), getPose(), counter, s.timeMs());
             odometer.update(s);
+            battery.update(s.get(BatteryReading.PART));
             sensorInterpTasks.runAll(getName());
             actions.cycle(s.timeMs());
             userTasks.runAll(getName());
@@ -1022,19 +1026,116 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * The battery voltage on ARIA's 12 V scale. RoboSim does not model a battery: this is always
-     * {@value #NOMINAL_BATTERY_VOLTAGE}, a full battery, so a program that watches for a low battery
-     * never sees one.
+     * The battery voltage on ARIA's 12 V scale, averaged over the latest
+     * {@link #getBatteryVoltageAverageOfNum()} readings (20), as ARIA averages its SIPs'. The
+     * simulated battery is a Pioneer 3's 12 V pack: 13 V full, lower while the motors draw and the
+     * longer they have driven (see docs/ARIA-API.md).
      *
      * @return volts
      */
     public double getBatteryVoltage() {
-        return NOMINAL_BATTERY_VOLTAGE;
+        lock.lock();
+        try {
+            return battery.voltage();
+        } finally {
+            lock.unlock();
+        }
     }
 
-    /** @return as {@link #getBatteryVoltage()}: RoboSim's battery does not change */
+    /** @return the latest battery reading, volts, not averaged */
     public double getBatteryVoltageNow() {
-        return NOMINAL_BATTERY_VOLTAGE;
+        lock.lock();
+        try {
+            return battery.voltageNow();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** @return the real battery voltage, averaged: the same as {@link #getBatteryVoltage()} for a 12 V pack */
+    public double getRealBatteryVoltage() {
+        lock.lock();
+        try {
+            return battery.realVoltage();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()} */
+    public double getRealBatteryVoltageNow() {
+        return getBatteryVoltageNow();
+    }
+
+    /** @return whether the robot reports its state of charge: once a reading above 0 has come */
+    public boolean haveStateOfCharge() {
+        lock.lock();
+        try {
+            return battery.haveStateOfCharge();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** @return as {@link #haveStateOfCharge()} */
+    public boolean hasStateOfCharge() {
+        return haveStateOfCharge();
+    }
+
+    /** @return the charge left, percent, 0 to 100; 0 when the robot does not report it */
+    public double getStateOfCharge() {
+        lock.lock();
+        try {
+            return battery.stateOfCharge();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** @return how many readings {@link #getBatteryVoltage()} averages */
+    public int getBatteryVoltageAverageOfNum() {
+        lock.lock();
+        try {
+            return battery.averageOf();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * @param numToAverage how many readings {@link #getBatteryVoltage()} averages from now on
+     * @throws IllegalArgumentException if less than 1
+     */
+    public void setBatteryVoltageAverageOfNum(int numToAverage) {
+        lock.lock();
+        try {
+            battery.setAverageOf(numToAverage);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** @return how many readings {@link #getRealBatteryVoltage()} averages */
+    public int getRealBatteryVoltageAverageOfNum() {
+        lock.lock();
+        try {
+            return battery.realAverageOf();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * @param numToAverage how many readings {@link #getRealBatteryVoltage()} averages from now on
+     * @throws IllegalArgumentException if less than 1
+     */
+    public void setRealBatteryVoltageAverageOfNum(int numToAverage) {
+        lock.lock();
+        try {
+            battery.setRealAverageOf(numToAverage);
+        } finally {
+            lock.unlock();
+        }
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.logging.Logger;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
 
@@ -227,7 +228,7 @@ public class ArSick extends ArRangeDevice {
         if (robot == null || s == null) {
             return;
         }
-        int[] scan = s.laser() == null ? new int[0] : s.laser().clone();
+        int[] scan = s.get(LaserReading.PART).ranges().clone();
         RobotParameters p = robot.getParameters();
         ArPose pose = robotPose();
         // the step follows from the scan's length, so a scan taken before a change of increment

@@ -28,7 +28,8 @@ final class SonarRing {
      * their counter and are not new ({@link ArRobot#isSonarNew}); a cycle without sonar readings (the
      * sonars are off) changes nothing.
      *
-     * @param fired the state's {@code sonarNew}: bit i for transducer i; null when all fired
+     * @param fired the {@link robosim.protocol.SonarReading#fresh() fresh} bits of the state's sonar reading:
+     *              bit i for transducer i; null when all fired
      */
     void update(int[] ranges, Long fired, ArPose pose, long counter, long timeMs) {
         if (ranges.length == readings.length) {

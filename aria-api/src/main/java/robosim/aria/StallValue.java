@@ -1,6 +1,7 @@
 package robosim.aria;
 
 import robosim.params.BumperParameters;
+import robosim.protocol.Bumpers;
 import robosim.protocol.RobotState;
 
 /**
@@ -8,8 +9,8 @@ import robosim.protocol.RobotState;
  * ARIA reads them in {@code ArRobot.h} and {@code ArBumpers.cpp}: bit 0 the left motor's stall,
  * bits 1 to 7 the rear bumpers, bit 8 the right motor's stall, bits 9 to 15 the front bumpers.
  *
- * <p>RoboSim's body reports contacts in {@value RobotState#BUMPER_SECTORS} sectors of 60°, sector 0
- * centred dead ahead, counting counter-clockwise ({@link RobotState#bumpers()}). A bumper's flag is
+ * <p>RoboSim's body reports contacts in {@value Bumpers#SECTORS} sectors of 60°, sector 0
+ * centred dead ahead, counting counter-clockwise ({@link Bumpers}). A bumper's flag is
  * set when the sector holding its centre has contact; bumper i of a ring of n is centred where
  * ARIA's {@code ArBumpers} places its readings with its default range of
  * {@value #ANGLE_RANGE}°: {@code 67.5 − (i + 0.5)·135/n} degrees for the front ring, 180° more for
@@ -38,10 +39,10 @@ final class StallValue {
     static int of(RobotState s, BumperParameters bumpers) {
         int v = s.stalled() ? LEFT_MOTOR | RIGHT_MOTOR : 0;
         if (bumpers.frontBumpers()) {
-            v |= ring(s.bumpers(), bumpers.numFrontBumpers(), 0) << FRONT_FIRST_BIT;
+            v |= ring(s.get(Bumpers.PART).sectors(), bumpers.numFrontBumpers(), 0) << FRONT_FIRST_BIT;
         }
         if (bumpers.rearBumpers()) {
-            v |= ring(s.bumpers(), bumpers.numRearBumpers(), 180) << REAR_FIRST_BIT;
+            v |= ring(s.get(Bumpers.PART).sectors(), bumpers.numRearBumpers(), 180) << REAR_FIRST_BIT;
         }
         return v;
     }
@@ -72,6 +73,6 @@ final class StallValue {
 
     /** @return the 60° sector holding a robot-relative direction */
     static int sector(double degrees) {
-        return Math.floorMod((int) Math.floor((ArMath.fixAngle(degrees) + 30) / 60), RobotState.BUMPER_SECTORS);
+        return Math.floorMod((int) Math.floor((ArMath.fixAngle(degrees) + 30) / 60), Bumpers.SECTORS);
     }
 }

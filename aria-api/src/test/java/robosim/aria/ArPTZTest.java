@@ -18,7 +18,7 @@ import robosim.protocol.RobotState;
 class ArPTZTest {
     private static void report(ArRobot robot, CameraView view) {
         robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, 100, 0, 0, 0, 0, 0, 0, 0,
-                false, new int[0], 0, new int[0], null, List.of(), List.of(), 0, null, null, view, null, null)));
+                false, 0).with(CameraView.PART, view)));
     }
 
     @Test

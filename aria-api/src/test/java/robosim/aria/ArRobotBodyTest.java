@@ -32,15 +32,6 @@ class ArRobotBodyTest {
     }
 
     @Test
-    void theBatteryIsAlwaysFullAndTheSameEitherWayItIsRead() {
-        ArRobot robot = Cycles.p3dxRobot();
-        assertEquals(ArRobot.NOMINAL_BATTERY_VOLTAGE, robot.getBatteryVoltageNow());
-        Cycles.cycle(robot, 100, 0, 0, 0);
-        assertEquals(robot.getBatteryVoltage(), robot.getBatteryVoltageNow());
-        assertEquals(12.0, robot.getBatteryVoltageNow());
-    }
-
-    @Test
     void theEncoderTransformIsTheIdentityUntilMoveToAndThenCarriesTheEncoderPoseOntoThePose() {
         ArRobot robot = Cycles.p3dxRobot();
         Cycles.cycle(robot, 100, 1000, 500, 30);

@@ -3,7 +3,6 @@ package robosim.aria;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
@@ -14,7 +13,7 @@ class ArRobotMotorsTest {
 
     private void cycle(Boolean motors) {
         robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, 100 * robot.getCounter(), 0, 0,
-                0, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(), List.of(), 0, null, null, null, null, motors)));
+                0, 0, 0, 0, 0, false, 0).withMotorsEnabled(motors)));
     }
 
     @Test

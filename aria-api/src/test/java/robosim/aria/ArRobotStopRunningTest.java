@@ -24,11 +24,4 @@ class ArRobotStopRunningTest {
         assertEquals(2, robot.getCounter());
         assertEquals(2, runs.get());
     }
-
-    @Test
-    void theBatteryReadsTheNominal12Volts() {
-        ArRobot robot = Cycles.p3dxRobot();
-        Cycles.cycle(robot, 100, 0, 0, 0);
-        assertEquals(12.0, robot.getBatteryVoltage());
-    }
 }

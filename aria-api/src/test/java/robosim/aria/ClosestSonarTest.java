@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
 import robosim.params.ParameterFileReader;
+import robosim.protocol.RobotStates;
 
 /** ARIA's angle-interval rule for getClosestSonarRange / getClosestSonarNumber, on a p3dx. */
 class ClosestSonarTest {
@@ -33,7 +34,7 @@ class ClosestSonarTest {
     }
 
     private void give(int[] ranges) {
-        robot.responded(new RobotSensorResponse(new RobotState(1, 100, 0, 0, 0, 0, 0, 0, 0, false, ranges, 0)));
+        robot.responded(new RobotSensorResponse(RobotStates.of(1, 100, 0, 0, 0, 0, 0, 0, 0, false, ranges, 0)));
     }
 
     @Test

@@ -42,8 +42,8 @@ final class ConnectedRobot extends ArRobot {
     /** One cycle at the origin, standing, reporting a gripper, heat and camera as given (each may be null). */
     void cycle(GripperState gripper, HeatReading heat, CameraView camera) {
         long step = getCounter() + 1;
-        responded(new RobotSensorResponse(new RobotState(step, 100 * step, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0,
-                new int[0], heat, List.of(), List.of(), 0, null, gripper, camera, null, null)));
+        responded(new RobotSensorResponse(new RobotState(step, 100 * step, 0, 0, 0, 0, 0, 0, 0, false, 0)
+                .with(HeatReading.PART, heat).with(GripperState.PART, gripper).with(CameraView.PART, camera)));
     }
 
     /** One cycle at a pose, with these wheel velocities. */

@@ -5,23 +5,21 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
-import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /**
  * A sonar ring fired in sequence: only the transducers a state marks as fired get new data; the
  * others keep their range and are not new (ARIA's isSonarNew: the reading's counter is the robot's).
  */
 class SonarSequenceCycleTest {
-    private static final int[] NONE = new int[0];
-
     private static void cycle(ArRobot robot, long timeMs, int range, Long fired) {
         int[] sonar = new int[16];
         Arrays.fill(sonar, range);
         robot.responded(new RobotSensorResponse(new RobotState(robot.getCounter() + 1, timeMs, 0, 0, 0,
-                0, 0, 0, 0, false, sonar, 0, NONE, null, List.of(), List.of(), 0, null, null, null, fired, null)));
+                0, 0, 0, 0, false, 0).with(SonarReading.PART, new SonarReading(sonar, fired))));
     }
 
     @Test

@@ -12,6 +12,7 @@ import robosim.protocol.RobotRequests;
 import robosim.protocol.RobotState;
 import robosim.protocol.TimeStep;
 import robosim.protocol.Snapshot;
+import robosim.protocol.SonarReading;
 
 /**
  * The wire formats compared on the messages of every step: a robot's time step (state and 16
@@ -29,7 +30,8 @@ public final class CodecBench {
 
     static List<Message> messages() {
         int[] sonar = {812, 1034, 2210, 5000, 5000, 3021, 1500, 700, 650, 900, 1200, 5000, 4000, 2222, 1111, 999};
-        RobotState state = new RobotState(1234, 123_400, 2041.53, 7012.25, -37.5, 300, 12.5, 293.4, 306.6, false, sonar, 0);
+        RobotState state = new RobotState(1234, 123_400, 2041.53, 7012.25, -37.5, 300, 12.5, 293.4, 306.6, false, 0)
+                .with(SonarReading.PART, new SonarReading(sonar));
         List<Snapshot.RobotView> views = new ArrayList<>();
         for (int k = 0; k < 100; k++) {
             views.add(new Snapshot.RobotView("b" + k, 1000.5 + k, 2000.25 + k, k - 50.5, false, true, sonar));

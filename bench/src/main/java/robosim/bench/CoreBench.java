@@ -8,7 +8,9 @@ import java.util.Map;
 import robosim.env.core.Simulation;
 import robosim.env.threads.PooledParallel;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /**
  * The simulation core alone, in this JVM, on the grid world: the same per-step robot logic as
@@ -45,7 +47,6 @@ public final class CoreBench {
         StepRateBench.Loaded loaded = StepRateBench.load(worldFile, parallel);
         Simulation sim = loaded.sim();
         List<String> names = sim.robotNames();
-        int[] none = new int[0];
         StepWindows windows = window > 0
                 ? new StepWindows(window, () -> names.stream().filter(n -> sim.state(n).stalled()).count()) : null;
         if (windows != null) {
@@ -56,8 +57,8 @@ public final class CoreBench {
             Map<String, List<Command>> commands = new HashMap<>();
             for (String name : names) {
                 RobotState state = sim.state(name);
-                int[] sonar = state.sonar();
-                int[] laser = state.laser() == null ? none : state.laser();
+                int[] sonar = state.get(SonarReading.PART).ranges();
+                int[] laser = state.get(LaserReading.PART).ranges();
                 boolean blocked = BenchRobots.blocked(i -> sonar[i], sonar.length, laser);
                 Command vel = new Command.SetVel(blocked ? 0 : 300);
                 Command rot = new Command.SetRotVel(blocked ? 30 : 0);

@@ -28,6 +28,8 @@ class ImportRulesTest {
     private static final String CORE = "src/main/java/robosim/env/core";
     /** The camera's rendering, which the core calls while it reads the sensors. */
     private static final String CAMERA = "src/main/java/robosim/env/camera";
+    /** The robots' sensors, which the core calls each step. */
+    private static final String SENSORS = "src/main/java/robosim/env/sensors";
     private static final String GEOMETRY = "../geometry-client/src/main";
 
     static Stream<Arguments> geometryRules() {
@@ -68,6 +70,14 @@ class ImportRulesTest {
     @MethodSource("rules")
     void theCoreDoesNotUse(String what, String regex) throws IOException {
         assertEquals(List.of(), offences(sources(CORE), Pattern.compile(regex)), "robosim.env.core must not use " + what);
+    }
+
+    @ParameterizedTest(name = "the sensors do not use {0}")
+    @MethodSource("rules")
+    void theSensorsDoNotUse(String what, String regex) throws IOException {
+        List<Path> sensors = sources(SENSORS);
+        assertTrue(sensors.stream().anyMatch(f -> f.endsWith("SensorKinds.java")), "scanned " + sensors);
+        assertEquals(List.of(), offences(sensors, Pattern.compile(regex)), "robosim.env.sensors must not use " + what);
     }
 
     @ParameterizedTest(name = "the camera does not use {0}")

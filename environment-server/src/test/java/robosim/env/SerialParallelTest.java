@@ -25,9 +25,12 @@ import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
 import robosim.params.ParameterFileReader;
 import robosim.protocol.Command;
+import robosim.protocol.HeatReading;
+import robosim.protocol.LaserReading;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 import robosim.protocol.TimeStep;
 
 /**
@@ -120,7 +123,7 @@ class SerialParallelTest {
             if (step == 1 && k % 5 == 2) {
                 cs.add(new Command.JoinGroup("g" + (k % 3)));
             }
-            int[] sonar = sim.state(name).sonar();
+            int[] sonar = sim.state(name).get(SonarReading.PART).ranges();
             int nearest = Integer.MAX_VALUE;
             for (int r : sonar) {
                 nearest = Math.min(nearest, r);
@@ -188,8 +191,8 @@ class SerialParallelTest {
                         assertEquals(serial.summary(name), sim.summary(name), name + " at step " + step);
                     }
                     if (step == STEPS) {
-                        lasers += s.laser().length > 0 ? 1 : 0;
-                        heat += s.heat() != null && s.heat().intensity() > 0 ? 1 : 0;
+                        lasers += s.get(LaserReading.PART).ranges().length > 0 ? 1 : 0;
+                        heat += s.get(HeatReading.PART) != null && s.get(HeatReading.PART).intensity() > 0 ? 1 : 0;
                     }
                 }
             }

@@ -46,7 +46,7 @@ public abstract class AbstractRobot {
     private final int port;
     private final String robotType;
     private final RobotParameters parameters;
-    private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+    private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, 0);
     private volatile int stepMs = 100;
     private volatile WelcomeFacts facts;
     private volatile HardwareSimulator hardware;

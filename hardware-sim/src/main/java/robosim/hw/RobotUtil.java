@@ -5,8 +5,12 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.logging.Logger;
+import robosim.protocol.Bumpers;
 import robosim.protocol.HeatReading;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
+import robosim.protocol.TruePose;
 
 /**
  * The original RoboSim's {@code RobotUtil}: controlled message output for a robot's program, and a
@@ -136,15 +140,15 @@ public final class RobotUtil {
         line(b, "  velocity   %.1f mm/s, %.1f deg/s (left %.1f, right %.1f mm/s)", s.vel(), s.rotVel(), s.leftVel(),
                 s.rightVel());
         line(b, "  contact    %s, %d collisions, bumper sectors %s", s.stalled() ? "stalled" : "not stalled",
-                s.collisions(), sectors(s.bumpers()));
+                s.collisions(), sectors(s.get(Bumpers.PART).sectors()));
         line(b, "  sonar      %s", sonar(s));
-        line(b, "  laser      %s", laser(s.laser()));
-        HeatReading h = s.heat();
+        line(b, "  laser      %s", laser(s.get(LaserReading.PART).ranges()));
+        HeatReading h = s.get(HeatReading.PART);
         line(b, "  heat       %s", h == null ? "off"
                 : String.format(Locale.ROOT, "%.2f at %.1f deg, %.0f mm", h.intensity(), h.bearing(), h.distance()));
-        double[] t = s.truePose();
+        TruePose t = s.get(TruePose.PART);
         line(b, "  true pose  %s", t == null ? "not reported"
-                : String.format(Locale.ROOT, "x %.1f mm, y %.1f mm, th %.1f deg", t[0], t[1], t[2]));
+                : String.format(Locale.ROOT, "x %.1f mm, y %.1f mm, th %.1f deg", t.x(), t.y(), t.th()));
         b.append(String.format(Locale.ROOT, "  messages   %d delivered, %d errors", s.messages().size(), s.errors().size()));
         for (String e : s.errors()) {
             b.append("\n    error: ").append(e);
@@ -158,7 +162,7 @@ public final class RobotUtil {
 
     private static String sectors(int bumpers) {
         StringBuilder b = new StringBuilder();
-        for (int i = 0; i < RobotState.BUMPER_SECTORS; i++) {
+        for (int i = 0; i < Bumpers.SECTORS; i++) {
             if ((bumpers >> i & 1) != 0) {
                 b.append(b.length() == 0 ? "" : ",").append(i);
             }
@@ -167,13 +171,14 @@ public final class RobotUtil {
     }
 
     private static String sonar(RobotState s) {
-        int[] r = s.sonar();
+        SonarReading sonar = s.get(SonarReading.PART);
+        int[] r = sonar.ranges();
         if (r == null || r.length == 0) {
             return "off";
         }
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < r.length; i++) {
-            b.append(i == 0 ? "" : " ").append(r[i]).append(s.isSonarNew(i) ? "" : "*");
+            b.append(i == 0 ? "" : " ").append(r[i]).append(sonar.isNew(i) ? "" : "*");
         }
         return b.toString();
     }

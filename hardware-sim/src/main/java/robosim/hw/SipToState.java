@@ -1,20 +1,24 @@
 package robosim.hw;
 
-import java.util.Arrays;
 import java.util.List;
+import robosim.hw.sip.SipContext;
+import robosim.hw.sip.SipParts;
 import robosim.params.ConversionFactors;
 import robosim.pioneer.LaserPacket;
 import robosim.pioneer.Sip;
 import robosim.pioneer.SimStat;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.StateParts;
+import robosim.protocol.TruePose;
 
 /**
  * Turns a Pioneer robot server's packets into the robot's states, as ARIA's
  * {@code ArRobot::processMotorPacket} reads them: the position from the first SIP times the
  * DistConvFactor, then moved by each SIP's difference from the one before (the 15-bit counters
  * wrap, so a jump of more than 0x1000 units is a wrap); the heading times the AngleConvFactor;
- * the wheel velocities times the VelConvFactor; the sonar ranges times the RangeConvFactor, kept
- * in a full ring since one SIP carries only some of them. Laser packets are gathered into whole
+ * the wheel velocities times the VelConvFactor; the parts of the state a SIP carries (the sonar
+ * ring, the bumpers, the battery) are read by their {@link SipParts}. Laser packets are gathered into whole
  * scans, SIMSTAT packets give the true pose; the SIP's flags bit 0 says whether the motors are enabled
  * (ARIA's {@code areMotorsEnabled}). The odometry is the server's own: (0, 0, 0) where a
  * simulator put it at the connection, wherever a real Pioneer's counters stood. No sockets: the
@@ -27,7 +31,7 @@ final class SipToState {
     private static final int[] NONE = new int[0];
 
     private final ConversionFactors factors;
-    private final int[] sonar;
+    private final SipParts parts;
     private boolean first = true;
     private int lastX;
     private int lastY;
@@ -38,7 +42,7 @@ final class SipToState {
     private int[] laser = NONE;
     private int[] building;
     private int built;
-    private double[] truePose;
+    private TruePose truePose;
 
     /**
      * @param factors     the robot's conversion factors
@@ -47,8 +51,7 @@ final class SipToState {
      */
     SipToState(ConversionFactors factors, int sonarCount, double sonarMaxRange) {
         this.factors = factors;
-        this.sonar = new int[sonarCount];
-        Arrays.fill(sonar, (int) Math.round(sonarMaxRange));
+        this.parts = new SipParts(new SipContext(factors, sonarCount, sonarMaxRange));
     }
 
     /**
@@ -80,15 +83,11 @@ final class SipToState {
             collisions++;
         }
         wasStalled = stalled;
-        for (Sip.SonarReading r : sip.sonar()) {
-            if (r.index() < sonar.length) {
-                sonar[r.index()] = (int) Math.round(r.range() * factors.rangeConvFactor());
-            }
-        }
-        int[] ranges = (sip.flags() & Sip.FLAG_SONARS) != 0 ? sonar.clone() : NONE;
-        return new RobotState(step, timeMs, x, y, th, (left + right) / 2, rotVel, left, right, stalled, ranges,
-                collisions, laser.clone(), null, List.of(), errors, bumpers(sip.stallBump()),
-                truePose == null ? null : truePose.clone(), null, null, null, (sip.flags() & Sip.FLAG_MOTORS) != 0);
+        StateParts read = parts.read(sip, StateParts.NONE)
+                .with(LaserReading.PART, laser.length == 0 ? null : new LaserReading(laser.clone()))
+                .with(TruePose.PART, truePose);
+        return new RobotState(step, timeMs, x, y, th, (left + right) / 2, rotVel, left, right, stalled, collisions,
+                List.of(), errors, (sip.flags() & Sip.FLAG_MOTORS) != 0, read);
     }
 
     /**
@@ -121,7 +120,7 @@ final class SipToState {
 
     /** @param s a SIMSTAT packet: its true pose goes into the states until {@link #trueOff()} */
     synchronized void simStat(SimStat s) {
-        truePose = new double[] {s.x(), s.y(), s.th()};
+        truePose = new TruePose(s.x(), s.y(), s.th());
     }
 
     /** The true pose is no longer asked for. */
@@ -139,23 +138,5 @@ final class SipToState {
     static double fix(double degrees) {
         double a = Math.IEEEremainder(degrees, 360);
         return a <= -180 ? a + 360 : a;
-    }
-
-    /**
-     * A Pioneer's bumper bits as RoboSim's six 60° sectors (sector 0 dead ahead, counting
-     * counter-clockwise): in each byte bits 1 to 5 are the bumper segments, from the left of the
-     * front (low byte) and from the right of the rear (high byte); the outer pairs are the sides.
-     */
-    static int bumpers(int stallBump) {
-        int front = stallBump >> 1 & 0x1f;
-        int rear = stallBump >> 9 & 0x1f;
-        int sectors = 0;
-        sectors |= (front & 0b00011) != 0 ? 1 << 1 : 0;
-        sectors |= (front & 0b00100) != 0 ? 1 : 0;
-        sectors |= (front & 0b11000) != 0 ? 1 << 5 : 0;
-        sectors |= (rear & 0b00011) != 0 ? 1 << 4 : 0;
-        sectors |= (rear & 0b00100) != 0 ? 1 << 3 : 0;
-        sectors |= (rear & 0b11000) != 0 ? 1 << 2 : 0;
-        return sectors;
     }
 }

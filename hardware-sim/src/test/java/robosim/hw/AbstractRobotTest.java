@@ -31,6 +31,7 @@ import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotStates;
+import robosim.protocol.SonarReading;
 import robosim.protocol.TimeStep;
 import robosim.protocol.Welcome;
 
@@ -154,7 +155,7 @@ class AbstractRobotTest {
                 + robot.state().x() + ", " + robot.state().y() + ", " + robot.state().th() + "), welcomed at ("
                 + robot.welcomedWith.x() + ", " + robot.welcomedWith.y() + "), connected " + robot.isConnected()));
         env.acceptHello();
-        env.send(new Welcome("r1", 250, new RobotState(0, 0, 1500, -750, 90, 0, 0, 0, 0, false, new int[0], 0)));
+        env.send(new Welcome("r1", 250, new RobotState(0, 0, 1500, -750, 90, 0, 0, 0, 0, false, 0)));
         assertEquals("step 0 of 250 ms at (1500.0, -750.0, 90.0), welcomed at (1500.0, -750.0), connected true",
                 nextSeen());
     }
@@ -208,11 +209,11 @@ class AbstractRobotTest {
             RobotState s = robot.state();
             seen.add("after step " + robot.getStep() + " at " + robot.getSimTimeMs() + " ms: (" + s.x() + ", "
                     + s.y() + ", " + s.th() + "), stalled " + s.stalled() + ", sonar "
-                    + java.util.Arrays.toString(s.sonar()));
+                    + java.util.Arrays.toString(s.get(SonarReading.PART).ranges()));
         });
         welcome("r1");
         assertEquals(List.of(), env.step(1));
-        env.step(2, new RobotState(1, 100, 50, -20, 45, 0, 0, 0, 0, true, new int[] {500, 600}, 1));
+        env.step(2, RobotStates.of(1, 100, 50, -20, 45, 0, 0, 0, 0, true, new int[] {500, 600}, 1));
         assertEquals("after step 1 at 100 ms: (50.0, -20.0, 45.0), stalled true, sonar [500, 600]", nextSeen());
     }
 

@@ -59,7 +59,7 @@ final class FakeEnvironment implements AutoCloseable {
 
     /** The state after {@code step}, at the origin, at time step · 100 ms. */
     static RobotState state(long step) {
-        return new RobotState(step, step * STEP_MS, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+        return new RobotState(step, step * STEP_MS, 0, 0, 0, 0, 0, 0, 0, false, 0);
     }
 
     /** @return the port robots connect to */

@@ -7,6 +7,7 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotState;
+import robosim.protocol.RobotStates;
 import robosim.protocol.Welcome;
 
 /**
@@ -39,7 +40,7 @@ final class FakeLink implements EnvironmentLink {
     }
 
     static RobotState state(long step) {
-        return new RobotState(step, step * 100, step * 10, 0, 0, 0, 0, 0, 0, false, new int[] {(int) (1000 + step)}, 0);
+        return RobotStates.of(step, step * 100, step * 10, 0, 0, 0, 0, 0, 0, false, new int[] {(int) (1000 + step)}, 0);
     }
 
     @Override

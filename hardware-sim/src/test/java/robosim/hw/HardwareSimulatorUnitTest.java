@@ -22,6 +22,7 @@ import org.junit.jupiter.api.Timeout;
 import robosim.protocol.Await;
 import robosim.protocol.Command;
 import robosim.protocol.RobotHello;
+import robosim.protocol.SonarReading;
 
 /**
  * The HardwareSimulator alone, over a {@link FakeLink}: its request queue, the hand-over of each
@@ -121,7 +122,7 @@ class HardwareSimulatorUnitTest {
         RobotSensorResponse r = responses.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertEquals(1, r.openStep());
         assertEquals(0, r.step());
-        assertArrayEquals(new int[] {1000}, r.state().sonar());
+        assertArrayEquals(new int[] {1000}, r.state().get(SonarReading.PART).ranges());
         link.next();
         link.step(2);
         assertEquals(1, responses.poll(WAIT_MS, TimeUnit.MILLISECONDS).step());

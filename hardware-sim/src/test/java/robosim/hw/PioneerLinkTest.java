@@ -15,6 +15,7 @@ import robosim.pioneer.Commands;
 import robosim.pioneer.PioneerPacket;
 import robosim.protocol.Command;
 import robosim.protocol.RobotHello;
+import robosim.protocol.SonarReading;
 import robosim.protocol.Welcome;
 
 /** A PioneerLink against a Pioneer server played by the test: the connect sequence, the steps, bye and loss. */
@@ -70,7 +71,7 @@ class PioneerLinkTest {
                 assertEquals(List.of(Commands.ENABLE), ids(server, 1), "enableMotors() sends ENABLE, as ARIA's does");
                 assertEquals(1, first.step());
                 assertEquals(10, first.state().x(), 1e-9, "p3dx-sh has no parameter file: a DistConvFactor of 1");
-                assertEquals(700, first.state().sonar()[3]);
+                assertEquals(700, first.state().get(SonarReading.PART).ranges()[3]);
             } finally {
                 link.close();
             }

@@ -8,8 +8,13 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.Bumpers;
 import robosim.protocol.HeatReading;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
+import robosim.protocol.StateParts;
+import robosim.protocol.TruePose;
 
 /** RobotUtil: message levels, the robot's name and step on each line, and the state's snapshot. */
 class RobotUtilTest {
@@ -29,7 +34,7 @@ class RobotUtilTest {
 
     @Test
     void eachLineCarriesTheNameTheStepAndTheTime() {
-        arrive(new RobotState(42, 4200, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0));
+        arrive(new RobotState(42, 4200, 0, 0, 0, 0, 0, 0, 0, false, 0));
         assertTrue(out.normal("wall at %d mm", 750));
         assertEquals(List.of("[r1 step 42 4.200 s] NORMAL: wall at 750 mm"), lines);
     }
@@ -59,10 +64,13 @@ class RobotUtilTest {
 
     @Test
     void theSnapshotPrintsEveryPartOfTheState() {
-        RobotState s = new RobotState(7, 700, 1234.5, -678.25, 179.5, 350, -12.5, 337.5, 362.5, true,
-                new int[] {5000, 742, 650}, 3, new int[] {8000, 1234, 20, 900}, new HeatReading(12.5, -30.25, 2200),
-                List.of(), List.of("message 3 is addressed to 'nobody'"), 0b100001, new double[] {1240, -670, 180},
-                null, null, 0b101L, null);
+        RobotState s = new RobotState(7, 700, 1234.5, -678.25, 179.5, 350, -12.5, 337.5, 362.5, true, 3,
+                List.of(), List.of("message 3 is addressed to 'nobody'"), null, StateParts.NONE)
+                .with(SonarReading.PART, new SonarReading(new int[] {5000, 742, 650}, 0b101L))
+                .with(LaserReading.PART, new LaserReading(new int[] {8000, 1234, 20, 900}))
+                .with(HeatReading.PART, new HeatReading(12.5, -30.25, 2200))
+                .with(Bumpers.PART, new Bumpers(0b100001))
+                .with(TruePose.PART, new TruePose(1240, -670, 180));
         assertEquals("""
                 robot r1 at step 7, 0.700 s
                   pose       x 1234.5 mm, y -678.3 mm, th 179.5 deg
@@ -78,7 +86,7 @@ class RobotUtilTest {
 
     @Test
     void theSnapshotOfAQuietStateSaysWhatIsOff() {
-        arrive(new RobotState(1, 100, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0));
+        arrive(new RobotState(1, 100, 0, 0, 0, 0, 0, 0, 0, false, 0));
         String snap = RobotUtil.snapshot(robot);
         assertTrue(snap.contains("  sonar      off\n"), snap);
         assertTrue(snap.contains("  laser      off\n"), snap);

@@ -11,7 +11,10 @@ import robosim.params.ConversionFactors;
 import robosim.pioneer.LaserPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.Sip;
+import robosim.protocol.Bumpers;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /** A Pioneer server's status and laser packets, as literal bytes, become the robot's states in mm, mm/s and degrees. */
 class SipToStateTest {
@@ -57,12 +60,12 @@ class SipToStateTest {
         assertEquals(57.3, st.rotVel(), 1e-9, "ROTVEL × 10 = 573");
         assertTrue(st.stalled(), "bit 0: the left wheel stalled");
         assertEquals(1, st.collisions());
-        assertEquals(1, st.bumpers(), "front bumper bit 3: the sector ahead");
+        assertEquals(1, st.get(Bumpers.PART).sectors(), "front bumper bit 3: the sector ahead");
         assertEquals(Boolean.TRUE, st.motorsEnabled(), "flags 0x1F: bit 0, the motors, is set");
-        assertEquals(16, st.sonar().length);
-        assertEquals(500, st.sonar()[0]);
-        assertEquals(1000, st.sonar()[3]);
-        assertEquals(5000, st.sonar()[1], "a sonar not yet read reads the maximum range");
+        assertEquals(16, st.get(SonarReading.PART).ranges().length);
+        assertEquals(500, st.get(SonarReading.PART).ranges()[0]);
+        assertEquals(1000, st.get(SonarReading.PART).ranges()[3]);
+        assertEquals(5000, st.get(SonarReading.PART).ranges()[1], "a sonar not yet read reads the maximum range");
     }
 
     @Test
@@ -91,9 +94,10 @@ class SipToStateTest {
         SipToState s = new SipToState(P3DX, 4, 5000);
         state(s, sip(0, 0, 0, 0, 0, 0, 0x1E, new int[][] {{0, 100}, {1, 200}}, 0));
         RobotState on = state(s, sip(0, 0, 0, 0, 0, 0, 0x1E, new int[][] {{2, 300}, {7, 900}}, 0));
-        assertArrayEquals(new int[] {100, 200, 300, 5000}, on.sonar(), "transducer 7 is not on a 4-ring");
+        assertArrayEquals(new int[] {100, 200, 300, 5000}, on.get(SonarReading.PART).ranges(),
+                "transducer 7 is not on a 4-ring");
         RobotState off = state(s, sip(0, 0, 0, 0, 0, 0, 0x01, new int[0][], 0));
-        assertEquals(0, off.sonar().length);
+        assertEquals(0, off.get(SonarReading.PART).ranges().length);
     }
 
     @Test
@@ -114,16 +118,13 @@ class SipToStateTest {
         // 0x61: total 4, first 0, 2 readings (range, reflectance, two spare bytes each), laser number, flags
         s.laser(LaserPacket.decode(new PioneerPacket(0x61, new byte[] {4, 0, 0, 0, 2,
                 (byte) 0xE8, 0x03, 0, 0, 0, (byte) 0xD0, 0x07, 0, 0, 0, 0, 0})));
-        assertEquals(0, state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).laser().length, "half a scan");
+        assertEquals(0, state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).get(LaserReading.PART).ranges().length,
+                "half a scan");
         s.laser(LaserPacket.decode(new PioneerPacket(0x61, new byte[] {4, 0, 2, 0, 2,
                 (byte) 0xB8, 0x0B, 0, 0, 0, (byte) 0xA0, 0x0F, 0, 0, 0, 0, 0})));
-        assertArrayEquals(new int[] {1000, 2000, 3000, 4000}, state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).laser());
+        assertArrayEquals(new int[] {1000, 2000, 3000, 4000},
+                state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).get(LaserReading.PART).ranges());
         s.laserOff();
-        assertEquals(0, state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).laser().length);
-    }
-
-    @Test
-    void rearBumperBitsAreTheRearSectors() {
-        assertEquals(1 << 4 | 1 << 2, SipToState.bumpers(0b0000_0010 << 8 | 0b0010_0000 << 8));
+        assertEquals(0, state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0)).get(LaserReading.PART).ranges().length);
     }
 }

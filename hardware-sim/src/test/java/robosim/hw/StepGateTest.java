@@ -314,7 +314,7 @@ class StepGateTest {
     }
 
     private static RobotState state(long step) {
-        return new RobotState(step, step * 100, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+        return new RobotState(step, step * 100, 0, 0, 0, 0, 0, 0, 0, false, 0);
     }
 
     @FunctionalInterface

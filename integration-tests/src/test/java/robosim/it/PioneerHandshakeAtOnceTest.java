@@ -16,6 +16,7 @@ import robosim.pioneer.Commands;
 import robosim.pioneer.PioneerClient;
 import robosim.pioneer.Sip;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /**
  * An ARIA program's connection to a Pioneer port does not wait on the run: the handshake is answered
@@ -49,7 +50,7 @@ class PioneerHandshakeAtOnceTest {
                 assertEquals(0, s.leftVel(), "standing: the commands wait for the run");
                 assertEquals(0, s.rightVel());
                 for (Sip.SonarReading r : s.sonar()) {
-                    assertEquals(start.sonar()[r.index()], r.range(), 1, "sonar " + r.index() + " at the start pose");
+                    assertEquals(start.get(SonarReading.PART).ranges()[r.index()], r.range(), 1, "sonar " + r.index() + " at the start pose");
                 }
             }
             try (PioneerClient other = run.client("r2")) {

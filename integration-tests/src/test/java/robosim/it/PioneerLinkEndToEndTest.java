@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -19,15 +18,14 @@ import robosim.cli.Background;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.xml.WorldReader;
-import robosim.hw.EnvironmentLinks;
 import robosim.hw.HardwareOptions;
 import robosim.hw.RobotRuntime;
+import robosim.hw.RuntimeChoices;
 import robosim.params.ConversionFactors;
 import robosim.params.RobotParameterFiles;
 import robosim.pioneer.server.PioneerPortOptions;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.pioneer.server.ServedRobot;
-import robosim.protocol.Await;
 
 /**
  * The same ArRobot program, unchanged, drives a robot once through the Environment's own protocol
@@ -42,8 +40,12 @@ class PioneerLinkEndToEndTest {
     @TempDir
     Path dir;
 
-    /** Where the program ended, from where it started, and what its front sonar read there. */
-    record Drive(double dx, double dy, double th, int frontSonar, int sonarBuffer) { }
+    /**
+     * Where the program ended, from where it started, and what its front sonar read there; its
+     * battery standing at the start and at speed.
+     */
+    record Drive(double dx, double dy, double th, int frontSonar, int sonarBuffer, double batteryStanding,
+                 double batteryDriving) { }
 
     @Test
     void theSameProgramEndsAtTheSamePoseThroughTheEnvironmentAndThroughAPioneerServer() throws Exception {
@@ -52,15 +54,12 @@ class PioneerLinkEndToEndTest {
         RobotSummary directTruth;
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 1, ServerOptions.loopback())) {
             int port = env.robotPort();
-            direct = Background.supply("robot r1", () -> drive(port)).get(60, TimeUnit.SECONDS);
+            RobotRuntime runtime = RobotRuntime.create("direct", RuntimeChoices.defaults());
+            direct = Background.supply("robot r1", () -> drive(port, runtime)).get(60, TimeUnit.SECONDS);
             env.await(30);
             directTruth = env.sim.summary("r1");
         }
 
-        // the property is read as the default runtime is made: the first robot's must have closed, so
-        // that the next robot makes a fresh one (a robot that came while it had robots would join it)
-        Await.until(Duration.ofSeconds(30), "the first run's robot has left the default runtime",
-                () -> RobotRuntime.currentDefault().map(r -> r.robots() == 0).orElse(true));
         Drive pioneer;
         RobotSummary pioneerTruth;
         try (LocalEnvironment env = new LocalEnvironment(WorldReader.read(world), 1, ServerOptions.loopback());
@@ -69,12 +68,10 @@ class PioneerLinkEndToEndTest {
                      new PioneerPortOptions("127.0.0.1", 0, false, 2000, true, HardwareOptions.defaults()),
                      "127.0.0.1", env.robotPort(), null, code -> { })) {
             int port = ports.portOf("r1");
-            System.setProperty(EnvironmentLinks.PIONEER_PROPERTY, "127.0.0.1:" + port);
-            try {
-                pioneer = Background.supply("robot r1", () -> drive(port)).get(60, TimeUnit.SECONDS);
-            } finally {
-                System.clearProperty(EnvironmentLinks.PIONEER_PROPERTY);
-            }
+            // the program's robot reaches the Environment through the Pioneer port, as robosim.pioneer says
+            RobotRuntime runtime = RobotRuntime.create("pioneer",
+                    RuntimeChoices.defaults().withPioneer("127.0.0.1:" + port));
+            pioneer = Background.supply("robot r1", () -> drive(port, runtime)).get(60, TimeUnit.SECONDS);
             pioneerTruth = env.sim.summary("r1");
         }
 
@@ -91,6 +88,10 @@ class PioneerLinkEndToEndTest {
         assertEquals(expected, direct.frontSonar(), 60, "the Environment's sonar: " + direct);
         assertEquals(direct.frontSonar(), pioneer.frontSonar(), 60, "the sonar through the Pioneer server: " + pioneer);
         assertTrue(pioneer.sonarBuffer() > 0, "the sonar device took readings through the Pioneer server");
+        assertEquals(12.9, direct.batteryStanding(), 0.001, "a full battery, the electronics' 1 A sagging it");
+        assertEquals(12.9, pioneer.batteryStanding(), 1e-9, "the same in the SIP's decivolts");
+        assertTrue(direct.batteryDriving() < 12.85, "the motors' current sags it: " + direct);
+        assertEquals(direct.batteryDriving(), pioneer.batteryDriving(), 0.051, "through the SIP: " + pioneer);
     }
 
     private Path world() throws Exception {
@@ -104,8 +105,9 @@ class PioneerLinkEndToEndTest {
     }
 
     /** The program: 1 m ahead, turn to heading 90, 0.5 m on, then read the front sonar. Unchanged for both links. */
-    private static Drive drive(int port) {
+    private static Drive drive(int port, RobotRuntime runtime) {
         ArRobot robot = new ArRobot("r1", "127.0.0.1", port, "p3dx");
+        robot.setRuntime(runtime);
         ArSonarDevice sonar = new ArSonarDevice();
         robot.addRangeDevice(sonar);
         if (!robot.blockingConnect()) {
@@ -114,7 +116,10 @@ class PioneerLinkEndToEndTest {
         robot.enableMotors();
         ArUtil.sleep(300);
         ArPose start = robot.getPose();
+        double standing = robot.getBatteryVoltageNow();
         robot.move(1000);
+        waitFor(robot, () -> robot.getVel() > 400);
+        double driving = robot.getBatteryVoltageNow();
         waitFor(robot, () -> robot.isMoveDone());
         robot.setHeading(90);
         waitFor(robot, () -> robot.isHeadingDone());
@@ -124,7 +129,8 @@ class PioneerLinkEndToEndTest {
         ArUtil.sleep(500);
         ArPose end = robot.getPose();
         Drive d = new Drive(end.getX() - start.getX(), end.getY() - start.getY(), end.getTh(),
-                Math.min(robot.getSonarRange(3), robot.getSonarRange(4)), sonar.getCurrentBuffer().size());
+                Math.min(robot.getSonarRange(3), robot.getSonarRange(4)), sonar.getCurrentBuffer().size(), standing,
+                driving);
         robot.disconnect();
         return d;
     }

@@ -107,7 +107,7 @@ class RobotProgramEndsTest {
                 FrameReader in = new FrameReader(peer.getInputStream(), codec, FrameReader.DEFAULT_MAX_FRAME);
                 FrameWriter out = new FrameWriter(peer.getOutputStream(), codec);
                 assertEquals("r1", assertInstanceOf(RobotHello.class, in.read()).name());
-                RobotState start = new RobotState(0, 0, 1500, 1500, 45, 0, 0, 0, 0, false, new int[0], 0);
+                RobotState start = new RobotState(0, 0, 1500, 1500, 45, 0, 0, 0, 0, false, 0);
                 out.write(new Welcome("r1", 100, start));
                 out.write(new TimeStep(1, 0, start));
                 long silentSince = System.nanoTime(); // the last the Environment sends

@@ -14,6 +14,9 @@ import java.util.List;
  *              empty when colours are not tracked
  */
 public record CameraView(PtzModel model, double pan, double tilt, int zoom, List<ColorBlob> blobs) {
+    /** Its key: the camera's part of a robot's state; absent (the camera off) reads as null. */
+    public static final StatePart<CameraView> PART = StatePart.of("camera", CameraView.class);
+
     /** The image's width, pixels: ACTS's 160 × 120 frame. */
     public static final int IMAGE_WIDTH = 160;
     /** The image's height, pixels. */

@@ -25,6 +25,9 @@ package robosim.protocol;
  * @param holding   the index of the world object the paddles hold, or -1
  */
 public record GripperState(int switches, int graspTime, double paddles, double lift, int holding) {
+    /** Its key: the gripper's part of a robot's state; absent (no gripper) reads as null. */
+    public static final StatePart<GripperState> PART = StatePart.of("gripper", GripperState.class);
+
     /** Clear when the paddles are fully open. */
     public static final int PADDLES_OPEN_CLEAR = 1;
     /** Clear when the lift is at the top or the bottom of its travel. */

@@ -9,4 +9,7 @@ package robosim.protocol;
  * @param distance  the distance from the sensor to that source, mm (0 when none is in view)
  */
 public record HeatReading(double intensity, double bearing, double distance) {
+    /** Its key: the heat sensor's part of a robot's state; absent (the sensor off) reads as null. */
+    public static final StatePart<HeatReading> PART = StatePart.of("heat", HeatReading.class);
+
 }

@@ -1,73 +1,53 @@
 package robosim.protocol;
 
-import com.fasterxml.jackson.annotation.JsonInclude;
+import com.fasterxml.jackson.databind.annotation.JsonDeserialize;
+import com.fasterxml.jackson.databind.annotation.JsonSerialize;
 import java.util.List;
 
 /**
  * What a robot learns about itself at the start of a step: the responses to its requests of the
- * previous step.
+ * previous step. Its motion and what became of its requests are fields; what its sensors and
+ * accessories read are {@linkplain StateParts parts}, one per sensor, read with {@link #get}.
  *
- * @param step       the step these values are the result of (0 before the first step)
- * @param timeMs     simulated time at the end of that step
- * @param x          odometry x in mm
- * @param y          odometry y in mm
- * @param th         odometry heading in degrees, in (-180, 180]
- * @param vel        translational velocity in mm/s
- * @param rotVel     rotational velocity in deg/s
- * @param leftVel    left wheel velocity in mm/s
- * @param rightVel   right wheel velocity in mm/s
- * @param stalled    whether the last motion was stopped by a collision
- * @param sonar      range in mm of each sonar transducer, by index; empty when the sonars are off
- * @param collisions collisions counted since the start
- * @param laser      the laser's latest scan in mm, from its right (−90°) to its left (+90°); empty
- *                   when the robot has no laser switched on
- * @param heat       the heat sensor's reading, or null when the robot has no heat sensor
- * @param messages   the messages delivered to the robot in that step, in delivery order
- * @param errors     what was wrong with requests of the robot (an unknown recipient, a message over
- *                   the size limit, ...), in the order they were made
- * @param bumpers    the bumper ring's contacts: bit i set when the body touches something in sector i
- *                   of {@value #BUMPER_SECTORS}, sector 0 centred dead ahead, counting counter-clockwise
- * @param truePose   the robot's true pose (x mm, y mm, th degrees) when it asked for it with
- *                   {@link Command.ReportTruePose}; null otherwise
- * @param gripper    the state of the robot's gripper, or null when its parameters give it none
- * @param camera     the pan-tilt-zoom camera's position and ACTS blobs once the robot switched its camera
- *                   on ({@link Command.ConfigurePtz} or {@link Command.TrackColors}); null otherwise
- * @param sonarNew   which sonar readings are new in this state when the ring fires in sequence
- *                   ({@link Command.SetSonarCycle}): bit i set when transducer i fired; null when
- *                   every transducer fired (the ring fires every step, or the sonars are off)
- * @param motorsEnabled whether the robot's motors are enabled (see {@link Command.SetMotors}); null when
- *                   whoever made the state does not know
+ * <p>On the wire a state is one object: the fields by name, then each part it holds under the
+ * part's name ({@code "sonar"}, {@code "laser"}, {@code "battery"}, ...); see {@link RobotStateJson}.
+ *
+ * @param step          the step these values are the result of (0 before the first step)
+ * @param timeMs        simulated time at the end of that step
+ * @param x             odometry x in mm
+ * @param y             odometry y in mm
+ * @param th            odometry heading in degrees, in (-180, 180]
+ * @param vel           translational velocity in mm/s
+ * @param rotVel        rotational velocity in deg/s
+ * @param leftVel       left wheel velocity in mm/s
+ * @param rightVel      right wheel velocity in mm/s
+ * @param stalled       whether the last motion was stopped by a collision
+ * @param collisions    collisions counted since the start
+ * @param messages      the messages delivered to the robot in that step, in delivery order
+ * @param errors        what was wrong with requests of the robot (an unknown recipient, a message over
+ *                      the size limit, ...), in the order they were made
+ * @param motorsEnabled whether the robot's motors are enabled (see {@link Command.SetMotors}); null
+ *                      when whoever made the state does not know
+ * @param parts         what its sensors and accessories read: the sonar ring, the laser, the bumpers,
+ *                      the battery, ... (see {@link StateParts#ALL})
  */
+@JsonSerialize(using = RobotStateJson.Writer.class)
+@JsonDeserialize(using = RobotStateJson.Reader.class)
 public record RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                         double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions,
-                         int[] laser, HeatReading heat, List<MessageDelivery> messages, List<String> errors,
-                         int bumpers, @JsonInclude(JsonInclude.Include.NON_NULL) double[] truePose,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) GripperState gripper,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) CameraView camera,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) Long sonarNew,
-                         @JsonInclude(JsonInclude.Include.NON_NULL) Boolean motorsEnabled) {
-
-    /**
-     * @param i a transducer's index
-     * @return whether its reading is new in this state ({@link #sonarNew()} null means all are)
-     */
-    public boolean isSonarNew(int i) {
-        return sonarNew == null || i >= 0 && i < Long.SIZE && (sonarNew >> i & 1) != 0;
-    }
-
-    /** The bumper ring's sectors, 60° each. */
-    public static final int BUMPER_SECTORS = 6;
+                         double leftVel, double rightVel, boolean stalled, int collisions,
+                         List<MessageDelivery> messages, List<String> errors, Boolean motorsEnabled,
+                         StateParts parts) {
 
     /** Copies the lists so the record stays immutable. */
     public RobotState {
         messages = messages == null ? List.of() : List.copyOf(messages);
         errors = errors == null ? List.of() : List.copyOf(errors);
+        parts = parts == null ? StateParts.NONE : parts;
     }
 
     /**
-     * A state with only the motion and the sonar: no laser or heat readings, messages, errors, bumper
-     * contacts, true pose, gripper or camera, every sonar reading new, and not saying whether the motors
-     * are enabled.
+     * A state with only the motion: no messages or errors, no parts, not saying whether the motors
+     * are enabled. Add parts with {@link #with}.
      *
      * @param step       the step
      * @param timeMs     simulated time, ms
@@ -79,12 +59,52 @@ public record RobotState(long step, long timeMs, double x, double y, double th, 
      * @param leftVel    mm/s
      * @param rightVel   mm/s
      * @param stalled    whether stalled
-     * @param sonar      sonar ranges, mm; empty when the sonars are off
      * @param collisions collisions so far
      */
     public RobotState(long step, long timeMs, double x, double y, double th, double vel, double rotVel,
-                      double leftVel, double rightVel, boolean stalled, int[] sonar, int collisions) {
-        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, sonar, collisions, new int[0], null,
-                List.of(), List.of(), 0, null, null, null, null, null);
+                      double leftVel, double rightVel, boolean stalled, int collisions) {
+        this(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, collisions, List.of(), List.of(), null,
+                StateParts.NONE);
+    }
+
+    /**
+     * @param part a part's key, such as {@link SonarReading#PART}
+     * @param <T>  its value's type
+     * @return the part's value, or the key's {@linkplain StatePart#absent() absent} value when the
+     *         state holds none (an empty sonar reading, no heat reading)
+     */
+    public <T> T get(StatePart<T> part) {
+        T v = parts.get(part);
+        return v == null ? part.absent() : v;
+    }
+
+    /**
+     * @param part  a part's key
+     * @param value its value; null removes it
+     * @param <T>   its value's type
+     * @return this state with that part
+     */
+    public <T> RobotState with(StatePart<T> part, T value) {
+        return new RobotState(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, collisions, messages,
+                errors, motorsEnabled, parts.with(part, value));
+    }
+
+    /**
+     * @param delivered the messages delivered
+     * @param problems  the errors of requests
+     * @return this state with those messages and errors
+     */
+    public RobotState withMessages(List<MessageDelivery> delivered, List<String> problems) {
+        return new RobotState(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, collisions, delivered,
+                problems, motorsEnabled, parts);
+    }
+
+    /**
+     * @param enabled whether the motors are enabled; null when not known
+     * @return this state saying so
+     */
+    public RobotState withMotorsEnabled(Boolean enabled) {
+        return new RobotState(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, collisions, messages,
+                errors, enabled, parts);
     }
 }

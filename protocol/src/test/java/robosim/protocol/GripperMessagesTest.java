@@ -21,8 +21,7 @@ class GripperMessagesTest {
     }
 
     private static RobotState state(GripperState g) {
-        return new RobotState(3, 300, 1, 2, 3, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(),
-                List.of(), 0, null, g, null, null, null);
+        return new RobotState(3, 300, 1, 2, 3, 0, 0, 0, 0, false, 0).with(GripperState.PART, g);
     }
 
     @ParameterizedTest
@@ -31,7 +30,7 @@ class GripperMessagesTest {
         GripperState g = new GripperState(GripperState.PADDLES_OPEN_CLEAR | GripperState.INNER_BEAM, 10, 0.6465,
                 1, 0);
         TimeStep decoded = (TimeStep) roundTrip(format, new TimeStep(3, 300, state(g)));
-        assertEquals(g, decoded.state().gripper());
+        assertEquals(g, decoded.state().get(GripperState.PART));
     }
 
     @Test

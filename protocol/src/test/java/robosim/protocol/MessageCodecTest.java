@@ -58,7 +58,7 @@ class MessageCodecTest {
 
         assertDeepEquals(step, decoded);
         assertArrayEquals(new int[] {5000, 4890, 2311, 742, 739, 2200, 5000, 4999, 3010, 2875, 118, 101, 4400,
-                4301, 650, 640}, decoded.state().sonar());
+                4301, 650, 640}, decoded.state().get(SonarReading.PART).ranges());
     }
 
     @ParameterizedTest
@@ -259,10 +259,9 @@ class MessageCodecTest {
     @Test
     void deepComparisonSeesAChangedSonarReading() {
         RobotState s = Messages.state();
-        int[] sonar = s.sonar().clone();
+        int[] sonar = s.get(SonarReading.PART).ranges().clone();
         sonar[15] = 641;
-        RobotState other = new RobotState(s.step(), s.timeMs(), s.x(), s.y(), s.th(), s.vel(), s.rotVel(),
-                s.leftVel(), s.rightVel(), s.stalled(), sonar, s.collisions());
+        RobotState other = s.with(SonarReading.PART, new SonarReading(sonar));
 
         assertThrows(AssertionFailedError.class,
                 () -> assertDeepEquals(new TimeStep(1, 2, s), new TimeStep(1, 2, other)));

@@ -138,7 +138,7 @@ final class Messages {
 
     /** Two robots' states, the second without sonar. */
     static TimeSteps timeSteps() {
-        RobotState quiet = new RobotState(41, 4100, 10, 20, -90, 0, 0, 0, 0, false, new int[0], 0);
+        RobotState quiet = new RobotState(41, 4100, 10, 20, -90, 0, 0, 0, 0, false, 0);
         return new TimeSteps(42, 4200, List.of(new TimeSteps.ForRobot("robot1", state()),
                 new TimeSteps.ForRobot("robot2", quiet)));
     }

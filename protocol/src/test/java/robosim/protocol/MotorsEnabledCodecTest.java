@@ -12,8 +12,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 /** Whether the motors are enabled travels in the state; a state that does not know leaves it out. */
 class MotorsEnabledCodecTest {
     private static RobotState state(Boolean motors) {
-        return new RobotState(3, 300, 1, 2, 3, 0, 0, 0, 0, false, new int[0], 0, new int[0], null, List.of(),
-                List.of(), 0, null, null, null, null, motors);
+        return new RobotState(3, 300, 1, 2, 3, 0, 0, 0, 0, false, 0).withMotorsEnabled(motors);
     }
 
     @ParameterizedTest

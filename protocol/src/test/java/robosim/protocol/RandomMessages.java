@@ -97,9 +97,15 @@ public final class RandomMessages {
 
     RobotState state() {
         return new RobotState(anyLong(), anyLong(), anyDouble(), anyDouble(), anyDouble(), anyDouble(), anyDouble(),
-                anyDouble(), anyDouble(), random.nextBoolean(), ints(32), (int) anyLong(), ints(400),
-                nullOr(() -> new HeatReading(anyDouble(), anyDouble(), anyDouble())), list(this::delivery, 3),
-                list(() -> text(80), 2), (int) anyLong(), null, null, null, nullOr(random::nextLong), nullOr(random::nextBoolean));
+                anyDouble(), anyDouble(), random.nextBoolean(), (int) anyLong(), list(this::delivery, 3),
+                list(() -> text(80), 2), nullOr(random::nextBoolean), StateParts.NONE)
+                .with(SonarReading.PART, nullOr(() -> new SonarReading(someInts(32), nullOr(random::nextLong))))
+                .with(LaserReading.PART, nullOr(() -> new LaserReading(someInts(400))))
+                .with(HeatReading.PART, nullOr(() -> new HeatReading(anyDouble(), anyDouble(), anyDouble())))
+                .with(Bumpers.PART, nullOr(() -> new Bumpers(random.nextInt(1 << Bumpers.SECTORS))))
+                .with(TruePose.PART, nullOr(() -> new TruePose(anyDouble(), anyDouble(), anyDouble())))
+                .with(BatteryReading.PART, nullOr(() -> new BatteryReading(random.nextDouble() * 99,
+                        random.nextDouble() * 100)));
     }
 
     private MessageDelivery delivery() {
@@ -164,6 +170,11 @@ public final class RandomMessages {
             l.add(element.get());
         }
         return l;
+    }
+
+    private int[] someInts(int max) {
+        int[] v = ints(max);
+        return v == null ? new int[0] : v;
     }
 
     private int[] ints(int max) {

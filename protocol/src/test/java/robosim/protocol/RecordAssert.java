@@ -31,6 +31,11 @@ final class RecordAssert {
             }
         } else if (expected instanceof int[] e) {
             assertArrayEquals(e, assertInstanceOf(int[].class, actual, path), path);
+        } else if (expected instanceof StateParts e) {
+            StateParts a = assertInstanceOf(StateParts.class, actual, path);
+            for (StatePart<?> part : StateParts.ALL) {
+                assertDeepEquals(e.get(part), a.get(part), path + "." + part.name());
+            }
         } else if (expected instanceof double[] e) {
             assertArrayEquals(e, assertInstanceOf(double[].class, actual, path), path);
         } else if (expected.getClass().isRecord()) {

@@ -12,10 +12,12 @@ import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
+import robosim.protocol.Bumpers;
 import robosim.protocol.Command;
 import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarReading;
 
 /**
  * The Nomadic Scout Robot-Object: the Nomad client library's calls, with their names, arguments and
@@ -140,7 +142,7 @@ public class Scout extends AbstractRobot {
                 wallStartNanos = System.nanoTime();
                 simStartMs = s.timeMs();
             }
-            sonars.observe(s.timeMs(), s.sonar());
+            sonars.observe(s.timeMs(), s.get(SonarReading.PART).ranges());
             refused |= !s.errors().isEmpty();
             if (motionTimeoutMs > 0 && lastMotionMs >= 0 && s.timeMs() - lastMotionMs >= motionTimeoutMs) {
                 lastMotionMs = -1;
@@ -385,7 +387,7 @@ public class Scout extends AbstractRobot {
         fillSonar();
         fillConf(s);
         fillVel(s);
-        State[StateVector.STATE_BUMPER] = s.bumpers();
+        State[StateVector.STATE_BUMPER] = s.get(Bumpers.PART).sectors();
         State[StateVector.STATE_LASER] = 0;
         State[StateVector.STATE_COMPASS] = 0;
         synchronized (lock) {
@@ -411,7 +413,7 @@ public class Scout extends AbstractRobot {
         if (!awaitReply()) {
             return false;
         }
-        State[StateVector.STATE_BUMPER] = state().bumpers();
+        State[StateVector.STATE_BUMPER] = state().get(Bumpers.PART).sectors();
         return true;
     }
 

@@ -7,9 +7,13 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import robosim.hw.RobotSensorResponse;
+import robosim.protocol.Bumpers;
 import robosim.protocol.Command;
+import robosim.protocol.HeatReading;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotStates;
+import robosim.protocol.SonarReading;
 import robosim.params.RobotParametersReader;
 
 /**
@@ -79,8 +83,9 @@ final class ScriptedScout extends Scout {
             if (next == null) {
                 RobotState s = state();
                 next = RobotStates.of(s.step() + 1, s.timeMs() + STEP_MS, s.x(), s.y(), s.th(), s.vel(),
-                        s.rotVel(), s.leftVel(), s.rightVel(), s.stalled(), s.sonar(), s.collisions(), s.laser(),
-                        s.heat(), List.of(), List.of(), s.bumpers());
+                        s.rotVel(), s.leftVel(), s.rightVel(), s.stalled(), s.get(SonarReading.PART).ranges(),
+                        s.collisions(), s.get(LaserReading.PART).ranges(), s.get(HeatReading.PART), List.of(),
+                        List.of(), s.get(Bumpers.PART).sectors());
             }
             deliver(next);
         }

@@ -26,18 +26,8 @@ final class CameraScene {
         }
     }
 
-    /**
-     * @return the scenery, the pucks and every robot's body where they stand now; empty when no robot's camera
-     *         is on, so a run without cameras builds nothing
-     */
+    /** @return the scenery, the pucks and every robot's body where they stand now */
     List<ColoredShape> now(List<SimRobot> robots, GeometryClient geometry, Pucks pucks) {
-        boolean any = false;
-        for (SimRobot r : robots) {
-            any |= r.sensors().camera().isOn();
-        }
-        if (!any) {
-            return List.of();
-        }
         List<ColoredShape> shapes = new ArrayList<>(scenery);
         pucks.addCameraShapes(shapes);
         for (SimRobot r : robots) {
@@ -52,14 +42,9 @@ final class CameraScene {
         return shapes;
     }
 
-    /** Moves a robot's camera for {@code dt} seconds and reads it from the robot's true pose. */
-    static void read(SimRobot r, double dt, List<ColoredShape> shapes) {
-        r.sensors().camera().read(r.x(), r.y(), r.th(), dt, shapes, r.bodyId);
-    }
-
     /** @return a robot's camera as viewers draw it, {pan, field of view} in degrees; null while off */
     static double[] drawn(SimRobot r) {
-        robosim.protocol.CameraView v = r.sensors().camera().view();
+        robosim.protocol.CameraView v = r.sensors().camera();
         return v == null ? null : new double[] {v.pan(), v.model().fieldOfView(v.zoom())};
     }
 }

@@ -1,5 +1,6 @@
 package robosim.env.core;
 
+import robosim.geometry.Angles;
 import robosim.protocol.Command;
 import robosim.protocol.RobotParameters;
 

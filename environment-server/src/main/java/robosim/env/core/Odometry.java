@@ -1,6 +1,7 @@
 package robosim.env.core;
 
 import java.util.random.RandomGenerator;
+import robosim.geometry.Angles;
 
 /**
  * Where a robot believes it is: its true motion each step, plus drift when the world has odometry

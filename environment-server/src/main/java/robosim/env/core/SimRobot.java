@@ -1,10 +1,17 @@
 package robosim.env.core;
 
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
 import org.locationtech.jts.geom.Envelope;
+import robosim.env.camera.ColoredShape;
+import robosim.env.sensors.RobotSensors;
+import robosim.env.sensors.Sensor;
+import robosim.env.sensors.SensorInput;
+import robosim.env.sensors.SensorSetup;
 import robosim.env.world.HeatSource;
 import robosim.env.world.Noise;
+import robosim.geometry.Angles;
 import robosim.geometry.BodyShape;
 import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
@@ -15,6 +22,8 @@ import robosim.protocol.MessageDelivery;
 import robosim.protocol.RobotKind;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
+import robosim.protocol.StateParts;
+import robosim.protocol.TruePose;
 
 /**
  * One robot's simulated state: its true pose and its odometry, velocities within its limits, stall,
@@ -37,8 +46,7 @@ final class SimRobot {
     private boolean stalled;
     private int collisions;
     private double distance;
-    private int bumpers;
-    private final Sensors sensors;
+    private final RobotSensors sensors;
     private final Odometry odometry;
     boolean connected;
     /** How its motion is swept: through the world's pucks, which it pushes. */
@@ -57,7 +65,7 @@ final class SimRobot {
         this.x = x;
         this.y = y;
         this.th = Angles.fix(th);
-        this.sensors = new Sensors(params, noise, random);
+        this.sensors = new RobotSensors(new SensorSetup(params, noise, random));
         this.odometry = new Odometry(x, y, this.th, noise.odometryError(), random);
         this.motors = new Motors(RobotKind.of(type).map(RobotKind::hasMotorSwitch).orElse(true), motorsEnabled);
     }
@@ -114,7 +122,7 @@ final class SimRobot {
         vel = trans.speed();
         rotVel = rot.speed();
         if (trans.distance() == 0 && rot.distance() == 0) {
-            bumpers = bumpers(geometry);
+            sensors.moved(new Sensor.Moved(geometry, bodyId, th, 0, 0, dt));
             return;
         }
         double turn = Math.toRadians(rot.distance());
@@ -130,6 +138,7 @@ final class SimRobot {
         odometry.travel(covered, turned, x, y, th);
         double half = turned / params.diffConvFactor();
         drive.travelled(covered - half, covered + half);
+        sensors.moved(new Sensor.Moved(geometry, bodyId, th, covered - half, covered + half, dt));
         if (r.blocked()) {
             if (!stalled) {
                 collisions++;
@@ -140,25 +149,21 @@ final class SimRobot {
         } else {
             stalled = false;
         }
-        bumpers = bumpers(geometry);
     }
 
-    /** A body this near something touches it, mm. */
-    static final double CONTACT_TOLERANCE = 1.0;
-
-    /** The bumper ring: bit i for contact in 60° sector i, sector 0 centred dead ahead. */
-    private int bumpers(GeometryClient geometry) {
-        int bits = 0;
-        for (double a : geometry.contacts(bodyId, CONTACT_TOLERANCE)) {
-            double relative = Angles.fix(Math.toDegrees(a) - th);
-            int sector = Math.floorMod((int) Math.floor((relative + 30) / 60), RobotState.BUMPER_SECTORS);
-            bits |= 1 << sector;
-        }
-        return bits;
-    }
-
-    void readSensors(GeometryClient geometry, List<HeatSource> heat, long timeMs) {
-        sensors.read(geometry, pose(), body.radius(), bodyId, heat, timeMs);
+    /**
+     * Reads the robot's sensors where it truly is.
+     *
+     * @param geometry the world
+     * @param heat     its heat sources
+     * @param timeMs   simulated time of the reading
+     * @param dt       seconds since the previous reading (0 before the first step)
+     * @param scene    what a camera sees, made when first asked for
+     */
+    void readSensors(GeometryClient geometry, List<HeatSource> heat, long timeMs, double dt,
+                     Supplier<List<ColoredShape>> scene) {
+        sensors.sense(new SensorInput(geometry, pose(), th, bodyId, sensors.gatherRadius(body.radius()), heat, timeMs,
+                dt, scene));
     }
 
     /**
@@ -194,7 +199,7 @@ final class SimRobot {
         } else {
             odometry.placed(x, y, th);
         }
-        bumpers = bumpers(geometry);
+        sensors.moved(new Sensor.Moved(geometry, bodyId, th, 0, 0, 0));
     }
 
     Pose2D pose() {
@@ -204,10 +209,9 @@ final class SimRobot {
     RobotState state(long step, long timeMs, List<MessageDelivery> messages, List<String> errors,
                      GripperState gripper) {
         double diff = Math.toRadians(rotVel) / params.diffConvFactor();
+        StateParts parts = sensors.report(StateParts.NONE, new TruePose(x, y, th)).with(GripperState.PART, gripper);
         return new RobotState(step, timeMs, odometry.x(), odometry.y(), odometry.th(), vel, rotVel,
-                vel - diff, vel + diff, stalled, sensors.sonar(), collisions, sensors.laser(), sensors.heat(),
-                messages, errors, bumpers, sensors.truePoseOn() ? new double[] {x, y, th} : null, gripper,
-                sensors.camera().view(), sensors.sonarNew(), motors.enabled());
+                vel - diff, vel + diff, stalled, collisions, messages, errors, motors.enabled(), parts);
     }
 
     double x() {
@@ -242,7 +246,7 @@ final class SimRobot {
         return distance;
     }
 
-    Sensors sensors() {
+    RobotSensors sensors() {
         return sensors;
     }
 

@@ -7,10 +7,12 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
+import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
 import robosim.comms.CommsSettings;
+import robosim.env.camera.ColoredShape;
 import robosim.env.world.Obstacle;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
@@ -256,10 +258,7 @@ public final class Simulation {
     private void readIfUnread(int i) {
         if (unread[i]) {
             SimRobot r = order.get(i);
-            r.readSensors(geometry, world.heat(), timeMs());
-            if (r.sensors().camera().isOn()) {
-                CameraScene.read(r, 0, cameraScene.now(order, geometry, pucks));
-            }
+            r.readSensors(geometry, world.heat(), timeMs(), 0, () -> cameraScene.now(order, geometry, pucks));
             unread[i] = false;
         }
     }
@@ -384,13 +383,10 @@ public final class Simulation {
 
     private void readSensors() {
         long now = timeMs();
-        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now));
-        List<robosim.env.camera.ColoredShape> seen = cameraScene.now(order, geometry, pucks);
-        if (!seen.isEmpty()) {
-            // some robot's camera is on; the others' read nothing
-            double dt = world.stepMs() / 1000.0;
-            parallel.forEach(order.size(), i -> CameraScene.read(order.get(i), dt, seen));
-        }
+        double dt = world.stepMs() / 1000.0;
+        // the scene a camera sees is made once a step, by the first robot whose camera is on
+        Supplier<List<ColoredShape>> scene = new Once<>(() -> cameraScene.now(order, geometry, pucks));
+        parallel.forEach(order.size(), i -> order.get(i).readSensors(geometry, world.heat(), now, dt, scene));
     }
 
     /**

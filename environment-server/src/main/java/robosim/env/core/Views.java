@@ -20,7 +20,8 @@ final class Views {
         for (SimRobot r : order) {
             Odometry o = r.odometry();
             views.add(new Snapshot.RobotView(r.name, r.x(), r.y(), r.th(), r.stalled(), r.connected,
-                    r.sensors().sonar(), o.x(), o.y(), o.th(), r.sensors().laser(), r.sensors().laserIncrement(),
+                    r.sensors().sonarForViewers(), o.x(), o.y(), o.th(), r.sensors().laserForViewers(),
+                    r.sensors().laserIncrement(),
                     r.vel(), r.rotVel(), CameraScene.drawn(r)));
         }
         return views;

@@ -26,7 +26,7 @@ class CameraPuckTest {
         for (int i = 0; i < 10; i++) {
             sim.step(Map.of());
         }
-        return sim.state("r").camera();
+        return sim.state("r").get(CameraView.PART);
     }
 
     private static List<ColorBlob> red(CameraView view) {

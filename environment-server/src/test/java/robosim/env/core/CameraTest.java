@@ -41,7 +41,7 @@ class CameraTest {
         for (int i = 1; i < steps; i++) {
             sim.step(Map.of());
         }
-        return sim.state("r").camera();
+        return sim.state("r").get(CameraView.PART);
     }
 
     /**
@@ -76,7 +76,7 @@ class CameraTest {
 
     @Test
     void aRedBoxStraightAheadIsOneBlobAtTheImageCentreOfTheExpectedArea() {
-        CameraView view = sim(List.of(redBox()), PtzModel.VCC4).state("r").camera();
+        CameraView view = sim(List.of(redBox()), PtzModel.VCC4).state("r").get(CameraView.PART);
         List<ColorBlob> red = channel(view, 1);
         assertEquals(1, red.size(), "one red blob: " + view.blobs());
         long[] face = expectedFace(45);
@@ -91,7 +91,7 @@ class CameraTest {
     @Test
     void behindAWallTheBoxIsNotSeen() {
         Obstacle wall = new Obstacle(new double[] {2000, 4000, 2100, 4000, 2100, 6000, 2000, 6000}, 500, 2);
-        CameraView view = sim(List.of(redBox(), wall), PtzModel.VCC4).state("r").camera();
+        CameraView view = sim(List.of(redBox(), wall), PtzModel.VCC4).state("r").get(CameraView.PART);
         assertEquals(List.of(), view.blobs());
     }
 
@@ -100,7 +100,7 @@ class CameraTest {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(redBox()),
                 Worlds.robot("r", 1000, 5000, 0), Worlds.robot("other", 2500, 5000, 90)));
         sim.step(Map.of("r", List.of(new Command.ConfigurePtz(PtzModel.VCC4, 200), new Command.TrackColors(true))));
-        List<ColorBlob> red = channel(sim.state("r").camera(), 1);
+        List<ColorBlob> red = channel(sim.state("r").get(CameraView.PART), 1);
         assertEquals(1, red.size(), "the box shows above the robot in the way");
         assertTrue(red.get(0).bottom() < 60,
                 "only the part above the robot's 250 mm shows, above the lens at 200 mm: " + red.get(0));
@@ -122,7 +122,7 @@ class CameraTest {
     @Test
     void zoomingNarrowsTheFieldOfViewAndEnlargesTheBlob() {
         Simulation sim = sim(List.of(redBox()), PtzModel.VCC4);
-        int wideArea = channel(sim.state("r").camera(), 1).get(0).area();
+        int wideArea = channel(sim.state("r").get(CameraView.PART), 1).get(0).area();
         double fov = PtzModel.VCC4.fieldOfView(100);
         assertTrue(fov < 45 && fov > PtzModel.VCC4.fovAtMaxZoom(), "fov " + fov);
         CameraView zoomed = aimAndWait(sim, 0, 0, 100, 1);
@@ -161,7 +161,7 @@ class CameraTest {
     void aChannelBoundToAnotherColourSeesTheBoxThere() {
         Simulation sim = sim(List.of(redBox()), PtzModel.VCC4);
         sim.step(Map.of("r", List.of(new Command.BindChannel(1, null), new Command.BindChannel(12, "RED"))));
-        CameraView view = sim.state("r").camera();
+        CameraView view = sim.state("r").get(CameraView.PART);
         assertTrue(channel(view, 1).isEmpty(), "channel 1 freed");
         assertEquals(expectedFace(45)[0], channel(view, 12).get(0).area());
     }
@@ -170,7 +170,7 @@ class CameraTest {
     void aRobotThatNeverSwitchedItsCameraOnReportsNone() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(redBox()), Worlds.robot("r", 1000, 5000, 0)));
         sim.step(Map.of());
-        assertNull(sim.state("r").camera());
+        assertNull(sim.state("r").get(CameraView.PART));
         assertNull(sim.snapshot().robots().get(0).camera(), "nothing for viewers to draw");
     }
 

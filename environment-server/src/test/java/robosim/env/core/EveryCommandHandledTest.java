@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import robosim.env.world.World;
 import robosim.protocol.Command;
 import robosim.protocol.Figure;
+import robosim.protocol.LaserReading;
 
 /**
  * Every kind of command a robot can send reaches a handler in the core: a command record added to
@@ -65,6 +66,6 @@ class EveryCommandHandledTest {
         assertDoesNotThrow(() -> sim.step(Map.of("a", commands)));
         assertEquals("hello", sim.snapshot().said().get(0).text());
         assertEquals(1, sim.snapshot().messages().size(), "the broadcast was sent");
-        assertTrue(sim.state("a").laser().length > 0, "the laser is on");
+        assertTrue(sim.state("a").get(LaserReading.PART).ranges().length > 0, "the laser is on");
     }
 }

@@ -15,8 +15,12 @@ import robosim.geometry.GeometryClient;
 import robosim.geometry.Pose2D;
 import robosim.geometry.Surroundings;
 import robosim.geometry.SweepResult;
+import robosim.protocol.Bumpers;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
+import robosim.protocol.TruePose;
 
 /**
  * A SHA-256 of the raw bits of many geometry answers on a world, or of its robots' states over a
@@ -161,20 +165,21 @@ final class GeometryDigest {
     }
 
     private void add(RobotState s) {
-        for (double v : new double[] {s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.collisions(), s.bumpers()}) {
+        for (double v : new double[] {s.x(), s.y(), s.th(), s.vel(), s.rotVel(), s.collisions(), s.get(Bumpers.PART).sectors()}) {
             add(v);
         }
         add(s.stalled());
-        for (int[] a : new int[][] {s.sonar(), s.laser()}) {
+        for (int[] a : new int[][] {s.get(SonarReading.PART).ranges(), s.get(LaserReading.PART).ranges()}) {
             add(a == null ? -1 : a.length);
             for (int v : a == null ? new int[0] : a) {
                 add(v);
             }
         }
-        if (s.truePose() != null) {
-            for (double v : s.truePose()) {
-                add(v);
-            }
+        TruePose t = s.get(TruePose.PART);
+        if (t != null) {
+            add(t.x());
+            add(t.y());
+            add(t.th());
         }
     }
 }

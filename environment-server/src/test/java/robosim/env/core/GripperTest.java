@@ -13,9 +13,11 @@ import robosim.env.world.World;
 import robosim.env.world.WorldObject;
 import robosim.protocol.Command;
 import robosim.protocol.GripperState;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.RobotState;
 import robosim.protocol.Snapshot;
+import robosim.protocol.SonarReading;
 
 /** A robot's gripper and the world's pucks, stepped in the simulation core. */
 class GripperTest {
@@ -54,7 +56,7 @@ class GripperTest {
         // its centre 50 mm ahead of the body: the inner beam crosses 30 mm ahead, within its radius
         Simulation sim = new Simulation(world(1000 + FRONT + 50, GRIPPER));
         sim.step(Map.of());
-        GripperState g = sim.state("r").gripper();
+        GripperState g = sim.state("r").get(GripperState.PART);
         assertEquals(GripperState.INNER_BEAM, g.switches() & (GripperState.INNER_BEAM | GripperState.OUTER_BEAM));
     }
 
@@ -62,20 +64,20 @@ class GripperTest {
     void aPuckOutsideThePaddlesBreaksNoBeam() {
         Simulation sim = new Simulation(world(1000 + FRONT + 400, GRIPPER));
         sim.step(Map.of());
-        assertEquals(0, sim.state("r").gripper().switches() & (GripperState.INNER_BEAM | GripperState.OUTER_BEAM));
+        assertEquals(0, sim.state("r").get(GripperState.PART).switches() & (GripperState.INNER_BEAM | GripperState.OUTER_BEAM));
     }
 
     @Test
     void aRobotApproachesGripsLiftsCarriesAPuckTwoMetresAndDropsItWhereItIs() {
         Simulation sim = new Simulation(world(2000, GRIPPER));
         send(sim, new Command.SetVel(150));
-        until(sim, 200, s -> (s.gripper().switches() & GripperState.INNER_BEAM) != 0);
+        until(sim, 200, s -> (s.get(GripperState.PART).switches() & GripperState.INNER_BEAM) != 0);
         send(sim, new Command.Stop(), new Command.Gripper(Command.Gripper.GRIP_CLOSE));
-        RobotState held = until(sim, 50, s -> s.gripper().holding() == 0);
-        assertEquals(2, gripState(held.gripper()), "both paddles triggered: ARIA's closed");
+        RobotState held = until(sim, 50, s -> s.get(GripperState.PART).holding() == 0);
+        assertEquals(2, gripState(held.get(GripperState.PART)), "both paddles triggered: ARIA's closed");
         assertEquals("r", puck(sim).heldBy());
         send(sim, new Command.Gripper(Command.Gripper.LIFT_UP));
-        until(sim, 50, s -> s.gripper().lift() == 1 && (s.gripper().switches() & GripperState.LIFT_MOVING) == 0);
+        until(sim, 50, s -> s.get(GripperState.PART).lift() == 1 && (s.get(GripperState.PART).switches() & GripperState.LIFT_MOVING) == 0);
         assertTrue(puck(sim).lifted());
         RobotSummary before = sim.summary("r");
         Snapshot.ObjectView gripped = puck(sim);
@@ -86,9 +88,9 @@ class GripperTest {
         RobotSummary after = sim.summary("r");
         assertEquals(2000, after.x() - before.x(), 1, "the Move ends within its done distance");
         send(sim, new Command.Gripper(Command.Gripper.LIFT_DOWN));
-        until(sim, 50, s -> s.gripper().lift() == 0);
+        until(sim, 50, s -> s.get(GripperState.PART).lift() == 0);
         send(sim, new Command.Gripper(Command.Gripper.GRIP_OPEN));
-        until(sim, 50, s -> s.gripper().holding() == -1);
+        until(sim, 50, s -> s.get(GripperState.PART).holding() == -1);
         // backing away leaves it where it was put down
         send(sim, new Command.Move(-500));
         until(sim, 100, s -> s.vel() == 0 && s.step() > 5);
@@ -148,7 +150,7 @@ class GripperTest {
     void theSonarSeesAPuck() {
         Simulation sim = new Simulation(world(2000, Worlds.p3dx()));
         sim.step(Map.of());
-        int[] sonar = sim.state("r").sonar();
+        int[] sonar = sim.state("r").get(SonarReading.PART).ranges();
         // sonar 3 sits 166 mm ahead, 27 mm left, facing 10°: the puck's near side is ~800 mm away
         assertTrue(sonar[3] < 1000 && sonar[3] > 700, "sonar 3 reads " + sonar[3]);
     }
@@ -158,7 +160,7 @@ class GripperTest {
         Simulation sim = new Simulation(world(2000, Worlds.p3dx()));
         send(sim, new Command.Gripper(Command.Gripper.GRIP_CLOSE));
         RobotState s = sim.state("r");
-        assertNull(s.gripper());
+        assertNull(s.get(GripperState.PART));
         assertEquals(1, s.errors().size());
         assertTrue(s.errors().get(0).contains("has no gripper"), s.errors().get(0));
     }
@@ -168,7 +170,7 @@ class GripperTest {
         // the puck 50 mm ahead of the body; a wall 600 mm ahead of the robot's centre
         Simulation sim = new Simulation(world(1000 + FRONT + 50, GRIPPER, Worlds.box(1600, 0, 1700, 4000)));
         send(sim, new Command.Gripper(Command.Gripper.GRIP_CLOSE));
-        until(sim, 50, s -> s.gripper().holding() == 0);
+        until(sim, 50, s -> s.get(GripperState.PART).holding() == 0);
         send(sim, new Command.SetVel(200));
         for (int i = 0; i < 60; i++) {
             sim.step(Map.of());
@@ -183,7 +185,7 @@ class GripperTest {
     void theLaserSeesAPuck() {
         Simulation sim = new Simulation(world(2000, Worlds.p3dx()));
         send(sim, new Command.ConfigureLaser(true, 1, 8000));
-        int[] scan = sim.state("r").laser();
+        int[] scan = sim.state("r").get(LaserReading.PART).ranges();
         // the middle beam, straight ahead from the laser 18 mm ahead of the centre, meets the puck's near side
         assertEquals(1000 - 18 - R, scan[90], 1);
     }

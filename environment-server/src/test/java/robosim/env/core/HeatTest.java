@@ -22,7 +22,7 @@ class HeatTest {
                 wall ? List.of(Worlds.box(2000, 4000, 2100, 6000)) : List.of(), heat, Noise.NONE,
                 Worlds.robot("r", 1000, 5000, robotTh)));
         sim.step(Map.of("r", List.of(new Command.ConfigureHeatSensor(true, fov, range))));
-        return sim.state("r").heat();
+        return sim.state("r").get(HeatReading.PART);
     }
 
     @Test
@@ -57,6 +57,6 @@ class HeatTest {
     void aSensorThatIsOffReportsNothing() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(), Worlds.robot("r", 1000, 5000, 0)));
         sim.step(Map.of());
-        assertNull(sim.state("r").heat());
+        assertNull(sim.state("r").get(HeatReading.PART));
     }
 }

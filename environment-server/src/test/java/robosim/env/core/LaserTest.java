@@ -7,6 +7,7 @@ import java.util.Map;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 
 /** The SICK laser against hand-computed ranges in a literal world. */
 class LaserTest {
@@ -19,7 +20,7 @@ class LaserTest {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, -30000, 3100, 40000)),
                 Worlds.robot("r", 1000, 5000, 0, Worlds.p3dxWithLaser(18, 0, 0))));
         sim.step(Map.of("r", List.of(new Command.ConfigureLaser(true, increment, 8000))));
-        int[] scan = sim.state("r").laser();
+        int[] scan = sim.state("r").get(LaserReading.PART).ranges();
         int n = (int) Math.round(180 / increment) + 1;
         assertEquals(n, scan.length);
         for (int i = 0; i < n; i++) {
@@ -39,7 +40,7 @@ class LaserTest {
                 List.of(Worlds.box(0, 7000, 10000, 7100), Worlds.box(0, 2900, 10000, 3000)),
                 Worlds.robot("r", 5000, 5000, 0, Worlds.p3dxWithLaser(0, 100, laserTh))));
         sim.step(Map.of("r", List.of(new Command.ConfigureLaser(true, 1, 8000))));
-        int[] scan = sim.state("r").laser();
+        int[] scan = sim.state("r").get(LaserReading.PART).ranges();
         assertEquals(laserTh > 0 ? 7000 - 5100 : 5100 - 3000, scan[90]);
     }
 
@@ -49,7 +50,7 @@ class LaserTest {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
                 Worlds.robot("r", 1000, 5000, 0, Worlds.p3dxWithLaser(18, 0, 0))));
         sim.step(Map.of("r", List.of(new Command.ConfigureLaser(true, 1, max))));
-        assertEquals(max, sim.state("r").laser()[90]);
+        assertEquals(max, sim.state("r").get(LaserReading.PART).ranges()[90]);
     }
 
     @ParameterizedTest(name = "on={0}")
@@ -57,8 +58,8 @@ class LaserTest {
     void aLaserSwitchedOffSendsNoScan(boolean on) {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(), Worlds.robot("r", 1000, 5000, 0)));
         sim.step(Map.of("r", List.of(new Command.ConfigureLaser(true, 1, 8000))));
-        assertEquals(181, sim.state("r").laser().length);
+        assertEquals(181, sim.state("r").get(LaserReading.PART).ranges().length);
         sim.step(Map.of("r", List.of(new Command.ConfigureLaser(on, 1, 8000))));
-        assertEquals(0, sim.state("r").laser().length);
+        assertEquals(0, sim.state("r").get(LaserReading.PART).ranges().length);
     }
 }

@@ -11,7 +11,9 @@ import org.junit.jupiter.api.Test;
 import robosim.env.world.Noise;
 import robosim.env.world.World;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /** Seeded noise: the same seed repeats exactly; the noise has the configured spread. */
 class NoiseTest {
@@ -29,9 +31,9 @@ class NoiseTest {
         for (int i = 0; i < steps; i++) {
             sim.step(Map.of());
             RobotState s = sim.state("r");
-            int[] both = new int[s.sonar().length + s.laser().length];
-            System.arraycopy(s.sonar(), 0, both, 0, s.sonar().length);
-            System.arraycopy(s.laser(), 0, both, s.sonar().length, s.laser().length);
+            int[] both = new int[s.get(SonarReading.PART).ranges().length + s.get(LaserReading.PART).ranges().length];
+            System.arraycopy(s.get(SonarReading.PART).ranges(), 0, both, 0, s.get(SonarReading.PART).ranges().length);
+            System.arraycopy(s.get(LaserReading.PART).ranges(), 0, both, s.get(SonarReading.PART).ranges().length, s.get(LaserReading.PART).ranges().length);
             out[i] = both;
         }
         return out;

@@ -1,6 +1,5 @@
 package robosim.env.core;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import robosim.env.world.World;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
+import robosim.protocol.TruePose;
 
 /** The simulator's own operations on a robot: placing it (SIM_SET_POSE), resetting it (SIM_RESET), its true pose. */
 class PlacementTest {
@@ -65,9 +65,9 @@ class PlacementTest {
     @Test
     void theTruePoseIsReportedOnlyWhenAsked() {
         step();
-        assertNull(sim.state("a").truePose());
+        assertNull(sim.state("a").get(TruePose.PART));
         step(new Command.ReportTruePose(true));
-        assertArrayEquals(new double[] {2000, 2000, 0}, sim.state("a").truePose(), 1e-9);
+        assertEquals(new TruePose(2000, 2000, 0), sim.state("a").get(TruePose.PART));
     }
 
     @Test

@@ -10,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import robosim.protocol.Command;
 import robosim.params.ParameterFileReader;
 import robosim.protocol.RobotParameters;
+import robosim.protocol.SonarReading;
 
 /** The body, limits and sensor poses simulated are those the robot's program sent. */
 class RobotParametersInUseTest {
@@ -21,9 +22,9 @@ class RobotParametersInUseTest {
     void theProgramsParametersReplaceTheWorldFiles() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
                 Worlds.robot("r", 1000, 5000, 0)));
-        assertEquals(2000 - 166, sim.state("r").sonar()[3], "p3dx: front sonar 166 mm ahead");
+        assertEquals(2000 - 166, sim.state("r").get(SonarReading.PART).ranges()[3], "p3dx: front sonar 166 mm ahead");
         sim.useParameters("r", p3at());
-        assertEquals(2000 - 245, sim.state("r").sonar()[3], "p3at: front sonar 245 mm ahead");
+        assertEquals(2000 - 245, sim.state("r").get(SonarReading.PART).ranges()[3], "p3at: front sonar 245 mm ahead");
         sim.step(Map.of("r", List.of(new Command.SetVel(2000))));
         for (int i = 0; i < 100; i++) {
             sim.step(Map.of());

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import robosim.env.world.RobotSpec;
+import robosim.protocol.Bumpers;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
@@ -46,16 +47,16 @@ class ScoutCoreTest {
         // the wall ahead-left of the robot: the robot heads 60° towards it, so the contact is at −60°
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
                 scoutAt(2000, 5000, -60)));
-        assertEquals(0, sim.state("s").bumpers());
+        assertEquals(0, sim.state("s").get(Bumpers.PART).sectors());
         sim.step(Map.of("s", List.of(new Command.SetHeading(-60), new Command.SetVel(300))));
         run(sim, 100);
         RobotState touching = sim.state("s");
         assertTrue(touching.stalled());
         // the wall's normal lies at 0° in the world, +60° relative to the heading of −60°: sector 1
-        assertEquals(1 << 1, touching.bumpers(), Integer.toBinaryString(touching.bumpers()));
+        assertEquals(1 << 1, touching.get(Bumpers.PART).sectors(), Integer.toBinaryString(touching.get(Bumpers.PART).sectors()));
         sim.step(Map.of("s", List.of(new Command.Move(-300))));
         run(sim, 50);
-        assertEquals(0, sim.state("s").bumpers(), "clear after backing off");
+        assertEquals(0, sim.state("s").get(Bumpers.PART).sectors(), "clear after backing off");
     }
 
     @Test
@@ -64,10 +65,10 @@ class ScoutCoreTest {
                 List.of(Worlds.box(3000, 0, 3100, 10000), Worlds.box(0, 0, 100, 10000)), scoutAt(2000, 5000, 0)));
         sim.step(Map.of("s", List.of(new Command.SetVel(400))));
         run(sim, 60);
-        assertEquals(1, sim.state("s").bumpers());
+        assertEquals(1, sim.state("s").get(Bumpers.PART).sectors());
         sim.step(Map.of("s", List.of(new Command.SetVel(-400))));
         run(sim, 120);
-        assertEquals(1 << 3, sim.state("s").bumpers());
+        assertEquals(1 << 3, sim.state("s").get(Bumpers.PART).sectors());
     }
 
     @Test

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Command;
+import robosim.protocol.SonarReading;
 
 class SonarTest {
     @Test
@@ -16,7 +17,7 @@ class SonarTest {
         // wall face at x = 3000, robot centre at x = 1000 facing it
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
                 Worlds.robot("r", 1000, 5000, 0)));
-        int[] sonar = sim.state("r").sonar();
+        int[] sonar = sim.state("r").get(SonarReading.PART).ranges();
         // sonars 3 and 4 sit 166 mm ahead at ±10°; their cones (±15°) contain the wall's normal
         assertEquals(2000 - 166, sonar[3]);
         assertEquals(2000 - 166, sonar[4]);
@@ -30,19 +31,19 @@ class SonarTest {
     void echoesNearerThanTheMinimumReadTheMinimum() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(1250, 0, 1350, 10000)),
                 Worlds.robot("r", 1000, 5000, 0)));
-        assertEquals(Sensors.SONAR_MIN_RANGE, sim.state("r").sonar()[3]);
+        assertEquals(100, sim.state("r").get(SonarReading.PART).ranges()[3]);
     }
 
     @Test
     void rearSonarsSeeAWallShrinkWhileDrivingBackwards() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(0, 0, 100, 10000)),
                 Worlds.robot("r", 2000, 5000, 0)));
-        int before = sim.state("r").sonar()[11];
+        int before = sim.state("r").get(SonarReading.PART).ranges()[11];
         sim.step(Map.of("r", List.of(new Command.SetVel(-400))));
         for (int i = 0; i < 20; i++) {
             sim.step(Map.of());
         }
-        int after = sim.state("r").sonar()[11];
+        int after = sim.state("r").get(SonarReading.PART).ranges()[11];
         assertEquals(2000 - 100 - 255, before, 1);
         assertEquals(Math.round(sim.state("r").x() - 100 - 255), after, 1);
     }
@@ -56,7 +57,7 @@ class SonarTest {
         int previous = Integer.MAX_VALUE;
         int shrinking = 0;
         for (int i = 0; i < 200 && !sim.state("r").stalled(); i++) {
-            int rear = Math.min(sim.state("r").sonar()[11], sim.state("r").sonar()[12]);
+            int rear = Math.min(sim.state("r").get(SonarReading.PART).ranges()[11], sim.state("r").get(SonarReading.PART).ranges()[12]);
             assertTrue(rear <= previous, "rear sonars never see the wall recede while backing: " + rear + " after " + previous);
             shrinking += rear < previous ? 1 : 0;
             previous = rear;
@@ -68,16 +69,16 @@ class SonarTest {
         assertEquals(0, s.th(), 1e-9, "it backed straight, without turning round");
         assertFalse(sim.overlapsAnything("r"));
         assertTrue(shrinking > 10, "the rear readings shrank step after step: " + shrinking);
-        assertEquals(Sensors.SONAR_MIN_RANGE, s.sonar()[11], "at the wall the rear sonar reads its minimum");
+        assertEquals(100, s.get(SonarReading.PART).ranges()[11], "at the wall the rear sonar reads its minimum");
     }
 
     @Test
     void sonarsSwitchedOffSendNoReadings() {
         Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(), Worlds.robot("r", 1000, 5000, 0)));
         sim.step(Map.of("r", List.of(new Command.SetSonar(false))));
-        assertEquals(0, sim.state("r").sonar().length);
+        assertEquals(0, sim.state("r").get(SonarReading.PART).ranges().length);
         sim.step(Map.of("r", List.of(new Command.SetSonar(true))));
-        assertEquals(16, sim.state("r").sonar().length);
+        assertEquals(16, sim.state("r").get(SonarReading.PART).ranges().length);
     }
 
     @Test
@@ -102,7 +103,7 @@ class SonarTest {
             var s = sim.state("a");
             var t = sim.state("b");
             out[i] = new int[] {(int) Math.round(s.x() * 1000), (int) Math.round(s.y() * 1000),
-                    (int) Math.round(t.x() * 1000), (int) Math.round(t.y() * 1000), s.sonar()[3], t.sonar()[4]};
+                    (int) Math.round(t.x() * 1000), (int) Math.round(t.y() * 1000), s.get(SonarReading.PART).ranges()[3], t.get(SonarReading.PART).ranges()[4]};
         }
         return out;
     }

@@ -13,8 +13,10 @@ import robosim.pioneer.LaserPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.SimStat;
 import robosim.protocol.Command;
+import robosim.protocol.LaserReading;
 import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotState;
+import robosim.protocol.TruePose;
 
 /**
  * A world robot driven by an ARIA client: an ordinary robot client of the Environment, with its own
@@ -33,7 +35,7 @@ import robosim.protocol.RobotState;
  */
 final class BridgeRobot extends AbstractRobot {
     /** What a client attached before the welcome is sent: standing at the odometry's origin, nothing sensed. */
-    private static final RobotState BEFORE_WELCOME = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, new int[0], 0);
+    private static final RobotState BEFORE_WELCOME = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, 0);
 
     private static final Logger LOG = Logger.getLogger(BridgeRobot.class.getName());
     private static final LogLimiter LIMITED = new LogLimiter(LOG);
@@ -248,14 +250,14 @@ final class BridgeRobot extends AbstractRobot {
         PioneerSession session = a.session();
         session.send(a.sips().build(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()), a.handler().sonarOn()).toPacket());
         lastReportNanos = System.nanoTime();
-        for (LaserPacket p : a.laser().packets(s.laser())) {
+        for (LaserPacket p : a.laser().packets(s.get(LaserReading.PART).ranges())) {
             session.send(p.toPacket());
         }
         int mode = simStatMode;
-        double[] t = s.truePose();
+        TruePose t = s.get(TruePose.PART);
         if (mode != 0 && t != null) {
             session.send(new SimStat(0, getStepMs(), options.realTime() ? getStepMs() : 0, getStepMs(),
-                    (int) Math.round(t[0]), (int) Math.round(t[1]), 0, (int) Math.round(t[2])).toPacket());
+                    (int) Math.round(t.x()), (int) Math.round(t.y()), 0, (int) Math.round(t.th())).toPacket());
             if (mode == 1) {
                 simStatMode = 0;
             }
@@ -286,7 +288,7 @@ final class BridgeRobot extends AbstractRobot {
         }
         a.session().send(a.sips().standing(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()),
                 a.handler().sonarOn()).toPacket());
-        for (LaserPacket p : a.laser().packets(s.laser())) {
+        for (LaserPacket p : a.laser().packets(s.get(LaserReading.PART).ranges())) {
             a.session().send(p.toPacket());
         }
         return true;

@@ -36,7 +36,7 @@ class PioneerRemoteKeydriveTest {
             sent.clear();
             time += 100;
             responded(new RobotSensorResponse(new RobotState(getCounter() + 1, time, 0, 0, 0, 0, 0, 0, 0, false,
-                    new int[0], 0)));
+                    0)));
             return List.copyOf(sent);
         }
     }

@@ -1,4 +1,4 @@
-package robosim.env.core;
+package robosim.env.sensors;
 
 /**
  * A sensor's own clock (the original RoboSim's {@code PeriodicSensor}): it fires every

@@ -1,4 +1,4 @@
-package robosim.env.core;
+package robosim.geometry;
 
 /** Angle helpers in ARIA's convention: degrees, normalised to (-180, 180]. */
 public final class Angles {

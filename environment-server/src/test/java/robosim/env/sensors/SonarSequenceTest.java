@@ -1,4 +1,4 @@
-package robosim.env.core;
+package robosim.env.sensors;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -10,6 +10,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Command;
 import robosim.protocol.RobotState;
+import robosim.protocol.SonarReading;
 
 /**
  * The sonar ring fired in sequence: one transducer of each bank of eight every msPerFiring ms, in
@@ -50,43 +51,5 @@ class SonarSequenceTest {
         assertEquals(1L << 2 | 1L << 3, seq.fire(300));
         // a long gap fires the whole ring
         assertEquals(0b11111, seq.fire(10_000));
-    }
-
-    @Test
-    void theStateMarksTheNewReadingsAndKeepsTheOthers() {
-        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(Worlds.box(3000, 0, 3100, 10000)),
-                Worlds.robot("r", 1000, 5000, 0)));
-        assertNull(sim.state("r").sonarNew(), "every sonar fires every step until a cycle is set");
-        sim.step(Map.of("r", List.of(new Command.SetSonarCycle(40))));
-        // the first sequenced reading fires the whole ring
-        assertEquals(0xFFFFL, sim.state("r").sonarNew());
-        // 200 ms: firings 3, 4, 5 (120, 160, 200 ms); the robot starts towards the wall
-        sim.step(Map.of("r", List.of(new Command.SetVel(500))));
-        assertEquals(0b0011_1000_0011_1000L, sim.state("r").sonarNew());
-        int[] at200 = sim.state("r").sonar();
-        double x200 = sim.state("r").x();
-        // 300 ms: firings 6, 7 (240, 280 ms)
-        sim.step(Map.of());
-        RobotState s = sim.state("r");
-        assertEquals(1L << 6 | 1L << 7 | 1L << 14 | 1L << 15, s.sonarNew());
-        assertTrue(s.isSonarNew(6));
-        assertTrue(!s.isSonarNew(3));
-        // sonar 3 faces the wall the robot drives towards: not fired, so its range is the old one
-        assertTrue(s.x() > x200, "the robot moved on");
-        assertEquals(at200[3], s.sonar()[3]);
-    }
-
-    @Test
-    void aCycleOfZeroFiresEveryStepAgain() {
-        Simulation sim = new Simulation(Worlds.world(10000, 10000, List.of(), Worlds.robot("r", 1000, 5000, 0)));
-        sim.step(Map.of("r", List.of(new Command.SetSonarCycle(40))));
-        sim.step(Map.of("r", List.of(new Command.SetSonarCycle(0))));
-        assertNull(sim.state("r").sonarNew());
-    }
-
-    @Test
-    void aBadCycleIsRefusedNamingTheValueAndTheRule() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Command.SetSonarCycle(-1));
-        assertEquals("-1 was supplied for msPerFiring: it is 0 (every step) to 10000 ms", e.getMessage());
     }
 }

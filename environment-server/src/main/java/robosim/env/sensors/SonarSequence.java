@@ -1,4 +1,4 @@
-package robosim.env.core;
+package robosim.env.sensors;
 
 /**
  * Which sonar transducers fire in a step when the ring fires in sequence ({@code SetSonarCycle}),

@@ -1,0 +1,106 @@
+package robosim.aria;
+
+import java.util.ArrayDeque;
+import robosim.protocol.BatteryReading;
+
+/**
+ * What {@link ArRobot} knows of its battery, as ARIA's {@code ArRobot} keeps it: the latest
+ * reading, and the running average of the latest {@value #DEFAULT_AVERAGE_OF} readings (ARIA's
+ * {@code ArRunningAverage}), which starts from ARIA's 13 V before the first reading. A robot's
+ * battery is a 12 V pack, so the voltage normalised to 12 V and the real voltage are the same.
+ */
+final class BatteryGauge {
+    /** How many readings the average is of, as ARIA's default. */
+    static final int DEFAULT_AVERAGE_OF = 20;
+    /** What ARIA reads before the first reading, V. */
+    static final double BEFORE_FIRST_READING = 13;
+
+    private final Average average = new Average();
+    private final Average realAverage = new Average();
+    private double now = BEFORE_FIRST_READING;
+    private double stateOfCharge;
+    private boolean haveStateOfCharge;
+
+    /** @param b a state's battery reading; null (a robot server that does not say) changes nothing */
+    void update(BatteryReading b) {
+        if (b == null) {
+            return;
+        }
+        now = b.volts();
+        average.add(now);
+        realAverage.add(now);
+        stateOfCharge = b.stateOfCharge();
+        haveStateOfCharge |= stateOfCharge > 0; // as ARIA: a charge of 0 is a robot that does not report one
+    }
+
+    double voltage() {
+        return average.value();
+    }
+
+    double voltageNow() {
+        return now;
+    }
+
+    double realVoltage() {
+        return realAverage.value();
+    }
+
+    boolean haveStateOfCharge() {
+        return haveStateOfCharge;
+    }
+
+    double stateOfCharge() {
+        return haveStateOfCharge ? stateOfCharge : 0;
+    }
+
+    int averageOf() {
+        return average.of;
+    }
+
+    void setAverageOf(int n) {
+        average.setOf(n);
+    }
+
+    int realAverageOf() {
+        return realAverage.of;
+    }
+
+    void setRealAverageOf(int n) {
+        realAverage.setOf(n);
+    }
+
+    /** ARIA's {@code ArRunningAverage}: the mean of the latest {@code of} values. */
+    private static final class Average {
+        private final ArrayDeque<Double> values = new ArrayDeque<>();
+        private double sum;
+        private int of = DEFAULT_AVERAGE_OF;
+
+        Average() {
+            add(BEFORE_FIRST_READING);
+        }
+
+        void add(double v) {
+            values.addLast(v);
+            sum += v;
+            trim();
+        }
+
+        void setOf(int n) {
+            if (n < 1) {
+                throw new IllegalArgumentException(n + " was supplied for the readings to average: at least 1");
+            }
+            of = n;
+            trim();
+        }
+
+        private void trim() {
+            while (values.size() > of) {
+                sum -= values.removeFirst();
+            }
+        }
+
+        double value() {
+            return sum / values.size();
+        }
+    }
+}

@@ -1,0 +1,24 @@
+package robosim.env.sensors;
+
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * The sensors every simulated robot has, each made from the robot's {@link SensorSetup}: the one
+ * place a sensor is registered with the simulation. The order is the order they read in, and so the
+ * order they draw noise from the robot's stream: a new sensor goes at the end, or runs change.
+ */
+public final class SensorKinds {
+    /** Every sensor, in reading order. */
+    public static final List<Function<SensorSetup, Sensor>> ALL = List.of(
+            SonarSensor::new,
+            LaserSensor::new,
+            HeatSensor::new,
+            BumperRing::new,
+            TruePoseSensor::new,
+            CameraSensor::new,
+            BatterySensor::new);
+
+    private SensorKinds() {
+    }
+}

@@ -1,0 +1,130 @@
+package robosim.protocol;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.StringJoiner;
+
+/**
+ * The parts of a robot's state that its sensors and accessories add, by {@link StatePart}, and the
+ * one list of the parts there are. Immutable: {@link #with} makes a new one.
+ *
+ * <p>A new sensor's part is registered by adding its key to {@link #ALL}; the wire then writes it
+ * as a field of the state named after the key, and reads it back (see docs/EXTENDING.md).
+ */
+public final class StateParts {
+    /**
+     * Every part a state may carry, in the order the wire writes them. The one place a part is
+     * registered: a state cannot hold a part missing here.
+     */
+    public static final List<StatePart<?>> ALL = List.of(
+            SonarReading.PART,
+            LaserReading.PART,
+            HeatReading.PART,
+            Bumpers.PART,
+            TruePose.PART,
+            GripperState.PART,
+            CameraView.PART,
+            BatteryReading.PART);
+
+    private static final Map<String, StatePart<?>> BY_NAME = byName();
+
+    /** A state with no parts: every sensor off, no accessory. */
+    public static final StateParts NONE = new StateParts(new Object[ALL.size()]);
+
+    private final Object[] values;
+
+    private StateParts(Object[] values) {
+        this.values = values;
+    }
+
+    private static Map<String, StatePart<?>> byName() {
+        Map<String, StatePart<?>> m = new HashMap<>();
+        for (StatePart<?> p : ALL) {
+            if (m.put(p.name(), p) != null) {
+                throw new IllegalStateException("two state parts are named " + p.name());
+            }
+        }
+        return Map.copyOf(m);
+    }
+
+    /**
+     * @param name a part's field on the wire
+     * @return its key, or null when no registered part has the name
+     */
+    public static StatePart<?> named(String name) {
+        return BY_NAME.get(name);
+    }
+
+    private static int index(StatePart<?> part) {
+        for (int i = 0; i < ALL.size(); i++) {
+            if (ALL.get(i) == part) {
+                return i;
+            }
+        }
+        for (int i = 0; i < ALL.size(); i++) {
+            if (ALL.get(i).equals(part)) {
+                return i;
+            }
+        }
+        throw new IllegalArgumentException("state part " + part.name() + " is not registered in StateParts.ALL");
+    }
+
+    /**
+     * @param part a part's key
+     * @param <T>  its value's type
+     * @return the part's value, or null when these parts hold none
+     */
+    public <T> T get(StatePart<T> part) {
+        return part.type().cast(values[index(part)]);
+    }
+
+    /**
+     * @param part  a part's key
+     * @param value its value; null removes it
+     * @param <T>   its value's type
+     * @return these parts with that one set
+     * @throws IllegalArgumentException if the part is not registered in {@link #ALL}
+     */
+    public <T> StateParts with(StatePart<T> part, T value) {
+        int i = index(part);
+        if (values[i] == value) {
+            return this;
+        }
+        Object[] copy = values.clone();
+        copy[i] = value == null ? null : part.type().cast(value);
+        return new StateParts(copy);
+    }
+
+    /** @return whether no part is held */
+    public boolean isEmpty() {
+        for (Object v : values) {
+            if (v != null) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof StateParts other && Arrays.equals(values, other.values);
+    }
+
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(values);
+    }
+
+    @Override
+    public String toString() {
+        StringJoiner j = new StringJoiner(", ", "{", "}");
+        for (int i = 0; i < values.length; i++) {
+            if (values[i] != null) {
+                j.add(ALL.get(i).name() + "=" + values[i]);
+            }
+        }
+        return j.toString();
+    }
+}
