@@ -15,6 +15,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.env.net.RunReport;
+import robosim.protocol.MessageCodec;
+import robosim.protocol.Snapshot;
 import robosim.protocol.recording.RecordingReader;
 import robosim.protocol.recording.RecordingWriter;
 import robosim.viewer.draw.SnapshotPainter;
@@ -67,12 +69,9 @@ class RecordReplayTest {
             int[] drawnLive = pixels(live.resolve(file));
             assertArrayEquals(drawnLive, pixels(dir.resolve("from-viewer").resolve(file)),
                     "step " + step + " replayed from the viewer's recording");
-            // The viewer drew step 0 when it attached, before the robots had connected; the
-            // Environment records step 0 as the run starts, with every robot connected.
-            if (step > 0) {
-                assertArrayEquals(drawnLive, pixels(dir.resolve("from-env").resolve(file)),
-                        "step " + step + " replayed from the Environment's recording");
-            }
+            // the viewer attached before the robots had connected, and was sent step 0 again as the run started
+            assertArrayEquals(drawnLive, pixels(dir.resolve("from-env").resolve(file)),
+                    "step " + step + " replayed from the Environment's recording");
         }
     }
 
@@ -91,6 +90,24 @@ class RecordReplayTest {
             }
             assertEquals(STEPS + 1, snapshots);
             assertEquals("done: step limit " + STEPS + " reached", reader.endReason());
+        }
+    }
+
+    @Test
+    void aViewerAttachedBeforeTheRobotsRecordsTheSameRunAsTheEnvironment() throws Exception {
+        Path envRecording = dir.resolve("env.rsr");
+        Path viewerRecording = dir.resolve("viewer.rsr");
+        RecordedRun.run(STEPS, envRecording, List.of(RecordingWriter.create(viewerRecording, true)));
+        try (RecordingReader fromEnv = RecordingReader.open(envRecording);
+             RecordingReader fromViewer = RecordingReader.open(viewerRecording)) {
+            MessageCodec codec = new MessageCodec();
+            for (int step = 0; step <= STEPS; step++) {
+                Snapshot e = fromEnv.next();
+                Snapshot v = fromViewer.next();
+                assertEquals(step, v.step(), "one snapshot a step");
+                assertArrayEquals(codec.encode(e), codec.encode(v), "step " + step);
+            }
+            assertTrue(fromViewer.next() == null);
         }
     }
 }

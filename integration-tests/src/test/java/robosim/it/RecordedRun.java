@@ -2,11 +2,14 @@ package robosim.it;
 
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
+import robosim.protocol.Snapshot;
+import robosim.protocol.WorldDescription;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.RecordingWriter;
 import robosim.viewer.draw.RenderOptions;
@@ -18,7 +21,7 @@ import robosim.cli.Background;
 /**
  * A deterministic run for the recording tests, all in this JVM: the Environment on the small maze
  * recording every step, two wander robots as threads, and optionally a live viewer attached before
- * the first step. Every wait is bounded; every thread ends with the run.
+ * the robots connect. Every wait is bounded; every thread ends with the run.
  */
 final class RecordedRun {
     /** The drawing both the live viewer and the replays use. */
@@ -39,16 +42,31 @@ final class RecordedRun {
         ServerOptions options = ServerOptions.loopback().withMaxSteps(steps).withWaitViewers(viewer.isEmpty() ? 0 : 1);
         try (LocalEnvironment env = new LocalEnvironment(LocalEnvironment.shipped("small-maze.xml"), 1, options,
                 RecordingWriter.create(recording, true))) {
+            CompletableFuture<Void> attached = new CompletableFuture<>();
+            List<SnapshotListener> listeners = new ArrayList<>(viewer);
+            listeners.add(new SnapshotListener() {
+                @Override
+                public void world(WorldDescription world) {
+                    attached.complete(null);
+                }
+
+                @Override
+                public void snapshot(Snapshot snapshot) {
+                }
+            });
             CompletableFuture<ViewerSummary> live = viewer.isEmpty() ? CompletableFuture.completedFuture(null)
                     : Background.supply("live viewer", () -> {
                         try {
                             ViewerOptions o = ViewerOptions.of("127.0.0.1", env.viewerPort()).withName("live")
                                     .withReadTimeout(Duration.ofSeconds(60));
-                            return new ViewerClient(o, viewer).run();
+                            return new ViewerClient(o, listeners).run();
                         } catch (Exception e) {
                             throw new IllegalStateException(e);
                         }
                     });
+            if (!viewer.isEmpty()) {
+                attached.get(30, TimeUnit.SECONDS); // the viewer sees step 0 before the robots connect
+            }
             List<Thread> robots = env.wanderers();
             RunReport r = env.await();
             live.get(60, TimeUnit.SECONDS);

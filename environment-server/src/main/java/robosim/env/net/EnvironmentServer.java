@@ -173,7 +173,10 @@ public final class EnvironmentServer implements AutoCloseable {
         return absent;
     }
 
-    /** The robots are there: the run starts, and its world and step 0 go to the listeners. */
+    /**
+     * The robots are there: the run starts, and its world and step 0 go to the listeners, and step 0
+     * again to the viewers, every robot connected.
+     */
     private void startRun() {
         rules.start();
         LOG.info(() -> "all robots connected; running world " + sim().world().name() + " (seed " + sim().seed() + ")");
@@ -183,6 +186,8 @@ public final class EnvironmentServer implements AutoCloseable {
         }
         listeners.world(sim().description());
         listeners.snapshot(sim().snapshot());
+        // the viewers attached while robots were connecting saw step 0 as it was then: they see the start
+        rules.broadcastSnapshot(sim().snapshot(), codec);
     }
 
     /**

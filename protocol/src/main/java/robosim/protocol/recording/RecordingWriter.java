@@ -15,7 +15,10 @@ import robosim.protocol.WorldDescription;
 /**
  * Writes a recording (see {@link RecordingFormat}): attach it to an Environment or a viewer as a
  * {@link SnapshotListener}. Every record goes out in one write and is flushed, so the file is
- * readable up to the last step even if the process dies. Not thread-safe: one feeder at a time.
+ * readable up to the last step even if the process dies. A snapshot of step 0 is held until a later
+ * step, the end or the close, and a later snapshot of step 0 takes its place: a viewer attached
+ * while the robots connect is sent step 0 then and again as the run starts, and the recording keeps
+ * the start, the same however the connections raced. Not thread-safe: one feeder at a time.
  */
 public final class RecordingWriter implements SnapshotListener {
     private static final int[] NONE = new int[0];
@@ -27,6 +30,8 @@ public final class RecordingWriter implements SnapshotListener {
     private static final MessageCodec CODEC = new MessageCodec();
     private final RecordCodec records = new RecordCodec();
     private byte[] previousSnapshot;
+    /** The latest snapshot of step 0, not yet written; null when there is none. */
+    private Snapshot start;
     private long bytes;
     private long snapshots;
     private boolean worldWritten;
@@ -75,6 +80,7 @@ public final class RecordingWriter implements SnapshotListener {
 
     @Override
     public void world(WorldDescription world) throws IOException {
+        start = null; // a world sent again is followed by its step 0
         put(records.encode(RecordingFormat.WORLD, CODEC.encode(world), null));
         worldWritten = true;
     }
@@ -85,6 +91,24 @@ public final class RecordingWriter implements SnapshotListener {
             throw new IllegalStateException("snapshot of step " + snapshot.step() + " for " + name
                     + " before the world: a recording starts with its world");
         }
+        if (snapshot.step() == 0) {
+            start = snapshot;
+            return;
+        }
+        writeStart();
+        write(snapshot);
+    }
+
+    /** Writes the held snapshot of step 0, if there is one. */
+    private void writeStart() throws IOException {
+        if (start != null) {
+            Snapshot s = start;
+            start = null;
+            write(s);
+        }
+    }
+
+    private void write(Snapshot snapshot) throws IOException {
         byte[] message = CODEC.encode(sensors ? snapshot : withoutSensors(snapshot));
         put(records.encode(RecordingFormat.SNAPSHOT, message, previousSnapshot));
         previousSnapshot = message;
@@ -93,6 +117,7 @@ public final class RecordingWriter implements SnapshotListener {
 
     @Override
     public void end(String reason) throws IOException {
+        writeStart();
         put(records.encode(RecordingFormat.END, CODEC.encode(new Bye(reason)), null));
     }
 
@@ -140,9 +165,15 @@ public final class RecordingWriter implements SnapshotListener {
     @Override
     public void close() throws IOException {
         if (!closed) {
-            closed = true;
-            records.close();
-            out.close();
+            try {
+                if (failure == null) {
+                    writeStart();
+                }
+            } finally {
+                closed = true;
+                records.close();
+                out.close();
+            }
         }
     }
 

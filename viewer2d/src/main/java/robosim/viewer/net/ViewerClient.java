@@ -221,7 +221,9 @@ public final class ViewerClient {
                             + summary.describe());
                     return summary;
                 } else if (m instanceof Snapshot snapshot) {
-                    received++;
+                    if (received == 0 || snapshot.step() != lastStep) {
+                        received++; // step 0 comes again as the run starts: one step, one snapshot
+                    }
                     lastStep = snapshot.step();
                     tell(l -> l.snapshot(snapshot));
                 } else if (m instanceof WorldDescription reloaded) {
