@@ -15,6 +15,7 @@ public final class PngImageWriter implements ImageSink {
     private final Path directory;
     private boolean created;
     private int imagesWritten;
+    private long lastStep = -1;
 
     /** @param directory where the PNG files go; created, with its parents, if missing */
     public PngImageWriter(Path directory) {
@@ -64,7 +65,10 @@ public final class PngImageWriter implements ImageSink {
             throw new IOException("no PNG writer accepts an image of type " + image.getType()
                     + " for " + file);
         }
-        imagesWritten++;
+        if (step != lastStep) {
+            imagesWritten++; // an image of the step just written (step 0, sent again as the run starts) replaces it
+        }
+        lastStep = step;
         return file;
     }
 
@@ -73,7 +77,7 @@ public final class PngImageWriter implements ImageSink {
         return directory;
     }
 
-    /** @return how many images this writer has written */
+    /** @return how many images this writer has written, one a step: an image of the step just written replaced it */
     public synchronized int imagesWritten() {
         return imagesWritten;
     }

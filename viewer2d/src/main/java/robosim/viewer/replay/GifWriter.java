@@ -19,7 +19,9 @@ import robosim.viewer.draw.ImageSink;
 /**
  * Writes images as one animated GIF, with ImageIO's GIF writer: every frame shown for the same
  * delay, and the NETSCAPE2.0 application extension so that viewers loop it for ever. Colours are
- * reduced to the GIF's 256 by ImageIO's own palette builder, frame by frame.
+ * reduced to the GIF's 256 by ImageIO's own palette builder, frame by frame. A frame is written
+ * when the next step's comes, or at the close: a second image of the same step (step 0, sent again
+ * as the run starts) takes the first one's place.
  */
 public final class GifWriter implements ImageSink, Closeable {
     /** The shortest delay browsers honour, in hundredths of a second; shorter ones they slow down. */
@@ -31,6 +33,9 @@ public final class GifWriter implements ImageSink, Closeable {
     private final ImageWriter writer;
     private final ImageOutputStream out;
     private int images;
+    /** The latest frame, not yet written; null when there is none. */
+    private BufferedImage pending;
+    private long pendingStep;
 
     /**
      * Creates (or replaces) the file, with its parent directories.
@@ -74,6 +79,14 @@ public final class GifWriter implements ImageSink, Closeable {
      */
     @Override
     public void accept(long step, BufferedImage image) throws IOException {
+        if (pending != null && pendingStep != step) {
+            write(pending);
+        }
+        pending = image;
+        pendingStep = step;
+    }
+
+    private void write(BufferedImage image) throws IOException {
         ImageWriteParam param = writer.getDefaultWriteParam();
         IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(image), param);
         IIOMetadataNode root = (IIOMetadataNode) metadata.getAsTree(FORMAT);
@@ -106,9 +119,9 @@ public final class GifWriter implements ImageSink, Closeable {
         return node;
     }
 
-    /** @return the images written so far */
+    /** @return the frames so far, the latest included */
     public int images() {
-        return images;
+        return images + (pending != null ? 1 : 0);
     }
 
     /** @return each frame's delay, hundredths of a second */
@@ -129,6 +142,11 @@ public final class GifWriter implements ImageSink, Closeable {
     @Override
     public void close() throws IOException {
         try {
+            if (pending != null) {
+                BufferedImage last = pending;
+                pending = null;
+                write(last);
+            }
             writer.endWriteSequence();
         } finally {
             writer.dispose();

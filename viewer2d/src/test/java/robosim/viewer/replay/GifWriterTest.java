@@ -30,6 +30,25 @@ class GifWriterTest {
     }
 
     @Test
+    void aSecondImageOfAStepTakesTheFirstsPlace() throws IOException {
+        Path file = dir.resolve("start.gif");
+        try (GifWriter gif = new GifWriter(file, 100)) {
+            gif.accept(0, filled(Color.RED)); // step 0 as a viewer attached before the robots saw it
+            gif.accept(0, filled(Color.GREEN)); // step 0 again as the run started
+            gif.accept(20, filled(Color.BLUE));
+            assertEquals(2, gif.images());
+        }
+        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
+            ImageReader reader = ImageIO.getImageReadersByFormatName("gif").next();
+            reader.setInput(in);
+            assertEquals(2, reader.getNumImages(true));
+            assertEquals(new Color(0, 255, 0), new Color(reader.read(0).getRGB(20, 15)));
+            assertEquals(new Color(0, 0, 255), new Color(reader.read(1).getRGB(20, 15)));
+            reader.dispose();
+        }
+    }
+
+    @Test
     void threeImagesLoopForEverAtTheStepLength() throws IOException {
         Path file = dir.resolve("anim/run.gif");
         try (GifWriter gif = new GifWriter(file, 100)) {
