@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import robosim.comms.CommsSettings;
 import robosim.env.net.Access;
@@ -18,6 +20,9 @@ import robosim.protocol.RunSecret;
 /** The comms settings change while the Environment runs (it is waiting for its robots here). */
 @Timeout(value = 1, unit = TimeUnit.MINUTES)
 class CommsUpdateTest {
+    @TempDir
+    Path tokens;
+
     @Test
     void theCommsCommandChangesOnlyTheSettingsItNames() throws Exception {
         ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 1, false, 10_000, 3_000, 0, 4 << 20);
@@ -44,6 +49,8 @@ class CommsUpdateTest {
     void withoutTheRunSecretTheSettingsCannotBeChanged() throws Exception {
         String secret = RunSecret.create();
         ServerOptions options = ServerOptions.loopback().withMaxSteps(1).withAccess(Access.secret(secret));
+        // no secret file of an earlier run on this port number may be found: the client presents none
+        System.setProperty(RunSecret.DIR_PROPERTY, tokens.toString());
         try (LocalEnvironment h = new LocalEnvironment("empty-room.xml", options)) {
             String port = Integer.toString(h.server.viewerPort());
             StringWriter err = new StringWriter();
@@ -62,6 +69,8 @@ class CommsUpdateTest {
             } finally {
                 System.clearProperty(RunSecret.PROPERTY);
             }
+        } finally {
+            System.clearProperty(RunSecret.DIR_PROPERTY);
         }
     }
 

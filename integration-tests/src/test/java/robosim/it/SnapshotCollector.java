@@ -15,7 +15,7 @@ import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldDescription;
 import robosim.cli.Background;
 
-/** A viewer for tests: attaches and keeps the world and every snapshot until the run ends. */
+/** A viewer for tests: attaches and keeps the world and the latest snapshot of each step until the run ends. */
 final class SnapshotCollector {
     private final CompletableFuture<Void> done;
     private volatile WorldDescription world;
@@ -35,6 +35,10 @@ final class SnapshotCollector {
                         world = w;
                     } else if (m instanceof Snapshot f) {
                         synchronized (snapshots) {
+                            // step 0 comes again as the run starts: the later one is the start
+                            if (!snapshots.isEmpty() && snapshots.get(snapshots.size() - 1).step() == f.step()) {
+                                snapshots.remove(snapshots.size() - 1);
+                            }
                             snapshots.add(f);
                         }
                     }

@@ -33,6 +33,8 @@ public final class PioneerClient implements Closeable {
     private final Socket socket;
     private final OutputStream out;
     private final BlockingQueue<PioneerPacket> received = new LinkedBlockingQueue<>(QUEUE);
+    /** Queued when the connection ends, so that whoever waits for a packet wakes at once; left for the next. */
+    private final PioneerPacket ended = PioneerPacket.of(0);
     private final AtomicLong lastSentNanos = new AtomicLong(System.nanoTime());
     private final String where;
     private volatile boolean closed;
@@ -155,7 +157,12 @@ public final class PioneerClient implements Closeable {
      * @throws InterruptedException if interrupted
      */
     public PioneerPacket receive(long timeoutMs) throws InterruptedException {
-        return received.poll(timeoutMs, TimeUnit.MILLISECONDS);
+        PioneerPacket p = received.poll(timeoutMs, TimeUnit.MILLISECONDS);
+        if (p == ended) {
+            received.offer(ended);
+            return null;
+        }
+        return p;
     }
 
     /**
@@ -171,6 +178,10 @@ public final class PioneerClient implements Closeable {
             long left;
             while ((left = deadline - System.nanoTime()) > 0) {
                 PioneerPacket p = received.poll(left, TimeUnit.NANOSECONDS);
+                if (p == ended) {
+                    received.offer(ended);
+                    return null;
+                }
                 if (p != null && wanted.test(p)) {
                     return p;
                 }
@@ -260,6 +271,13 @@ public final class PioneerClient implements Closeable {
             endReason = "the connection failed: " + e.getMessage();
         } finally {
             closed = true;
+            wakeWaiters();
+        }
+    }
+
+    private void wakeWaiters() {
+        while (!received.offer(ended)) {
+            received.poll();
         }
     }
 
@@ -278,6 +296,7 @@ public final class PioneerClient implements Closeable {
     @Override
     public void close() {
         closed = true;
+        wakeWaiters();
         try {
             socket.close();
         } catch (IOException e) {

@@ -160,7 +160,7 @@ final class PioneerPort implements Closeable {
             return true;
         }
         String why = !there.isHeard() ? "it sent nothing" : there.isGivingWay()
-                ? "silent for " + PioneerSession.SILENT_MS + " ms" : null;
+                ? "silent for " + there.silenceAllowedMs() + " ms" : null;
         if (why != null) {
             there.end(why + ", and the ARIA client from " + s.getRemoteSocketAddress() + " wants the port");
         }
@@ -172,7 +172,8 @@ final class PioneerPort implements Closeable {
         try {
             s.setTcpNoDelay(true);
             PioneerSession session = new PioneerSession(s, served.name(), new RobotIdentity(served.name(),
-                    served.parameters().robotClass(), served.parameters().subclass()));
+                    served.parameters().robotClass(), served.parameters().subclass()), options.handshakeMs(),
+                    options.silentMs());
             current = session;
             session.start(this::connected);
         } catch (IOException | RuntimeException e) {

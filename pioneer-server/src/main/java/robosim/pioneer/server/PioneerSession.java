@@ -26,8 +26,9 @@ import robosim.protocol.LogLimiter;
  * written back. The client's bytes are read by a thread of the session's own, no faster than its
  * {@link InputBudget} allows; garbage, bad lengths and bad checksums are dropped with a log line (at
  * most one a second, with a count), never ending the session or the run. A client that has not finished the handshake within
- * {@value #HANDSHAKE_MS} ms is closed so that the port is free again; one that has been silent for
- * {@value #SILENT_MS} ms gives way to the next client that connects ({@link #isGivingWay()}), since an
+ * the handshake time ({@link PioneerPortOptions#handshakeMs()}) is closed so that the port is free
+ * again; one that has been silent for the silence allowed ({@link PioneerPortOptions#silentMs()})
+ * gives way to the next client that connects ({@link #isGivingWay()}), since an
  * ARIA program that has connected its robot but not yet started its cycle sends nothing at all.
  */
 final class PioneerSession {
@@ -35,10 +36,6 @@ final class PioneerSession {
     private static final LogLimiter LIMITED = new LogLimiter(LOG);
     /** The most read at once, so that the budget is kept to within a few packets. */
     private static final int READ_BYTES = 512;
-    /** How long a client may take over the SYNC handshake, ms. */
-    static final int HANDSHAKE_MS = 10_000;
-    /** How long a client may be silent before it gives its port to the next client, ms. */
-    static final int SILENT_MS = 15_000;
     private static final int CHECK_MS = 1000;
     /** The packets that may wait for a client that reads slowly. */
     static final int MAX_QUEUED = 256;
@@ -63,13 +60,20 @@ final class PioneerSession {
     private volatile Consumer<String> onEnd;
     private volatile String endReason;
     private final BlockingQueue<byte[]> outgoing = new ArrayBlockingQueue<>(MAX_QUEUED);
+    private final long handshakeMs;
+    private final long allowedSilenceMs;
 
     /**
      * @param socket   the client's connection
      * @param robot    the robot's name, for log lines
      * @param identity what SYNC2 answers
+     * @param handshakeMs how long the client may take over the handshake before it is closed
+     * @param silentMs    how long it may be silent before it gives way to the next client
      */
-    PioneerSession(Socket socket, String robot, RobotIdentity identity) throws IOException {
+    PioneerSession(Socket socket, String robot, RobotIdentity identity, long handshakeMs, long silentMs)
+            throws IOException {
+        this.handshakeMs = handshakeMs;
+        this.allowedSilenceMs = silentMs;
         this.socket = socket;
         this.out = socket.getOutputStream();
         this.client = socket.getRemoteSocketAddress().toString();
@@ -207,19 +211,24 @@ final class PioneerSession {
      * @return why the client is closed, or null while it may stay
      */
     private String late(long started) {
-        if (phase != Phase.CONNECTED && System.nanoTime() - started > HANDSHAKE_MS * 1_000_000L) {
-            return "no handshake within " + HANDSHAKE_MS + " ms";
+        if (phase != Phase.CONNECTED && System.nanoTime() - started > handshakeMs * 1_000_000L) {
+            return "no handshake within " + handshakeMs + " ms";
         }
         return null;
     }
 
     /**
-     * @return whether the client has been silent for {@value #SILENT_MS} ms, longer than a running
+     * @return whether the client has been silent for longer than it is allowed, longer than a running
      *         ARIA program ever is (it sends a PULSE every 500 ms): the port goes to the next client
      *         that connects, and this one is closed
      */
     boolean isGivingWay() {
-        return silentMs() > SILENT_MS;
+        return silentMs() > allowedSilenceMs;
+    }
+
+    /** @return how long the client may be silent before it gives way, ms */
+    long silenceAllowedMs() {
+        return allowedSilenceMs;
     }
 
     private void take(PioneerPacket p) {

@@ -75,17 +75,22 @@ class PioneerPortHandshakeTest {
         }
     }
 
+    /** The silence a client is allowed here, ms: shorter than a port's 15 s, the rule the same. */
+    private static final long SILENT_MS = 3_000;
+
     @Test
     void aClientSilentForLongKeepsItsPortUntilAnotherClientWantsIt() throws Exception {
         int env = silentEnvironment();
         // the robot waits for its welcome longer than the test lasts
         HardwareOptions patient = new HardwareOptions(120_000, HardwareOptions.DEFAULT_LOST_AFTER_MS, 5_000);
-        try (PioneerPorts ports = PioneerPorts.open(List.of(robot(100)), new PioneerPortOptions("127.0.0.1", 0, false,
-                PioneerPortOptions.DEFAULT_WATCHDOG_MS, true, patient), "127.0.0.1", env, null, code -> { });
+        PioneerPortOptions options = new PioneerPortOptions("127.0.0.1", 0, false,
+                PioneerPortOptions.DEFAULT_WATCHDOG_MS, true, patient).withPatience(
+                PioneerPortOptions.DEFAULT_HANDSHAKE_MS, SILENT_MS);
+        try (PioneerPorts ports = PioneerPorts.open(List.of(robot(100)), options, "127.0.0.1", env, null, code -> { });
              PioneerClient first = PioneerClient.connect("127.0.0.1", ports.portOf("r1"), ARIA_REPLY_MS)) {
             first.open(ARIA_REPLY_MS);
             // no PULSE from here, as an ARIA program that has connected its robot but not yet run its cycle
-            long until = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(PioneerSession.SILENT_MS + 2000);
+            long until = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(SILENT_MS + 2000);
             while (System.nanoTime() < until) {
                 assertNotNull(first.nextSip(ARIA_ODOMETRY_MS), "the silent client is still sent its robot's status");
             }
