@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.extension.ExtendWith;
 import org.junit.jupiter.api.io.TempDir;
 import picocli.CommandLine;
 import robosim.comms.CommsSettings;
@@ -19,6 +20,7 @@ import robosim.protocol.RunSecret;
 
 /** The comms settings change while the Environment runs (it is waiting for its robots here). */
 @Timeout(value = 1, unit = TimeUnit.MINUTES)
+@ExtendWith(NoSecretProperty.class) // another test's --token, given in this JVM, may have left the property set
 class CommsUpdateTest {
     @TempDir
     Path tokens;
