@@ -5,10 +5,14 @@ import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.databind.DeserializationContext;
 import com.fasterxml.jackson.databind.JavaType;
+import com.fasterxml.jackson.databind.JsonDeserializer;
+import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.SerializerProvider;
+import com.fasterxml.jackson.databind.deser.ResolvableDeserializer;
 import com.fasterxml.jackson.databind.deser.std.StdDeserializer;
 import com.fasterxml.jackson.databind.ser.std.StdSerializer;
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -57,11 +61,24 @@ public final class RobotStateJson {
         }
     }
 
-    /** Reads a state. */
-    public static final class Reader extends StdDeserializer<RobotState> {
+    /** Reads a state, with the deserializers of its lists and parts found once. */
+    public static final class Reader extends StdDeserializer<RobotState> implements ResolvableDeserializer {
+        private JsonDeserializer<Object> messagesReader;
+        private JsonDeserializer<Object> errorsReader;
+        private final List<JsonDeserializer<Object>> partReaders = new ArrayList<>();
+
         /** The deserializer Jackson makes from the state's annotation. */
         public Reader() {
             super(RobotState.class);
+        }
+
+        @Override
+        public void resolve(DeserializationContext ctxt) throws JsonMappingException {
+            messagesReader = ctxt.findRootValueDeserializer(listOf(ctxt, MessageDelivery.class));
+            errorsReader = ctxt.findRootValueDeserializer(listOf(ctxt, String.class));
+            for (StatePart<?> part : StateParts.ALL) {
+                partReaders.add(ctxt.findRootValueDeserializer(ctxt.constructType(part.type())));
+            }
         }
 
         @Override
@@ -83,7 +100,7 @@ public final class RobotStateJson {
             List<MessageDelivery> messages = List.of();
             List<String> errors = List.of();
             Boolean motorsEnabled = null;
-            StateParts parts = StateParts.NONE;
+            Object[] parts = null;
             for (String f = p.nextFieldName(); f != null; f = p.nextFieldName()) {
                 p.nextToken();
                 switch (f) {
@@ -98,30 +115,34 @@ public final class RobotStateJson {
                     case "rightVel" -> rightVel = _parseDoublePrimitive(p, ctxt);
                     case "stalled" -> stalled = _parseBooleanPrimitive(p, ctxt);
                     case "collisions" -> collisions = _parseIntPrimitive(p, ctxt);
-                    case "messages" -> messages = ctxt.readValue(p, listOf(ctxt, MessageDelivery.class));
-                    case "errors" -> errors = ctxt.readValue(p, listOf(ctxt, String.class));
+                    case "messages" -> messages = list(p, ctxt, messagesReader, MessageDelivery.class);
+                    case "errors" -> errors = list(p, ctxt, errorsReader, String.class);
                     case "motorsEnabled" -> motorsEnabled = p.currentToken() == JsonToken.VALUE_NULL ? null
                             : _parseBooleanPrimitive(p, ctxt);
                     default -> parts = part(p, ctxt, f, parts);
                 }
             }
             return new RobotState(step, timeMs, x, y, th, vel, rotVel, leftVel, rightVel, stalled, collisions,
-                    messages, errors, motorsEnabled, parts);
+                    messages, errors, motorsEnabled, parts == null ? StateParts.NONE : StateParts.ofValues(parts));
         }
 
-        private StateParts part(JsonParser p, DeserializationContext ctxt, String name, StateParts parts)
+        @SuppressWarnings("unchecked")
+        private static <T> List<T> list(JsonParser p, DeserializationContext ctxt, JsonDeserializer<Object> reader,
+                                        Class<T> element) throws IOException {
+            return p.currentToken() == JsonToken.VALUE_NULL ? List.of() : (List<T>) reader.deserialize(p, ctxt);
+        }
+
+        /** Reads a part into its place, or refuses a field that names none. */
+        private Object[] part(JsonParser p, DeserializationContext ctxt, String name, Object[] parts)
                 throws IOException {
-            StatePart<?> part = StateParts.named(name);
-            if (part == null) {
+            int i = StateParts.indexNamed(name);
+            if (i < 0) {
                 ctxt.handleUnknownProperty(p, this, RobotState.class, name);
                 return parts;
             }
-            return p.currentToken() == JsonToken.VALUE_NULL ? parts : withRead(p, ctxt, part, parts);
-        }
-
-        private static <T> StateParts withRead(JsonParser p, DeserializationContext ctxt, StatePart<T> part,
-                                               StateParts parts) throws IOException {
-            return parts.with(part, ctxt.readValue(p, part.type()));
+            Object[] out = parts == null ? new Object[StateParts.ALL.size()] : parts;
+            out[i] = p.currentToken() == JsonToken.VALUE_NULL ? null : partReaders.get(i).deserialize(p, ctxt);
+            return out;
         }
 
         private static JavaType listOf(DeserializationContext ctxt, Class<?> element) {

@@ -28,7 +28,7 @@ public final class StateParts {
             CameraView.PART,
             BatteryReading.PART);
 
-    private static final Map<String, StatePart<?>> BY_NAME = byName();
+    private static final Map<String, Integer> BY_NAME = byName();
 
     /** A state with no parts: every sensor off, no accessory. */
     public static final StateParts NONE = new StateParts(new Object[ALL.size()]);
@@ -39,11 +39,11 @@ public final class StateParts {
         this.values = values;
     }
 
-    private static Map<String, StatePart<?>> byName() {
-        Map<String, StatePart<?>> m = new HashMap<>();
-        for (StatePart<?> p : ALL) {
-            if (m.put(p.name(), p) != null) {
-                throw new IllegalStateException("two state parts are named " + p.name());
+    private static Map<String, Integer> byName() {
+        Map<String, Integer> m = new HashMap<>();
+        for (int i = 0; i < ALL.size(); i++) {
+            if (m.put(ALL.get(i).name(), i) != null) {
+                throw new IllegalStateException("two state parts are named " + ALL.get(i).name());
             }
         }
         return Map.copyOf(m);
@@ -54,7 +54,34 @@ public final class StateParts {
      * @return its key, or null when no registered part has the name
      */
     public static StatePart<?> named(String name) {
-        return BY_NAME.get(name);
+        Integer i = BY_NAME.get(name);
+        return i == null ? null : ALL.get(i);
+    }
+
+    /**
+     * @param name a part's field on the wire
+     * @return its place in {@link #ALL}, or -1 when no registered part has the name
+     */
+    static int indexNamed(String name) {
+        Integer i = BY_NAME.get(name);
+        return i == null ? -1 : i;
+    }
+
+    /**
+     * @param values each part's value by its place in {@link #ALL}, null for none, each of its part's
+     *               type; the array is the parts' own from then on
+     * @return the parts
+     */
+    static StateParts ofValues(Object[] values) {
+        if (values.length != ALL.size()) {
+            throw new IllegalArgumentException(values.length + " values for " + ALL.size() + " parts");
+        }
+        for (int i = 0; i < values.length; i++) {
+            if (values[i] != null) {
+                ALL.get(i).type().cast(values[i]);
+            }
+        }
+        return new StateParts(values);
     }
 
     private static int index(StatePart<?> part) {
