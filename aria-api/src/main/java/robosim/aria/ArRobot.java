@@ -2,6 +2,7 @@ package robosim.aria;
 
 import java.util.List;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Supplier;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
 import robosim.params.BumperParameters;
@@ -1025,6 +1026,26 @@ public class ArRobot extends AbstractRobot {
         return bumpers.numRearBumpers();
     }
 
+    /** @return what the read gives, taken under the robot's lock */
+    private <T> T underLock(Supplier<T> read) {
+        lock.lock();
+        try {
+            return read.get();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Does a change under the robot's lock. */
+    private void underLock(Runnable change) {
+        lock.lock();
+        try {
+            change.run();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /**
      * The battery voltage on ARIA's 12 V scale, averaged over the latest
      * {@link #getBatteryVoltageAverageOfNum()} readings (20), as ARIA averages its SIPs'. The
@@ -1034,32 +1055,17 @@ public class ArRobot extends AbstractRobot {
      * @return volts
      */
     public double getBatteryVoltage() {
-        lock.lock();
-        try {
-            return battery.voltage();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.voltage());
     }
 
     /** @return the latest battery reading, volts, not averaged */
     public double getBatteryVoltageNow() {
-        lock.lock();
-        try {
-            return battery.voltageNow();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.voltageNow());
     }
 
     /** @return the real battery voltage, averaged: the same as {@link #getBatteryVoltage()} for a 12 V pack */
     public double getRealBatteryVoltage() {
-        lock.lock();
-        try {
-            return battery.realVoltage();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.realVoltage());
     }
 
     /** @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()} */
@@ -1069,12 +1075,7 @@ public class ArRobot extends AbstractRobot {
 
     /** @return whether the robot reports its state of charge: once a reading above 0 has come */
     public boolean haveStateOfCharge() {
-        lock.lock();
-        try {
-            return battery.haveStateOfCharge();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.haveStateOfCharge());
     }
 
     /** @return as {@link #haveStateOfCharge()} */
@@ -1084,22 +1085,12 @@ public class ArRobot extends AbstractRobot {
 
     /** @return the charge left, percent, 0 to 100; 0 when the robot does not report it */
     public double getStateOfCharge() {
-        lock.lock();
-        try {
-            return battery.stateOfCharge();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.stateOfCharge());
     }
 
     /** @return how many readings {@link #getBatteryVoltage()} averages */
     public int getBatteryVoltageAverageOfNum() {
-        lock.lock();
-        try {
-            return battery.averageOf();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.averageOf());
     }
 
     /**
@@ -1107,22 +1098,12 @@ public class ArRobot extends AbstractRobot {
      * @throws IllegalArgumentException if less than 1
      */
     public void setBatteryVoltageAverageOfNum(int numToAverage) {
-        lock.lock();
-        try {
-            battery.setAverageOf(numToAverage);
-        } finally {
-            lock.unlock();
-        }
+        underLock(() -> battery.setAverageOf(numToAverage));
     }
 
     /** @return how many readings {@link #getRealBatteryVoltage()} averages */
     public int getRealBatteryVoltageAverageOfNum() {
-        lock.lock();
-        try {
-            return battery.realAverageOf();
-        } finally {
-            lock.unlock();
-        }
+        return underLock(() -> battery.realAverageOf());
     }
 
     /**
@@ -1130,12 +1111,7 @@ public class ArRobot extends AbstractRobot {
      * @throws IllegalArgumentException if less than 1
      */
     public void setRealBatteryVoltageAverageOfNum(int numToAverage) {
-        lock.lock();
-        try {
-            battery.setRealAverageOf(numToAverage);
-        } finally {
-            lock.unlock();
-        }
+        underLock(() -> battery.setRealAverageOf(numToAverage));
     }
 
     /**
