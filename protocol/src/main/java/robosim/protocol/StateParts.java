@@ -85,17 +85,11 @@ public final class StateParts {
     }
 
     private static int index(StatePart<?> part) {
-        for (int i = 0; i < ALL.size(); i++) {
-            if (ALL.get(i) == part) {
-                return i;
-            }
+        Integer i = BY_NAME.get(part.name());
+        if (i == null || !ALL.get(i).equals(part)) {
+            throw new IllegalArgumentException("state part " + part.name() + " is not registered in StateParts.ALL");
         }
-        for (int i = 0; i < ALL.size(); i++) {
-            if (ALL.get(i).equals(part)) {
-                return i;
-            }
-        }
-        throw new IllegalArgumentException("state part " + part.name() + " is not registered in StateParts.ALL");
+        return i;
     }
 
     /**

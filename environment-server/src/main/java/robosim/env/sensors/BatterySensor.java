@@ -32,9 +32,6 @@ final class BatterySensor implements Sensor {
     /** The current of the latest motion, A. */
     private double amps = IDLE_AMPS;
 
-    BatterySensor(SensorSetup setup) {
-    }
-
     @Override
     public void moved(Moved m) {
         if (m.dt() <= 0) {

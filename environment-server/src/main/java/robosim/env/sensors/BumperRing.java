@@ -16,9 +16,6 @@ final class BumperRing implements Sensor {
 
     private int sectors;
 
-    BumperRing(SensorSetup setup) {
-    }
-
     @Override
     public void moved(Moved m) {
         int bits = 0;

@@ -14,9 +14,6 @@ import robosim.protocol.TruePose;
 final class CameraSensor implements Sensor {
     private final RobotCamera camera = new RobotCamera();
 
-    CameraSensor(SensorSetup setup) {
-    }
-
     @Override
     public boolean configures(Command.SensorSetting setting) {
         return RobotCamera.handles(setting);

@@ -21,9 +21,6 @@ final class HeatSensor implements Sensor {
     private double maxRange;
     private HeatReading reading;
 
-    HeatSensor(SensorSetup setup) {
-    }
-
     @Override
     public boolean configures(Command.SensorSetting setting) {
         return setting instanceof Command.ConfigureHeatSensor;

@@ -11,9 +11,6 @@ import robosim.protocol.TruePose;
 final class TruePoseSensor implements Sensor {
     private boolean on;
 
-    TruePoseSensor(SensorSetup setup) {
-    }
-
     @Override
     public boolean configures(Command.SensorSetting setting) {
         return setting instanceof Command.ReportTruePose;
