@@ -356,6 +356,9 @@ public final class StepRateBench {
         }
     }
 
+    /** The system property whose whitespace-separated words go to every client JVM's command line as options. */
+    public static final String CLIENT_JVM_ARGS = "robosim.bench.clientJvmArgs";
+
     static Process clientJvm(int port, BenchRobots.Share share, BenchSensors sensors, Path robotFile, Path log,
                                      long heapEvery, long window) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -367,6 +370,11 @@ public final class StepRateBench {
             if (value != null) {
                 cmd.add(cmd.size() - 2, "-D" + property + "=" + value);
             }
+        }
+        // extra options for the clients alone, e.g. a flight recording of each: -Drobosim.bench.clientJvmArgs="..."
+        String extra = System.getProperty(CLIENT_JVM_ARGS, "").trim();
+        if (!extra.isEmpty()) {
+            cmd.addAll(cmd.size() - 2, List.of(extra.split("\\s+")));
         }
         cmd.addAll(List.of(BenchRobots.class.getName(), "127.0.0.1", Integer.toString(port), Integer.toString(share.first()),
                 Integer.toString(share.count()), robotFile.toAbsolutePath().toString(), sensors.optionName(),

@@ -1,6 +1,7 @@
 package robosim.hw;
 
 import java.util.Locale;
+import robosim.protocol.inprocess.InProcessPorts;
 
 /**
  * Chooses each robot's {@link EnvironmentLink}, as its {@link RobotRuntime}'s choices say. By
@@ -10,9 +11,14 @@ import java.util.Locale;
  * arriving in one frame and their requests leaving in one. Runs are the same either way: the
  * Environment steps each robot as it would over a connection of its own.
  *
+ * <p>An Environment of the same JVM that admits robots in-process
+ * ({@link robosim.protocol.inprocess.InProcessPorts}) is reached, by default, without TCP: every
+ * robot of the runtime on one in-process link, the same messages as objects, nothing encoded.
+ *
  * <p>The links chosen can be {@code own}, a connection of its own for every robot, or
- * {@code shared}, every robot, the first too, on the shared one. The default runtime takes the
- * choice from the system property {@value #PROPERTY}.
+ * {@code shared}, every robot, the first too, on the shared one: both over TCP, even to an
+ * Environment of the same JVM. The default runtime takes the choice from the system property
+ * {@value #PROPERTY}.
  *
  * <p>A runtime may send its robots to a Pioneer robot server's {@code host:port} instead (the default
  * runtime when the system property {@value #PIONEER_PROPERTY} names one), through a
@@ -31,7 +37,10 @@ public final class EnvironmentLinks {
 
     /** How robots reach the Environment. */
     public enum Mode {
-        /** The first robot of a runtime alone, the others sharing one connection. */
+        /**
+         * The first robot of a runtime alone, the others sharing one connection; every robot on
+         * one in-process link to an Environment of this JVM that admits robots so.
+         */
         AUTO,
         /** A connection for each robot. */
         OWN,
@@ -86,9 +95,17 @@ public final class EnvironmentLinks {
         String key = host + ":" + port;
         int robots = runtime.countRobotAt(key);
         Runnable released = () -> runtime.uncountRobotAt(key);
-        boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1;
+        boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && (robots > 1 || inProcess(host, port));
         return shared ? new LinkMember(runtime, host, port, options, released)
                 : new SocketLink(runtime, host, port, options, released);
+    }
+
+    /**
+     * @return whether an Environment of this JVM at {@code host:port} admits robots in-process:
+     *         a runtime that chooses {@link Mode#AUTO} then reaches it without TCP
+     */
+    static boolean inProcess(String host, int port) {
+        return InProcessPorts.find(host, port).isPresent();
     }
 
     /**

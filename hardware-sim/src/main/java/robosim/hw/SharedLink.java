@@ -1,7 +1,6 @@
 package robosim.hw;
 
 import java.io.IOException;
-import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -15,12 +14,9 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Supplier;
-import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.LogLimiter;
 import robosim.protocol.Bye;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
 import robosim.protocol.KeepAlive;
 import robosim.protocol.LinkHello;
 import robosim.protocol.LinkRequests;
@@ -30,7 +26,8 @@ import robosim.protocol.TimeSteps;
 import robosim.protocol.Welcome;
 
 /**
- * One connection to an Environment that many robots of a {@link RobotRuntime} share: each step one
+ * One connection to an Environment that many robots of a {@link RobotRuntime} share (over TCP, or
+ * in-process to an Environment of the same JVM: see {@link MessageLine}): each step one
  * {@link TimeSteps} frame in, read by one thread that hands each robot its state (the robots of a
  * large frame in chunks, on one thread per processor, since each robot's cycle runs as its state is
  * handed over: {@link SharedLinks#handers()}), and one
@@ -52,9 +49,7 @@ final class SharedLink {
     private final String host;
     private final int port;
     private final HardwareOptions options;
-    private final Socket socket;
-    private final FrameReader reader;
-    private final FrameWriter writer;
+    private final MessageLine line;
     private final Map<String, LinkMember> members = new ConcurrentHashMap<>();
     private final Map<String, Joining> joining = new ConcurrentHashMap<>();
     /** The open step's requests, guarded by this. */
@@ -72,30 +67,28 @@ final class SharedLink {
     }
 
     /**
-     * Connects and says the link's hello; {@link #read} is to run on a thread of its own.
+     * Says the link's hello on an open line; {@link #read} is to run on a thread of its own.
      *
      * @param owner   the runtime's links, told when this one ends
      * @param host    the Environment's host
      * @param port    its robot port
      * @param options timeouts (the first robot's serve the whole link)
      * @param secret  gives the run secret the link presents (the opening robot's)
-     * @throws IOException if it cannot connect
+     * @param line    the line to the Environment, open; closed here if the hello cannot be said
+     * @throws IOException if the hello cannot be said
      */
-    SharedLink(SharedLinks owner, String host, int port, HardwareOptions options, Supplier<String> secret)
-            throws IOException {
+    SharedLink(SharedLinks owner, String host, int port, HardwareOptions options, Supplier<String> secret,
+               MessageLine line) throws IOException {
         this.owner = owner;
         this.host = host;
         this.port = port;
         this.options = options;
-        this.socket = SocketLink.connectSocket(host, port, options);
+        this.line = line;
         try {
-            socket.setSoTimeout((int) options.lostAfterMs());
-            reader = new FrameReader(socket.getInputStream(), SocketLink.CODEC, FrameReader.DEFAULT_MAX_FRAME);
-            writer = new FrameWriter(socket.getOutputStream(), SocketLink.CODEC);
             presented = secret.get();
-            writer.write(new LinkHello("pid " + ProcessHandle.current().pid(), presented));
+            line.write(new LinkHello("pid " + ProcessHandle.current().pid(), presented));
         } catch (IOException | RuntimeException e) {
-            socket.close();
+            line.close();
             throw e;
         }
     }
@@ -137,7 +130,7 @@ final class SharedLink {
                 // the link ended just before this robot's hello: a refusal of the link is the robot's too
                 throw refusal != null ? RefusedException.ofLink(endReason, refusal, presented) : new IOException(endReason);
             }
-            writer.write(hello);
+            line.write(hello);
             return j.welcome().get(options.connectTimeoutMs(), TimeUnit.MILLISECONDS);
         } catch (TimeoutException e) {
             throw new SocketTimeoutException("the Environment at " + host + ":" + port + " did not welcome robot "
@@ -158,7 +151,7 @@ final class SharedLink {
         String reason = SocketLink.CLOSED;
         try {
             Message m;
-            while ((m = reader.read()) != null) {
+            while ((m = line.read()) != null) {
                 if (m instanceof TimeSteps ts) {
                     steps(ts);
                 } else if (m instanceof KeepAlive) {
@@ -282,7 +275,7 @@ final class SharedLink {
             return;
         }
         try {
-            writer.write(m);
+            line.write(m);
         } catch (IOException e) {
             endAll(RunEnd.Kind.LOST, "sending requests failed: " + e.getMessage());
         }
@@ -318,11 +311,7 @@ final class SharedLink {
             endReason = "the Environment at " + host + ":" + port + ": " + reason;
         }
         owner.ended(this);
-        try {
-            socket.close();
-        } catch (IOException e) {
-            LOG.log(Level.FINE, "closing", e);
-        }
+        line.close();
         for (Joining j : joining.values()) {
             // a link refused (its secret) refuses the robots that were joining on it
             j.welcome().completeExceptionally(kind == RunEnd.Kind.REFUSED ? RefusedException.ofLink(endReason, reason, presented)

@@ -3,11 +3,13 @@ package robosim.hw;
 import java.io.IOException;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
+import robosim.protocol.inprocess.InProcessPorts;
 
 /**
  * The {@link SharedLink}s of one {@link RobotRuntime}, one per Environment, and the threads that hand
@@ -42,12 +44,27 @@ final class SharedLinks {
         synchronized (connecting) {
             SharedLink link = open.get(key);
             if (link == null || link.hasEnded()) {
-                link = new SharedLink(this, host, port, options, secret);
+                link = new SharedLink(this, host, port, options, secret, line(host, port, options));
                 open.put(key, link);
                 runtime.thread("hw-link-" + runtime.name() + "-" + key, link::read).start();
             }
             return link;
         }
+    }
+
+    /**
+     * @return a line to the Environment at {@code host:port}: in-process if that Environment runs in
+     *         this JVM and admits robots so, and the runtime leaves the choice to it ({@code auto});
+     *         else over TCP
+     */
+    private MessageLine line(String host, int port, HardwareOptions options) throws IOException {
+        if (runtime.choices().links() == EnvironmentLinks.Mode.AUTO) {
+            Optional<InProcessPorts.Acceptor> local = InProcessPorts.find(host, port);
+            if (local.isPresent()) {
+                return InProcessLine.open(local.get(), options);
+            }
+        }
+        return SocketLine.connect(host, port, options);
     }
 
     /** Sends, on every open link, the requests of robots that are ready when others are late. */

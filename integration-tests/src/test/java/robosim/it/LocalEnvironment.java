@@ -47,9 +47,24 @@ final class LocalEnvironment implements AutoCloseable {
      * @param listeners follow the run from its first step, as a recorder does
      */
     LocalEnvironment(World world, long seed, ServerOptions options, SnapshotListener... listeners) throws Exception {
+        this(world, seed, options, false, listeners);
+    }
+
+    /**
+     * @param world     the world
+     * @param seed      the run's seed
+     * @param options   how the server runs
+     * @param inProcess whether robots of this JVM reach it in-process, without TCP
+     * @param listeners follow the run from its first step, as a recorder does
+     */
+    LocalEnvironment(World world, long seed, ServerOptions options, boolean inProcess, SnapshotListener... listeners)
+            throws Exception {
         sim = new Simulation(world, seed);
         server = new EnvironmentServer(sim, options);
         server.bind();
+        if (inProcess) {
+            server.admitInProcess();
+        }
         for (SnapshotListener l : listeners) {
             server.addSnapshotListener(l);
         }

@@ -9,7 +9,8 @@ import java.util.HexFormat;
 import java.util.List;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Timeout;
 import robosim.examples.goldfinder.Gold;
 import robosim.examples.scoutwander.ScoutWander;
@@ -22,7 +23,8 @@ import robosim.protocol.Snapshot;
  * RoboSim to the next: each run's snapshots, as the wire encodes them, hash to the digest recorded
  * when the test was written. A change to the code that changes a run (a sensor reading, a pose, a
  * message, a drawing, the order of anything) fails here; one that is meant to must say so by
- * recording the new digest, with the reason in its commit.
+ * recording the new digest, with the reason in its commit. Each run is made twice, its robots
+ * reaching the Environment over TCP and in-process: the digests are the same.
  */
 @Timeout(value = 4, unit = TimeUnit.MINUTES)
 class SameRunTest {
@@ -35,9 +37,9 @@ class SameRunTest {
     }
 
     /** @return the SHA-256 of every snapshot of the run, in order, as the wire encodes them */
-    private static String digest(Path world, long seed, long steps, List<String> robots, Program program)
-            throws Exception {
-        try (ThreadedRun run = new ThreadedRun(world, seed, steps)) {
+    private static String digest(Path world, long seed, long steps, List<String> robots, Program program,
+                                 boolean inProcess) throws Exception {
+        try (ThreadedRun run = new ThreadedRun(world, seed, steps, inProcess)) {
             String port = Integer.toString(run.port());
             List<Future<Object>> started = new ArrayList<>();
             for (String r : robots) {
@@ -47,6 +49,8 @@ class SameRunTest {
                 }));
             }
             assertEquals(steps, run.await().steps());
+            // the robots of this JVM share one link: in-process when the Environment admits them so
+            assertEquals(inProcess ? 1 : 0, run.env.server.inProcessLinks());
             for (Future<Object> p : started) {
                 p.get(30, TimeUnit.SECONDS);
             }
@@ -60,15 +64,17 @@ class SameRunTest {
         }
     }
 
-    @Test
-    void twoWanderersInTheSmallMaze() throws Exception {
+    @ParameterizedTest(name = "in-process {0}")
+    @ValueSource(booleans = {false, true})
+    void twoWanderersInTheSmallMaze(boolean inProcess) throws Exception {
         assertEquals("401 snapshots, 217520dab2ffe49cce806409809cfa8cf32d6cde84084a21e4dd0291579982b6",
                 digest(WORLDS.resolve("small-maze.xml"), 1, 400, List.of("r1", "r2"),
-                (name, port) -> Wander.main(new String[] {name, "127.0.0.1", port})));
+                (name, port) -> Wander.main(new String[] {name, "127.0.0.1", port}), inProcess));
     }
 
-    @Test
-    void aScoutAndTwoPioneersWandering() throws Exception {
+    @ParameterizedTest(name = "in-process {0}")
+    @ValueSource(booleans = {false, true})
+    void aScoutAndTwoPioneersWandering(boolean inProcess) throws Exception {
         assertEquals("301 snapshots, f54a08b03f5ce0f4eeee977ca3f0b225c81688d91f30622132b2d138e46cc5d9",
                 digest(WORLDS.resolve("mixed-team.xml"), 11, 300, List.of("s1", "r1", "r2"),
                 (name, port) -> {
@@ -77,11 +83,12 @@ class SameRunTest {
                     } else {
                         Wander.main(new String[] {name, "127.0.0.1", port});
                     }
-                }));
+                }, inProcess));
     }
 
-    @Test
-    void aGoldFinderTeamTalkingAndDrawingInAMaze() throws Exception {
+    @ParameterizedTest(name = "in-process {0}")
+    @ValueSource(booleans = {false, true})
+    void aGoldFinderTeamTalkingAndDrawingInAMaze(boolean inProcess) throws Exception {
         assertEquals("601 snapshots, 53d2226652edbc16397045bdfd6afdfab0dbd2411ff42318938910e31489e2b3",
                 digest(WORLDS.resolve("maze-small.xml"), 3, 600,
                 List.of("r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8"), (name, port) -> {
@@ -90,6 +97,6 @@ class SameRunTest {
                         g.search();
                         g.disconnect();
                     }
-                }));
+                }, inProcess));
     }
 }

@@ -34,8 +34,18 @@ final class ThreadedRun implements AutoCloseable {
      * @param maxSteps steps to run, 0 until every robot has left
      */
     ThreadedRun(Path world, long seed, long maxSteps) throws Exception {
+        this(world, seed, maxSteps, false);
+    }
+
+    /**
+     * @param world     the world file
+     * @param seed      the run's seed
+     * @param maxSteps  steps to run, 0 until every robot has left
+     * @param inProcess whether the robots reach the Environment in-process instead of over TCP
+     */
+    ThreadedRun(Path world, long seed, long maxSteps, boolean inProcess) throws Exception {
         env = new LocalEnvironment(WorldReader.read(world), seed, ServerOptions.loopback().withMaxSteps(maxSteps),
-                new SnapshotListener() {
+                inProcess, new SnapshotListener() {
             @Override
             public void world(WorldDescription w) {
             }

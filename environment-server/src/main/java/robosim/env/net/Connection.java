@@ -19,6 +19,7 @@ import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
+import robosim.protocol.inprocess.MessageSink;
 
 /**
  * One peer of the Environment, robot or viewer, on a non-blocking channel served by the step
@@ -30,6 +31,10 @@ import robosim.protocol.RobotHello;
  * connections, one line per kind a second, since a peer can cause them as often as it connects;
  * only the close of a robot connection that was admitted (with the run's secret) is logged whole,
  * as it comes once for each admission, which is logged too.
+ *
+ * <p>An in-process connection ({@link #inProcess}) carries the same messages as objects, to a
+ * {@link MessageSink} of a robot runtime in this JVM: what it sends is delivered at once, what it
+ * receives comes through {@link InProcessDoor}; it has no channel, no frames and nothing queued.
  */
 final class Connection {
     private static final Logger LOG = Logger.getLogger(Connection.class.getName());
@@ -40,6 +45,8 @@ final class Connection {
     private final SocketChannel channel;
     private final SelectionKey key;
     private final FrameDecoder decoder;
+    /** Where an in-process connection's messages go; null for one over TCP. */
+    private final MessageSink local;
     private final MessageCodec codec;
     private final ArrayDeque<ByteBuffer> outgoing = new ArrayDeque<>();
     private final long maxQueuedBytes;
@@ -69,6 +76,7 @@ final class Connection {
                long maxQueuedBytes, LogLimiter log) throws IOException {
         this.kind = kind;
         this.log = log;
+        this.local = null;
         this.channel = channel;
         this.codec = codec;
         this.decoder = new FrameDecoder(codec, maxFrame);
@@ -77,6 +85,35 @@ final class Connection {
         channel.configureBlocking(false);
         channel.socket().setTcpNoDelay(true);
         this.key = channel.register(selector, SelectionKey.OP_READ, this);
+    }
+
+    private Connection(MessageSink robots, MessageCodec codec, LogLimiter log) {
+        this.kind = Kind.ROBOT;
+        this.log = log;
+        this.local = robots;
+        this.channel = null;
+        this.key = null;
+        this.codec = codec;
+        this.decoder = new FrameDecoder(codec, Integer.MAX_VALUE);
+        this.maxQueuedBytes = Long.MAX_VALUE;
+        this.address = "in-process";
+    }
+
+    /**
+     * An in-process robot connection: a link of robots of this JVM (see {@link InProcessDoor}).
+     *
+     * @param robots where its messages go
+     * @param codec  decodes the rare frame sent to every connection alike (a keep-alive)
+     * @param log    the limiter of the server's connections
+     * @return the connection, not yet greeted
+     */
+    static Connection inProcess(MessageSink robots, MessageCodec codec, LogLimiter log) {
+        return new Connection(robots, codec, log);
+    }
+
+    /** @return whether this connection is in-process, not over TCP */
+    boolean isInProcess() {
+        return local != null;
     }
 
     /** @return a limiter for the log lines of one server's connections */
@@ -239,6 +276,10 @@ final class Connection {
         if (closed || closeWhenFlushed) {
             return;
         }
+        if (local != null) {
+            local.deliver(m);
+            return;
+        }
         sendFrame(FrameWriter.frame(codec, m));
     }
 
@@ -248,6 +289,15 @@ final class Connection {
      */
     void sendFrame(ByteBuffer frame) {
         if (closed || closeWhenFlushed) {
+            return;
+        }
+        if (local != null) {
+            // a frame encoded once for many connections: this one takes it as the message it holds
+            try {
+                decoder.decode(frame.duplicate()).forEach(local::deliver);
+            } catch (IOException e) {
+                throw new IllegalStateException("a frame this Environment encoded does not decode", e);
+            }
             return;
         }
         if (outgoing.isEmpty()) {
@@ -287,7 +337,7 @@ final class Connection {
     void sendAndClose(Message m) {
         send(m);
         closeWhenFlushed = true;
-        if (outgoing.isEmpty()) {
+        if (outgoing.isEmpty() || local != null) {
             shut();
         }
     }
@@ -351,6 +401,10 @@ final class Connection {
         }
         closed = true;
         outgoing.clear();
+        if (local != null) {
+            local.closed("the Environment closed the link");
+            return;
+        }
         key.cancel();
         try {
             channel.close();

@@ -47,14 +47,24 @@ final class ConnectionPump implements AutoCloseable {
         // wake for the progress when it is due, while waiting for robots or a held step
         long nextCheck = progress.wakeBy(now, doorway.check(now));
         long waitMs = Math.max(1, TimeUnit.NANOSECONDS.toMillis(Math.min(deadlineNanos, nextCheck) - now));
+        InProcessDoor local = doorway.inProcess();
         try {
-            selector.select(waitMs);
+            if (local.mayWait()) {
+                selector.select(waitMs);
+                local.awake();
+            } else {
+                selector.selectNow();
+            }
         } catch (IOException e) {
             throw new UncheckedIOException("the selector failed", e);
         }
         if (Thread.interrupted()) {
             throw new InterruptedException();
         }
+        local.drain(doorway::adopt, rules::received, c -> {
+            rules.closed(c, SessionRules.DISCONNECTED);
+            c.shut();
+        });
         Iterator<SelectionKey> it = selector.selectedKeys().iterator();
         while (it.hasNext()) {
             SelectionKey key = it.next();

@@ -45,6 +45,7 @@ final class Doorway {
     private final LogLimiter warnings = new LogLimiter(LOG, LOG_PERIOD_MS);
     /** The limiter of the log lines of every connection this doorway accepts. */
     private final LogLimiter connectionLog = Connection.newLog();
+    private final InProcessDoor inProcess;
     private Selector selector;
     private ServerSocketChannel robotChannel;
     private ServerSocketChannel viewerChannel;
@@ -57,6 +58,21 @@ final class Doorway {
         this.options = options;
         this.codec = codec;
         this.rules = rules;
+        this.inProcess = new InProcessDoor(codec, connectionLog);
+    }
+
+    /** @return the door for robots of this JVM, which the step loop drains as it serves sockets */
+    InProcessDoor inProcess() {
+        return inProcess;
+    }
+
+    /**
+     * Takes an in-process link's connection as if accepted: it must say hello like any other,
+     * but its robots present no secret, since no other user can reach it.
+     */
+    void adopt(Connection c) {
+        all.removeIf(Connection::isClosed);
+        all.add(c);
     }
 
     /**
@@ -73,6 +89,7 @@ final class Doorway {
                     + " secret, or listen on 127.0.0.1");
         }
         selector = on;
+        inProcess.bind(on);
         robotChannel = listen(new InetSocketAddress(addr, options.robotPort()), Connection.Kind.ROBOT);
         viewerChannel = listen(new InetSocketAddress(addr, options.viewerPort()), Connection.Kind.VIEWER);
     }
@@ -273,6 +290,7 @@ final class Doorway {
 
     /** Stops listening and closes every connection; any thread may call it. */
     void close() {
+        inProcess.close();
         for (Connection c : all) {
             c.shut();
         }

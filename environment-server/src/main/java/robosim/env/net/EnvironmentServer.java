@@ -16,6 +16,7 @@ import robosim.protocol.Command;
 import robosim.protocol.MessageCodec;
 import robosim.protocol.Snapshot;
 import robosim.protocol.WorldDescription;
+import robosim.protocol.inprocess.InProcessPorts;
 import robosim.protocol.recording.SnapshotListener;
 import robosim.protocol.recording.SnapshotListeners;
 
@@ -50,6 +51,7 @@ public final class EnvironmentServer implements AutoCloseable {
     private final TimeStepSender sender;
     private final ConnectionPump pump;
     private final ProgressReports progress;
+    private InProcessPorts.Registration inProcessPort;
 
     /**
      * @param sim     the simulation to drive; it reads its robots' sensors on the server's
@@ -114,6 +116,23 @@ public final class EnvironmentServer implements AutoCloseable {
      */
     public void setProgress(RunProgress listener, long intervalMs) {
         progress.follow(listener, intervalMs);
+    }
+
+    /**
+     * Lets robots of this JVM whose runtime chooses in-process links reach this Environment
+     * without TCP, at the loopback address and its robot port ({@link InProcessPorts}): the same
+     * hellos, steps and byes, as objects. Call it after {@link #bind()}; the port is unregistered
+     * when the server closes.
+     *
+     * @throws IllegalStateException if another Environment of this JVM registered the same port
+     */
+    public void admitInProcess() {
+        inProcessPort = InProcessPorts.register(robotPort(), doorway.inProcess());
+    }
+
+    /** @return how many in-process links robot runtimes of this JVM have opened so far (see {@link #admitInProcess}) */
+    public int inProcessLinks() {
+        return doorway.inProcess().opened();
     }
 
     /** @return the port robots connect to */
@@ -385,6 +404,9 @@ public final class EnvironmentServer implements AutoCloseable {
     /** Stops listening and closes every connection. */
     @Override
     public void close() {
+        if (inProcessPort != null) {
+            inProcessPort.close();
+        }
         // a simulation used after this reads on its caller's thread: a closed pool runs its loops there
         workers.close();
         listeners.close();

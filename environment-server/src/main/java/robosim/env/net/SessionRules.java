@@ -261,7 +261,8 @@ final class SessionRules implements RunSessions {
             if (m instanceof RobotHello hello) {
                 hello(c, hello);
             } else if (m instanceof LinkHello hello) {
-                String refusal = access.refusal("a shared link", hello.token());
+                // an in-process link comes from this JVM: no other user can reach it, so it needs no secret
+                String refusal = c.isInProcess() ? null : access.refusal("a shared link", hello.token());
                 if (refusal != null) {
                     refusals.refused(Refusals.linkOf(printable(hello.client())), refusal);
                     c.refuse(refusal);

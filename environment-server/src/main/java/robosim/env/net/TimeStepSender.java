@@ -66,11 +66,16 @@ final class TimeStepSender {
             }
         }
         ByteBuffer[] frames = new ByteBuffer[steps.size()];
-        // a frame of a link's robots is worth a worker's wake-up on its own
+        // a frame of a link's robots is worth a worker's wake-up on its own; an in-process link takes
+        // the message itself, never encoded
         workers.forEach(frames.length, links.isEmpty() ? PooledParallel.MIN_CHUNK : 1,
-                i -> frames[i] = FrameWriter.frame(codec, steps.get(i)));
+                i -> frames[i] = to.get(i).isInProcess() ? null : FrameWriter.frame(codec, steps.get(i)));
         for (int i = 0; i < frames.length; i++) {
-            to.get(i).sendFrame(frames[i]);
+            if (frames[i] == null) {
+                to.get(i).send(steps.get(i));
+            } else {
+                to.get(i).sendFrame(frames[i]);
+            }
         }
         sentToRobotsNanos = System.nanoTime();
     }
