@@ -180,7 +180,21 @@ public final class BenchRobots {
      */
     private static ArRobot drive(String name, String host, int port, String params, BenchSensors sensors,
                                  JvmMemory.Sampler sampler, StepWindows windows, Runnable welcomed) {
-        ArRobot robot = new ArRobot(name, host, port, params);
+        return drive(new ArRobot(name, host, port, params), sensors, sampler, windows, welcomed);
+    }
+
+    /**
+     * Runs one robot, made and given its runtime, until the Environment ends the run.
+     *
+     * @param robot   the robot, not yet connected
+     * @param sensors what it reads
+     * @param sampler samples the heap at this robot's steps, or {@code null}
+     * @param windows marks this JVM's windows at this robot's steps, or {@code null}
+     * @param welcomed run once the robot (and its laser) is connected
+     * @return the robot, disconnected
+     */
+    static ArRobot drive(ArRobot robot, BenchSensors sensors, JvmMemory.Sampler sampler, StepWindows windows,
+                         Runnable welcomed) {
         ArSick laser = null;
         if (sensors.laser()) {
             laser = new ArSick();

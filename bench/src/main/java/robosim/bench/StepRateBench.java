@@ -264,7 +264,7 @@ public final class StepRateBench {
      * @param samples the heap's sampler, or {@code null}
      * @param windows the windows, or {@code null}
      */
-    private static Thread sampler(Simulation sim, JvmMemory.Sampler samples, StepWindows windows) {
+    static Thread sampler(Simulation sim, JvmMemory.Sampler samples, StepWindows windows) {
         Thread t = new Thread(() -> {
             try {
                 while (!Thread.currentThread().isInterrupted()) {

@@ -22,6 +22,7 @@ import robosim.bench.CodecBench;
 import robosim.bench.CoreBench;
 import robosim.bench.Floors;
 import robosim.bench.GoldFinderBench;
+import robosim.bench.InProcessBench;
 import robosim.bench.LaserBench;
 import robosim.bench.MapLoadBench;
 import robosim.bench.PioneerFloodBench;
@@ -58,6 +59,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "what every robot reads each step: sonar (its 16 sonars) or laser (the sonars and a SICK laser,"
                     + " 181 beams at 1 deg, 8000 mm); repeatable; default ${DEFAULT-VALUE}")
     List<String> sensors;
+
+    @Option(names = "--links", split = ",", defaultValue = "tcp,in-process", paramLabel = "L",
+            description = "how the robots reach the Environment in the step-rate runs: tcp (client JVMs, --clients) or"
+                    + " in-process (threads of this JVM, no TCP); a comma list; default ${DEFAULT-VALUE}")
+    List<String> links;
 
     @Option(names = "--clients", defaultValue = "1", paramLabel = "K",
             description = "client JVMs to spread the robots over, 1 to " + MAX_CLIENTS + " (never more than the robots);"
@@ -190,6 +196,12 @@ final class BenchCommand implements Callable<Integer> {
             }
             sensorSets.add(named.get());
         }
+        for (String l : links) {
+            if (!l.equals("tcp") && !l.equals("in-process")) {
+                throw new ParameterException(spec.commandLine(),
+                        l + " was supplied for --links: links are tcp or in-process");
+            }
+        }
         if (clients < 1 || clients > MAX_CLIENTS) {
             throw new ParameterException(spec.commandLine(),
                     clients + " was supplied for --clients: client JVMs are 1 to " + MAX_CLIENTS);
@@ -301,14 +313,18 @@ final class BenchCommand implements Callable<Integer> {
                     if (!skipCore) {
                         StepRateBench.print(o, CoreBench.run(n, s, steps, out, p3dx, sensingThreads, window));
                     }
-                    List<StepRateBench.Result> runs = new ArrayList<>();
-                    for (int r = 0; r < repeat; r++) {
-                        StepRateBench.Result tcp = StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads, heapEvery, window);
-                        StepRateBench.print(o, tcp);
-                        runs.add(tcp);
-                    }
-                    if (repeat > 1) {
-                        StepRateBench.printMedian(o, runs);
+                    for (String link : new LinkedHashSet<>(links)) {
+                        List<StepRateBench.Result> runs = new ArrayList<>();
+                        for (int r = 0; r < repeat; r++) {
+                            StepRateBench.Result run = link.equals("tcp")
+                                    ? StepRateBench.run(n, s, clients, steps, out, p3dx, sensingThreads, heapEvery, window)
+                                    : InProcessBench.run(n, s, steps, out, p3dx, sensingThreads, window);
+                            StepRateBench.print(o, run);
+                            runs.add(run);
+                        }
+                        if (repeat > 1) {
+                            StepRateBench.printMedian(o, runs);
+                        }
                     }
                 }
             }
