@@ -2,6 +2,7 @@ package robosim.bench;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -62,9 +63,15 @@ public final class CoreBench {
                 boolean blocked = BenchRobots.blocked(i -> sonar[i], sonar.length, laser);
                 Command vel = new Command.SetVel(blocked ? 0 : 300);
                 Command rot = new Command.SetRotVel(blocked ? 30 : 0);
-                commands.put(name, s == 0 && sensors.laser()
-                        ? List.of(new Command.ConfigureLaser(true, BenchSensors.LASER_INCREMENT, BenchSensors.LASER_MAX_RANGE), vel, rot)
-                        : List.of(vel, rot));
+                // the first step's commands are the clients' first: the motors enabled (a Pioneer's are
+                // disabled when its program connects) and, with the laser, the laser switched on
+                List<Command> first = new ArrayList<>(List.of(new Command.SetMotors(true)));
+                if (sensors.laser()) {
+                    first.add(new Command.ConfigureLaser(true, BenchSensors.LASER_INCREMENT, BenchSensors.LASER_MAX_RANGE));
+                }
+                first.add(vel);
+                first.add(rot);
+                commands.put(name, s == 0 ? first : List.of(vel, rot));
             }
             sim.step(commands);
             if (windows != null) {
