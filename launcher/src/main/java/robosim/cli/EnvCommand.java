@@ -3,6 +3,7 @@ package robosim.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -101,6 +102,11 @@ final class EnvCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Option(names = "--in-process", paramLabel = "[ROBOT=]CLASS", description = "run a robot program in this JVM,"
+            + " reaching the Environment without TCP (the same run as over TCP, faster): CLASS for every robot of"
+            + " the world not given one by name, ROBOT=CLASS for one robot; repeatable")
+    List<String> inProcess = new ArrayList<>();
+
     @Option(names = "--threads", paramLabel = "N", description = OptionTexts.THREADS + "; "
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
@@ -145,6 +151,14 @@ final class EnvCommand implements Callable<Integer> {
                     access.access(), firstStepsTimeoutMs);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        InProcessPrograms programs = null;
+        if (!inProcess.isEmpty()) {
+            try {
+                programs = InProcessPrograms.of(inProcess, w.robots().stream().map(r -> r.name()).toList());
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), e.getMessage());
+            }
         }
         Simulation sim = new Simulation(w, seed);
         EnvironmentServer made;
@@ -215,6 +229,11 @@ final class EnvCommand implements Callable<Integer> {
             } else {
                 out.printf(Locale.ROOT, "Waiting for robots: %s%n", String.join(", ", sim.robotNames()));
             }
+            if (programs != null) {
+                server.admitInProcess();
+                out.printf(Locale.ROOT, "In-process: %s%n", String.join(", ", programs.robots()));
+                programs.start(server.robotPort());
+            }
             out.flush();
             RunReport report;
             // the progress line is closed (a terminal's line cleared) before the error or the report
@@ -225,6 +244,9 @@ final class EnvCommand implements Callable<Integer> {
                 return 1;
             }
             printReport(out, report, pioneerPorts == null ? robot -> Optional.empty() : pioneerPorts::unattended);
+            if (programs != null && !programs.finish(err)) {
+                return 1;
+            }
             if (recorder != null) {
                 return recording.report(out, err, "env", recorder);
             }
