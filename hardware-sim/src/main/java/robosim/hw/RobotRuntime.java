@@ -242,12 +242,17 @@ public final class RobotRuntime {
     }
 
     /**
+     * Makes a thread, not yet started, that reads a link and runs its robots' cycles: a platform
+     * daemon thread whatever the runtime's choice. It blocks in the socket's read itself, where a
+     * virtual thread would park and be woken through the JDK's poller thread and then a carrier:
+     * one hand-off more each step (measured in docs/BENCHMARKS.md, 2026-11-28, the wire's pace).
+     *
      * @param threadName the thread's name
      * @param task       what it runs
-     * @return a link thread, not started, of the kind the runtime's choices say
+     * @return the thread
      */
-    Thread thread(String threadName, Runnable task) {
-        return RobotThreads.unstarted(threadName, task, choices.virtualThreads());
+    Thread readerThread(String threadName, Runnable task) {
+        return RobotThreads.unstarted(threadName, task, false);
     }
 
     @Override

@@ -46,7 +46,7 @@ final class SharedLinks {
             if (link == null || link.hasEnded()) {
                 link = new SharedLink(this, host, port, options, secret, line(host, port, options));
                 open.put(key, link);
-                runtime.thread("hw-link-" + runtime.name() + "-" + key, link::read).start();
+                runtime.readerThread("hw-link-" + runtime.name() + "-" + key, link::read).start();
             }
             return link;
         }

@@ -133,7 +133,7 @@ final class SocketLink extends ReleasedOnClose {
                 throw refusal(host, port, first);
             }
             socket.setSoTimeout((int) options.lostAfterMs());
-            runtime.thread("hw-" + hello.name(), () -> read(receiver)).start();
+            runtime.readerThread("hw-" + hello.name(), () -> read(receiver)).start();
             return w;
         } catch (IOException | RuntimeException e) {
             close();
