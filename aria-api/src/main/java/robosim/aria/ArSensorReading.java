@@ -9,6 +9,9 @@ public final class ArSensorReading {
     private double sensorX;
     private double sensorY;
     private double sensorTh;
+    /** The cosine and sine of the sensor's heading, worked out once when it is mounted, not at every reading. */
+    private double sensorCos;
+    private double sensorSin;
     private int range;
     private double x;
     private double y;
@@ -44,6 +47,9 @@ public final class ArSensorReading {
         this.sensorX = sensorX;
         this.sensorY = sensorY;
         this.sensorTh = ArMath.fixAngle(sensorTh);
+        double th = Math.toRadians(this.sensorTh);
+        this.sensorCos = Math.cos(th);
+        this.sensorSin = Math.sin(th);
     }
 
     /**
@@ -56,12 +62,13 @@ public final class ArSensorReading {
      */
     public void newData(int range, ArPose robotPose, long counter, long timeMs) {
         this.range = range;
-        double th = Math.toRadians(sensorTh);
-        localX = sensorX + range * Math.cos(th);
-        localY = sensorY + range * Math.sin(th);
+        localX = sensorX + range * sensorCos;
+        localY = sensorY + range * sensorSin;
         double rth = Math.toRadians(robotPose.getTh());
-        x = robotPose.getX() + localX * Math.cos(rth) - localY * Math.sin(rth);
-        y = robotPose.getY() + localX * Math.sin(rth) + localY * Math.cos(rth);
+        double cos = Math.cos(rth);
+        double sin = Math.sin(rth);
+        x = robotPose.getX() + localX * cos - localY * sin;
+        y = robotPose.getY() + localX * sin + localY * cos;
         poseTaken = new ArPose(robotPose.getX(), robotPose.getY(), robotPose.getTh());
         counterTaken = counter;
         timeTaken = timeMs;

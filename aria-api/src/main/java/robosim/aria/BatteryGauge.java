@@ -1,6 +1,5 @@
 package robosim.aria;
 
-import java.util.ArrayDeque;
 import robosim.protocol.BatteryReading;
 
 /**
@@ -71,7 +70,10 @@ final class BatteryGauge {
 
     /** ARIA's {@code ArRunningAverage}: the mean of the latest {@code of} values. */
     private static final class Average {
-        private final ArrayDeque<Double> values = new ArrayDeque<>();
+        /** The readings kept, oldest first from {@link #first}, in a ring that grows when the count is raised. */
+        private double[] values = new double[DEFAULT_AVERAGE_OF + 1];
+        private int first;
+        private int size;
         private double sum;
         private int of = DEFAULT_AVERAGE_OF;
 
@@ -80,7 +82,11 @@ final class BatteryGauge {
         }
 
         void add(double v) {
-            values.addLast(v);
+            if (size == values.length) {
+                grow();
+            }
+            values[(first + size) % values.length] = v;
+            size++;
             sum += v;
             trim();
         }
@@ -93,14 +99,25 @@ final class BatteryGauge {
             trim();
         }
 
+        private void grow() {
+            double[] more = new double[values.length * 2];
+            for (int i = 0; i < size; i++) {
+                more[i] = values[(first + i) % values.length];
+            }
+            values = more;
+            first = 0;
+        }
+
         private void trim() {
-            while (values.size() > of) {
-                sum -= values.removeFirst();
+            while (size > of) {
+                sum -= values[first];
+                first = (first + 1) % values.length;
+                size--;
             }
         }
 
         double value() {
-            return sum / values.size();
+            return sum / size;
         }
     }
 }
