@@ -226,10 +226,25 @@ public final class Surroundings {
      * @return the distance, or {@code maxRange} if nothing is nearer
      */
     public double cone(double x, double y, double th, double halfAngle, double maxRange) {
-        double rx = Math.cos(th - halfAngle);
-        double ry = Math.sin(th - halfAngle);
-        double lx = Math.cos(th + halfAngle);
-        double ly = Math.sin(th + halfAngle);
+        return wedge(x, y, Math.cos(th - halfAngle), Math.sin(th - halfAngle),
+                Math.cos(th + halfAngle), Math.sin(th + halfAngle), maxRange);
+    }
+
+    /**
+     * {@link #cone} with the cone's edges given as unit vectors, so that a sensor whose cones keep
+     * their directions from one reading to the next (a robot that has not turned) need not work
+     * out their sines and cosines again.
+     *
+     * @param x        apex x, mm
+     * @param y        apex y, mm
+     * @param rx       x of the unit vector along the cone's right edge: {@code cos(th - halfAngle)}
+     * @param ry       its y: {@code sin(th - halfAngle)}
+     * @param lx       x of the unit vector along its left edge: {@code cos(th + halfAngle)}
+     * @param ly       its y: {@code sin(th + halfAngle)}
+     * @param maxRange farthest distance looked at, mm
+     * @return the distance, or {@code maxRange} if nothing is nearer
+     */
+    public double wedge(double x, double y, double rx, double ry, double lx, double ly, double maxRange) {
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
         double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
