@@ -134,8 +134,22 @@ public final class Surroundings {
      * @return the distance, or {@code maxRange} if nothing is nearer
      */
     public double ray(double x, double y, double th, double maxRange) {
-        double dx = Math.cos(th);
-        double dy = Math.sin(th);
+        return rayAlong(x, y, Math.cos(th), Math.sin(th), maxRange);
+    }
+
+    /**
+     * {@link #ray} with the direction given as a unit vector, so that a sensor whose rays keep their
+     * directions from one reading to the next (a robot that has not turned) need not work out their
+     * sines and cosines again.
+     *
+     * @param x        ray origin x, mm
+     * @param y        ray origin y, mm
+     * @param dx       x of the unit vector along the ray: {@code cos(th)}
+     * @param dy       its y: {@code sin(th)}
+     * @param maxRange farthest distance looked at, mm
+     * @return the distance, or {@code maxRange} if nothing is nearer
+     */
+    public double rayAlong(double x, double y, double dx, double dy, double maxRange) {
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
         double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
