@@ -92,6 +92,31 @@ final class Bodies {
     }
 
     /**
+     * Adds to a gathering the edges of the bodies {@link #near} would answer, body by body in the
+     * same order.
+     *
+     * @param env      an area
+     * @param ignoreId a body left out, or -1
+     * @param into     the gathering, whose id list the grid's query uses
+     */
+    void gather(Envelope env, int ignoreId, Surroundings into) {
+        if (grid == null) {
+            return;
+        }
+        CellGrid.Ids near = into.ids;
+        grid.query(env, near);
+        for (int k = 0; k < near.size(); k++) {
+            int i = near.get(k);
+            Body b = list.get(i);
+            if (i != ignoreId && !hidden.get(i) && b.envelope.intersects(env)) {
+                for (Segment s : b.segments) {
+                    into.add(s);
+                }
+            }
+        }
+    }
+
+    /**
      * Grows the grid, when a body lies outside it, to about twice the size it then needs, and lists
      * every body in it again.
      *

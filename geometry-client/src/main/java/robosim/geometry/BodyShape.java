@@ -107,8 +107,12 @@ public final class BodyShape {
     public Coordinate[] ringAt(Pose2D pose) {
         int n = xs.length;
         Coordinate[] ring = new Coordinate[n + 1];
+        // the heading's cosine and sine once for every vertex, not twice each: the vertices are
+        // where Pose2D.worldX and worldY put them, bit for bit
+        double cos = Math.cos(pose.th());
+        double sin = Math.sin(pose.th());
         for (int i = 0; i < n; i++) {
-            ring[i] = new Coordinate(pose.worldX(xs[i], ys[i]), pose.worldY(xs[i], ys[i]));
+            ring[i] = new Coordinate(pose.x() + xs[i] * cos - ys[i] * sin, pose.y() + xs[i] * sin + ys[i] * cos);
         }
         ring[n] = ring[0].copy();
         return ring;

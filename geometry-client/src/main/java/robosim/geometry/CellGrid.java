@@ -272,15 +272,27 @@ final class CellGrid {
      * @return the ids of every item whose cells overlap the envelope's, each once, ascending
      */
     int[] query(Envelope env) {
+        Ids out = new Ids();
+        query(env, out);
+        return Arrays.copyOf(out.ids, out.size);
+    }
+
+    /**
+     * {@link #query(Envelope)} into a list of the caller's, which keeps its array from one query to
+     * the next.
+     *
+     * @param env the envelope looked in
+     * @param out emptied, then given the ids, ascending
+     */
+    void query(Envelope env, Ids out) {
+        out.size = 0;
         if (env.isNull() || size == 0) {
-            return new int[0];
+            return;
         }
         int qx0 = column(env.getMinX());
         int qy0 = row(env.getMinY());
         int qx1 = column(env.getMaxX());
         int qy1 = row(env.getMaxY());
-        int[] out = new int[64];
-        int n = 0;
         for (int y = qy0; y <= qy1; y++) {
             for (int x = qx0; x <= qx1; x++) {
                 int c = y * nx + x;
@@ -294,15 +306,34 @@ final class CellGrid {
                     int r = 4 * id;
                     // an item in several of these cells is taken only in the first of them
                     if (x == Math.max(ranges[r], qx0) && y == Math.max(ranges[r + 1], qy0)) {
-                        if (n == out.length) {
-                            out = Arrays.copyOf(out, n * 2);
-                        }
-                        out[n++] = id;
+                        out.add(id);
                     }
                 }
             }
         }
-        Arrays.sort(out, 0, n);
-        return n == out.length ? out : Arrays.copyOf(out, n);
+        Arrays.sort(out.ids, 0, out.size);
+    }
+
+    /** A growing list of ids, kept by its owner from one query to the next. */
+    static final class Ids {
+        private int[] ids = new int[64];
+        private int size;
+
+        private void add(int id) {
+            if (size == ids.length) {
+                ids = Arrays.copyOf(ids, size * 2);
+            }
+            ids[size++] = id;
+        }
+
+        /** @return how many ids */
+        int size() {
+            return size;
+        }
+
+        /** @return the id at place {@code i} */
+        int get(int i) {
+            return ids[i];
+        }
     }
 }

@@ -1,7 +1,6 @@
 package robosim.geometry;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
@@ -405,13 +404,29 @@ public final class GeometryClient {
      * @return the gathered edges
      */
     public Surroundings around(double x, double y, double radius, int ignoreId) {
+        return gather(x, y, radius, ignoreId, new Surroundings());
+    }
+
+    /**
+     * {@link #around}, into surroundings of the caller's: the same edges in the same order, with
+     * the arrays they kept from their last gathering, so that a robot's sensors reading each step
+     * allocate nothing for it. The surroundings may be read concurrently with other queries, as
+     * {@link #around}'s; one thread gathers into them at a time.
+     *
+     * @param x        centre x, mm
+     * @param y        centre y, mm
+     * @param radius   mm; must cover every sensor's position plus its maximum range
+     * @param ignoreId a body left out (the sensors' own), or -1
+     * @param into     the surroundings to gather into, forgetting what they held
+     * @return {@code into}, holding the gathered edges
+     */
+    public Surroundings gather(double x, double y, double radius, int ignoreId, Surroundings into) {
         Envelope env = new Envelope(x - radius, x + radius, y - radius, y + radius);
-        List<Bodies.Body> near = bodies.near(env, ignoreId);
-        List<Segment> found = edges.near(env, 4 * near.size());
-        for (Bodies.Body b : near) {
-            Collections.addAll(found, b.segments);
-        }
-        return new Surroundings(x, y, found);
+        into.begin(x, y);
+        edges.gather(env, into);
+        bodies.gather(env, ignoreId, into);
+        into.finish();
+        return into;
     }
 
     private static Envelope coneEnvelope(double x, double y, double th, double half, double range) {

@@ -118,6 +118,26 @@ final class ObstacleEdges {
         return out;
     }
 
+    /**
+     * Adds to a gathering the edges {@link #near} would answer, in the same order.
+     *
+     * @param env  an area
+     * @param into the gathering, whose id list the grid's query uses
+     */
+    void gather(Envelope env, Surroundings into) {
+        if (grid == null) {
+            return;
+        }
+        CellGrid.Ids near = into.ids;
+        grid.query(env, near);
+        for (int k = 0; k < near.size(); k++) {
+            Segment e = edges[near.get(k)];
+            if (intersects(e, env)) {
+                into.add(e);
+            }
+        }
+    }
+
     /** Whether an edge's envelope intersects {@code env}, as {@link Envelope#intersects(Envelope)} answers. */
     private static boolean intersects(Segment s, Envelope env) {
         return !env.isNull() && !(env.getMinX() > hi(s.x1(), s.x2()) || env.getMaxX() < lo(s.x1(), s.x2())

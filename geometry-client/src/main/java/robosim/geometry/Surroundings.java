@@ -1,5 +1,6 @@
 package robosim.geometry;
 
+import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -7,6 +8,9 @@ import java.util.List;
  * ring of sonars, a laser scan) do not each search the whole world. Answers exactly as
  * {@link GeometryClient#rayRange} and {@link GeometryClient#coneRange} would for sensors within
  * the gathered radius.
+ *
+ * <p>Surroundings may be gathered into again ({@link GeometryClient#gather}), reusing their arrays;
+ * they must not be read by one thread while another gathers into them.
  */
 public final class Surroundings {
     /**
@@ -18,168 +22,106 @@ public final class Surroundings {
     /** The rounding of coordinates grows with their size: this much per mm of coordinate. */
     private static final double SKIP_MARGIN_PER_MM = 1e-9;
 
-    private final double cx;
-    private final double cy;
-    private final Segment[] segments;
-    /** Each segment's distance from the centre, ascending, in the order of {@link #segments}. */
-    private final double[] nearest;
-    /** Each segment's first point and its vector to the second. */
-    private final double[] x1;
-    private final double[] y1;
-    private final double[] ex;
-    private final double[] ey;
-    /** Each segment's midpoint, and its half length plus the margin for rounding. */
-    private final double[] mx;
-    private final double[] my;
-    private final double[] slack;
+    /** The numbers {@link #table} keeps of an edge, at these places of its row. */
+    private static final int NEAREST = 0;
+    private static final int MID_X = 1;
+    private static final int MID_Y = 2;
+    private static final int SLACK = 3;
+    private static final int X1 = 4;
+    private static final int Y1 = 5;
+    private static final int EX = 6;
+    private static final int EY = 7;
+    private static final int ROW = 8;
 
-    /** Sorts the edges by their distance from the centre, so a query can stop early. */
-    Surroundings(double cx, double cy, List<Segment> found) {
-        this.cx = cx;
-        this.cy = cy;
-        int n = found.size();
-        double[] d = new double[n];
-        for (int i = 0; i < n; i++) {
-            d[i] = found.get(i).distanceTo(cx, cy);
-        }
-        int[] order = stableOrder(d);
-        segments = new Segment[n];
-        nearest = new double[n];
-        x1 = new double[n];
-        y1 = new double[n];
-        ex = new double[n];
-        ey = new double[n];
-        mx = new double[n];
-        my = new double[n];
-        slack = new double[n];
-        for (int i = 0; i < n; i++) {
-            Segment e = found.get(order[i]);
-            segments[i] = e;
-            nearest[i] = d[order[i]];
-            x1[i] = e.x1();
-            y1[i] = e.y1();
-            ex[i] = e.x2() - e.x1();
-            ey[i] = e.y2() - e.y1();
-            mx[i] = (e.x1() + e.x2()) / 2;
-            my[i] = (e.y1() + e.y2()) / 2;
-            slack[i] = Math.sqrt(ex[i] * ex[i] + ey[i] * ey[i]) / 2 + SKIP_MARGIN
-                    + SKIP_MARGIN_PER_MM * (Math.abs(e.x1()) + Math.abs(e.y1()) + Math.abs(e.x2()) + Math.abs(e.y2()));
-        }
-    }
-
-    /** A bucket holding more keys than this sends the keys to the merge sort. */
-    private static final int MAX_BUCKET = 32;
+    private double cx;
+    private double cy;
+    private int size;
+    /** The edges as they were found, and each one's distance from the centre. */
+    private Segment[] found = new Segment[0];
+    private double[] keys = new double[0];
+    /** The edges, nearest the centre first. */
+    private Segment[] segments = new Segment[0];
+    /**
+     * A row of {@value #ROW} numbers per edge, in the order of {@link #segments}: its distance from
+     * the centre (ascending), its midpoint, its half length plus the margin for rounding, its first
+     * point and its vector to the second. In one array, in the order a query reads them, so an
+     * edge's numbers lie together in memory.
+     */
+    private double[] table = new double[0];
+    private final DistanceOrder order = new DistanceOrder();
+    /** Room for the ids a grid query answers while gathering. */
+    final CellGrid.Ids ids = new CellGrid.Ids();
 
     /**
-     * The indexes of {@code keys} in ascending order of their keys ({@link Double#compare}), equal
-     * keys in the order they came: the order a stable sort gives, without boxing. The keys (the
-     * edges' distances) are spread evenly enough for a bucket sort: a counting sort into as many
-     * buckets as keys, each bucket a slice of the range up to the largest key, then insertion by
-     * the exact key and index, which has only the few keys sharing a bucket to put in order.
+     * Empty surroundings, to gather into with {@link GeometryClient#gather}, again and again: they
+     * keep their arrays, so a robot's sensors gathering into their own each step allocate nothing
+     * once the arrays have grown to the most edges met.
      */
-    static int[] stableOrder(double[] keys) {
-        int n = keys.length;
-        double max = 0;
-        for (double k : keys) {
-            if (k > max) {
-                max = k;
-            }
-        }
-        if (n < 2 || !(max > 0 && max < Double.POSITIVE_INFINITY)) {
-            return mergeOrder(keys);
-        }
-        double scale = (n - 1) / max;
-        int[] start = new int[n + 1];
-        int[] bucket = new int[n];
-        for (int i = 0; i < n; i++) {
-            double b = keys[i] * scale;
-            int k = b >= 0 ? (int) Math.min(n - 1, b) : 0;
-            bucket[i] = k;
-            if (++start[k + 1] > MAX_BUCKET) {
-                return mergeOrder(keys);
-            }
-        }
-        for (int k = 0; k < n; k++) {
-            start[k + 1] += start[k];
-        }
-        int[] order = new int[n];
-        for (int i = 0; i < n; i++) {
-            order[start[bucket[i]]++] = i;
-        }
-        for (int p = 1; p < n; p++) {
-            int v = order[p];
-            int j = p - 1;
-            while (j >= 0 && after(keys, order[j], v)) {
-                order[j + 1] = order[j];
-                j--;
-            }
-            order[j + 1] = v;
-        }
-        return order;
+    public Surroundings() {
     }
 
-    /** @return whether index {@code a} comes after index {@code b}: a larger key, or an equal key and a larger index */
-    private static boolean after(double[] keys, int a, int b) {
-        int c = Double.compare(keys[a], keys[b]);
-        return c > 0 || c == 0 && a > b;
+    /** Gathers {@code found}: sorts the edges by their distance from the centre, so a query can stop early. */
+    Surroundings(double cx, double cy, List<Segment> found) {
+        begin(cx, cy);
+        for (Segment e : found) {
+            add(e);
+        }
+        finish();
     }
 
-    /** Runs shorter than this are sorted by insertion. */
-    private static final int INSERTION_RUN = 16;
+    /** Starts gathering again, about a new centre, forgetting the edges gathered before. */
+    void begin(double cx, double cy) {
+        this.cx = cx;
+        this.cy = cy;
+        size = 0;
+    }
 
-    /** {@link #stableOrder} by a merge sort, for any keys. */
-    static int[] mergeOrder(double[] keys) {
-        int n = keys.length;
-        int[] a = new int[n];
+    /** Adds an edge found; edges at equal distances keep the order they are added in. */
+    void add(Segment e) {
+        if (size == found.length) {
+            int room = Math.max(16, 2 * size);
+            found = Arrays.copyOf(found, room);
+            keys = Arrays.copyOf(keys, room);
+        }
+        found[size] = e;
+        keys[size] = e.distanceTo(cx, cy);
+        size++;
+    }
+
+    /** Puts the edges added in order of their distance from the centre, ready for queries. */
+    void finish() {
+        int n = size;
+        int[] byDistance = order.sort(keys, n);
+        if (segments.length < n) {
+            segments = new Segment[found.length];
+            table = new double[ROW * found.length];
+        }
         for (int i = 0; i < n; i++) {
-            a[i] = i;
+            Segment e = found[byDistance[i]];
+            segments[i] = e;
+            int t = ROW * i;
+            double ex = e.x2() - e.x1();
+            double ey = e.y2() - e.y1();
+            table[t + NEAREST] = keys[byDistance[i]];
+            table[t + MID_X] = (e.x1() + e.x2()) / 2;
+            table[t + MID_Y] = (e.y1() + e.y2()) / 2;
+            table[t + SLACK] = Math.sqrt(ex * ex + ey * ey) / 2 + SKIP_MARGIN
+                    + SKIP_MARGIN_PER_MM * (Math.abs(e.x1()) + Math.abs(e.y1()) + Math.abs(e.x2()) + Math.abs(e.y2()));
+            table[t + X1] = e.x1();
+            table[t + Y1] = e.y1();
+            table[t + EX] = ex;
+            table[t + EY] = ey;
         }
-        for (int lo = 0; lo < n; lo += INSERTION_RUN) {
-            int hi = Math.min(n, lo + INSERTION_RUN);
-            for (int i = lo + 1; i < hi; i++) {
-                int v = a[i];
-                int j = i - 1;
-                while (j >= lo && Double.compare(keys[a[j]], keys[v]) > 0) {
-                    a[j + 1] = a[j];
-                    j--;
-                }
-                a[j + 1] = v;
-            }
-        }
-        int[] b = new int[n];
-        for (int width = INSERTION_RUN; width < n; width *= 2) {
-            for (int lo = 0; lo < n; lo += 2 * width) {
-                int mid = Math.min(n, lo + width);
-                int hi = Math.min(n, lo + 2 * width);
-                int i = lo;
-                int j = mid;
-                int k = lo;
-                while (i < mid && j < hi) {
-                    // the left run wins ties: equal keys keep their order
-                    b[k++] = Double.compare(keys[a[j]], keys[a[i]]) < 0 ? a[j++] : a[i++];
-                }
-                while (i < mid) {
-                    b[k++] = a[i++];
-                }
-                while (j < hi) {
-                    b[k++] = a[j++];
-                }
-            }
-            int[] t = a;
-            a = b;
-            b = t;
-        }
-        return a;
     }
 
     /** @return the edges gathered, nearest the centre first (equal distances in the order found) */
     List<Segment> edges() {
-        return List.of(segments);
+        return List.of(Arrays.copyOf(segments, size));
     }
 
     /** @return the number of edges gathered */
     public int size() {
-        return segments.length;
+        return size;
     }
 
     /**
@@ -192,25 +134,40 @@ public final class Surroundings {
      * @return the distance, or {@code maxRange} if nothing is nearer
      */
     public double ray(double x, double y, double th, double maxRange) {
-        double dx = Math.cos(th);
-        double dy = Math.sin(th);
+        return rayAlong(x, y, Math.cos(th), Math.sin(th), maxRange);
+    }
+
+    /**
+     * {@link #ray} with the direction given as a unit vector, so that a sensor whose rays keep their
+     * directions from one reading to the next (a robot that has not turned) need not work out their
+     * sines and cosines again.
+     *
+     * @param x        ray origin x, mm
+     * @param y        ray origin y, mm
+     * @param dx       x of the unit vector along the ray: {@code cos(th)}
+     * @param dy       its y: {@code sin(th)}
+     * @param maxRange farthest distance looked at, mm
+     * @return the distance, or {@code maxRange} if nothing is nearer
+     */
+    public double rayAlong(double x, double y, double dx, double dy, double maxRange) {
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
         double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
-        for (int i = 0; i < segments.length; i++) {
+        double[] t = table;
+        for (int r = 0; r < ROW * size; r += ROW) {
             // no edge farther from the centre can be hit nearer than this
-            if (nearest[i] - offset > best) {
+            if (t[r + NEAREST] - offset > best) {
                 break;
             }
             // an edge wholly to one side of the ray's line, or behind its origin, is missed
-            double ax = mx[i] - x;
-            double ay = my[i] - y;
-            double off = slack[i] + apexSlack;
+            double ax = t[r + MID_X] - x;
+            double ay = t[r + MID_Y] - y;
+            double off = t[r + SLACK] + apexSlack;
             double side = dx * ay - dy * ax;
             if (side > off || side < -off || dx * ax + dy * ay < -off) {
                 continue;
             }
-            best = Math.min(best, Segment.rayHit(x1[i], y1[i], ex[i], ey[i], x, y, dx, dy));
+            best = Math.min(best, Segment.rayHit(t[r + X1], t[r + Y1], t[r + EX], t[r + EY], x, y, dx, dy));
         }
         return best;
     }
@@ -226,26 +183,42 @@ public final class Surroundings {
      * @return the distance, or {@code maxRange} if nothing is nearer
      */
     public double cone(double x, double y, double th, double halfAngle, double maxRange) {
-        double rx = Math.cos(th - halfAngle);
-        double ry = Math.sin(th - halfAngle);
-        double lx = Math.cos(th + halfAngle);
-        double ly = Math.sin(th + halfAngle);
+        return wedge(x, y, Math.cos(th - halfAngle), Math.sin(th - halfAngle),
+                Math.cos(th + halfAngle), Math.sin(th + halfAngle), maxRange);
+    }
+
+    /**
+     * {@link #cone} with the cone's edges given as unit vectors, so that a sensor whose cones keep
+     * their directions from one reading to the next (a robot that has not turned) need not work
+     * out their sines and cosines again.
+     *
+     * @param x        apex x, mm
+     * @param y        apex y, mm
+     * @param rx       x of the unit vector along the cone's right edge: {@code cos(th - halfAngle)}
+     * @param ry       its y: {@code sin(th - halfAngle)}
+     * @param lx       x of the unit vector along its left edge: {@code cos(th + halfAngle)}
+     * @param ly       its y: {@code sin(th + halfAngle)}
+     * @param maxRange farthest distance looked at, mm
+     * @return the distance, or {@code maxRange} if nothing is nearer
+     */
+    public double wedge(double x, double y, double rx, double ry, double lx, double ly, double maxRange) {
         double best = maxRange;
         double offset = Math.sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
         double apexSlack = SKIP_MARGIN_PER_MM * (Math.abs(x) + Math.abs(y));
-        for (int i = 0; i < segments.length; i++) {
+        double[] t = table;
+        for (int r = 0; r < ROW * size; r += ROW) {
             // no edge farther from the centre can be nearer the apex than this one
-            if (nearest[i] - offset > best) {
+            if (t[r + NEAREST] - offset > best) {
                 break;
             }
             // an edge wholly outside either side of the wedge has no part inside it
-            double ax = mx[i] - x;
-            double ay = my[i] - y;
-            double off = -(slack[i] + apexSlack);
+            double ax = t[r + MID_X] - x;
+            double ay = t[r + MID_Y] - y;
+            double off = -(t[r + SLACK] + apexSlack);
             if (rx * ay - ry * ax < off || ax * ly - ay * lx < off) {
                 continue;
             }
-            best = Math.min(best, Segment.wedgeDistance(x1[i], y1[i], ex[i], ey[i], x, y, rx, ry, lx, ly));
+            best = Math.min(best, Segment.wedgeDistance(t[r + X1], t[r + Y1], t[r + EX], t[r + EY], x, y, rx, ry, lx, ly));
         }
         return best;
     }

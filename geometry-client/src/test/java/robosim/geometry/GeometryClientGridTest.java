@@ -251,6 +251,8 @@ class GeometryClientGridTest {
     @Test
     void stableOrderIsTheOrderOfAStableSort() {
         Random rnd = new Random(3);
+        // one order sorting every key array in turn, longer and shorter, as a gathering's does
+        DistanceOrder reused = new DistanceOrder();
         for (int kind = 0; kind < 6; kind++) {
             for (int n : new int[] {0, 1, 2, 15, 16, 17, 33, 100, 257, 1000}) {
                 double[] keys = new double[n];
@@ -277,8 +279,9 @@ class GeometryClientGridTest {
                 }
                 Arrays.sort(boxed, (a, b) -> Double.compare(keys[a], keys[b]));
                 int[] expected = Arrays.stream(boxed).mapToInt(Integer::intValue).toArray();
-                assertArrayEquals(expected, Surroundings.stableOrder(keys), "kind " + kind + ", n = " + n);
-                assertArrayEquals(expected, Surroundings.mergeOrder(keys), "kind " + kind + ", n = " + n);
+                assertArrayEquals(expected, DistanceOrder.of(keys), "kind " + kind + ", n = " + n);
+                assertArrayEquals(expected, DistanceOrder.mergeOrder(keys), "kind " + kind + ", n = " + n);
+                assertArrayEquals(expected, Arrays.copyOf(reused.sort(keys, n), n), "kind " + kind + ", n = " + n + ", reused");
             }
         }
     }

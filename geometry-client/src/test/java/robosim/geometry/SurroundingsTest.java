@@ -1,6 +1,7 @@
 package robosim.geometry;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -43,6 +44,27 @@ class SurroundingsTest {
                 assertEquals(g.coneRange(ax, ay, th, half, 5000, 3), near.cone(ax, ay, th, half, 5000), 1e-9,
                         "cone " + k + "/" + s);
                 assertEquals(g.rayRange(ax, ay, th, 5000, 3), near.ray(ax, ay, th, 5000), 1e-9, "ray " + k + "/" + s);
+            }
+        }
+    }
+
+    @Test
+    void surroundingsGatheredIntoAgainAnswerAsNewOnes() {
+        Random rnd = new Random(11);
+        GeometryClient g = clutteredWorld(rnd);
+        Surroundings reused = new Surroundings();
+        for (int k = 0; k < 200; k++) {
+            double x = rnd.nextDouble() * 20000;
+            double y = rnd.nextDouble() * 20000;
+            // radii up and down, so the arrays hold more edges than the latest gathering at times
+            double radius = 500 + rnd.nextDouble() * 8000;
+            Surroundings fresh = g.around(x, y, radius, 3);
+            assertSame(reused, g.gather(x, y, radius, 3, reused));
+            assertEquals(fresh.edges(), reused.edges(), "gathering " + k);
+            for (int s = 0; s < 16; s++) {
+                double th = rnd.nextDouble() * 2 * Math.PI - Math.PI;
+                assertEquals(fresh.cone(x, y, th, 0.26, radius), reused.cone(x, y, th, 0.26, radius), 0.0);
+                assertEquals(fresh.ray(x, y, th, radius), reused.ray(x, y, th, radius), 0.0);
             }
         }
     }

@@ -19,6 +19,14 @@ final class LaserSensor implements Sensor {
     private double increment = 1;
     private double maxRange;
     private int[] scan = new int[0];
+    /**
+     * Each beam's unit vector, for the heading in {@link #aimedBits}: a robot that has not turned
+     * since its previous scan keeps them (the same heading gives the same vectors, bit for bit), so
+     * a scan's 2 sines and cosines per beam are worked out only when it turns.
+     */
+    private double[] beamX = new double[0];
+    private double[] beamY = new double[0];
+    private long aimedBits;
 
     LaserSensor(SensorSetup setup) {
         this.setup = setup;
@@ -38,6 +46,8 @@ final class LaserSensor implements Sensor {
         increment = l.increment();
         maxRange = l.maxRange();
         scan = new int[0];
+        beamX = new double[0];
+        beamY = new double[0];
     }
 
     @Override
@@ -58,12 +68,30 @@ final class LaserSensor implements Sensor {
         Pose2D p = in.pose();
         double lx = p.worldX(params.laserX(), params.laserY());
         double ly = p.worldY(params.laserX(), params.laserY());
-        double base = p.th() + Math.toRadians(params.laserTh() - 90);
-        double step = Math.toRadians(increment);
+        aim(p.th(), n);
         for (int i = 0; i < n; i++) {
-            double r = setup.noisy(near.ray(lx, ly, base + i * step, maxRange), setup.noise().laserSigma());
+            double r = setup.noisy(near.rayAlong(lx, ly, beamX[i], beamY[i], maxRange), setup.noise().laserSigma());
             scan[i] = (int) Math.round(Math.max(0, Math.min(maxRange, r)));
         }
+    }
+
+    /** Points the {@code n} beams for a heading, as {@code Surroundings.ray} would turn each beam's angle. */
+    private void aim(double th, int n) {
+        long bits = Double.doubleToRawLongBits(th);
+        if (beamX.length == n && bits == aimedBits) {
+            return;
+        }
+        if (beamX.length != n) {
+            beamX = new double[n];
+            beamY = new double[n];
+        }
+        double base = th + Math.toRadians(params.laserTh() - 90);
+        double step = Math.toRadians(increment);
+        for (int i = 0; i < n; i++) {
+            beamX[i] = Math.cos(base + i * step);
+            beamY[i] = Math.sin(base + i * step);
+        }
+        aimedBits = bits;
     }
 
     /** @return the latest scan, mm; empty while off */

@@ -2,6 +2,7 @@ package robosim.env.sensors;
 
 import java.util.ArrayList;
 import java.util.List;
+import robosim.geometry.Surroundings;
 import robosim.protocol.CameraView;
 import robosim.protocol.Command;
 import robosim.protocol.StateParts;
@@ -13,6 +14,8 @@ public final class RobotSensors {
     private final SonarSensor sonar;
     private final LaserSensor laser;
     private final CameraSensor camera;
+    /** What the range sensors gather around the robot, kept from one reading to the next. */
+    private final Surroundings near = new Surroundings();
 
     /**
      * @param setup what the robot's sensors are made from
@@ -61,8 +64,14 @@ public final class RobotSensors {
         }
     }
 
-    /** @param in what the sensors read from */
+    /**
+     * Reads every sensor. A robot's sensors are read by one thread at a time (in a step, each robot
+     * on one of the workers), so the surroundings they gather into are the robot's own.
+     *
+     * @param in what the sensors read from
+     */
     public void sense(SensorInput in) {
+        in.gatherInto(near);
         for (Sensor s : sensors) {
             s.sense(in);
         }

@@ -23,6 +23,8 @@ public final class SensorInput {
     private final double dt;
     private final Supplier<List<ColoredShape>> scene;
     private Surroundings near;
+    /** The robot's own surroundings, gathered into again each step; null to gather new ones. */
+    private Surroundings reused;
 
     /**
      * @param geometry     the world
@@ -53,10 +55,21 @@ public final class SensorInput {
         return gatherRadius > 0;
     }
 
+    /**
+     * Has {@link #near} gather into the robot's own surroundings, which keep their arrays from one
+     * step to the next, instead of into new ones.
+     *
+     * @param own the robot's surroundings, read by no other thread meanwhile
+     */
+    void gatherInto(Surroundings own) {
+        reused = own;
+    }
+
     /** @return the walls and bodies around the robot, out to its range sensors' reach */
     Surroundings near() {
         if (near == null) {
-            near = geometry.around(pose.x(), pose.y(), gatherRadius, bodyId);
+            near = reused == null ? geometry.around(pose.x(), pose.y(), gatherRadius, bodyId)
+                    : geometry.gather(pose.x(), pose.y(), gatherRadius, bodyId, reused);
         }
         return near;
     }

@@ -1,12 +1,10 @@
 package robosim.env.sensors;
 
 import java.util.Arrays;
-import robosim.geometry.Pose2D;
 import robosim.geometry.Surroundings;
 import robosim.protocol.Command;
 import robosim.protocol.RobotParameters;
 import robosim.protocol.SonarReading;
-import robosim.protocol.SonarUnit;
 import robosim.protocol.StateParts;
 import robosim.protocol.TruePose;
 
@@ -24,6 +22,7 @@ final class SonarSensor implements Sensor {
     private final SensorSetup setup;
     private final RobotParameters params;
     private final int[] ranges;
+    private final SonarCones cones;
     private boolean on = true;
     /** The ring's firing order, or null when every transducer fires every step. */
     private SonarSequence sequence;
@@ -35,6 +34,7 @@ final class SonarSensor implements Sensor {
         this.params = setup.params();
         this.ranges = new int[params.sonarUnits().size()];
         Arrays.fill(ranges, (int) params.sonarMaxRange());
+        this.cones = new SonarCones(params.sonarUnits(), HALF_ANGLE);
     }
 
     @Override
@@ -66,16 +66,17 @@ final class SonarSensor implements Sensor {
         fresh = sequence == null ? null : sequence.fire(in.timeMs());
         long firing = fresh == null ? -1L : fresh;
         Surroundings near = in.near();
-        Pose2D p = in.pose();
+        cones.aim(in.pose());
         double max = params.sonarMaxRange();
-        for (SonarUnit s : params.sonarUnits()) {
-            if ((firing >> s.index() & 1) == 0) {
+        for (int k = 0; k < cones.size(); k++) {
+            int i = cones.index(k);
+            if ((firing >> i & 1) == 0) {
                 continue;
             }
-            double r = near.cone(p.worldX(s.x(), s.y()), p.worldY(s.x(), s.y()),
-                    p.th() + Math.toRadians(s.th()), HALF_ANGLE, max);
+            double r = near.wedge(cones.apexX(k), cones.apexY(k), cones.rightX(k), cones.rightY(k),
+                    cones.leftX(k), cones.leftY(k), max);
             r = setup.noisy(r, setup.noise().sonarSigma());
-            ranges[s.index()] = (int) Math.round(Math.max(MIN_RANGE, Math.min(max, r)));
+            ranges[i] = (int) Math.round(Math.max(MIN_RANGE, Math.min(max, r)));
         }
     }
 
