@@ -15,6 +15,11 @@ import robosim.protocol.RobotParameters;
  * extension means ARIA's {@code .p} form.
  */
 public final class RobotParameterFiles {
+    /** A team built from one file reads it once: see {@link ReadOnce}. */
+    private static final ReadOnce<RobotParameters> LOADED = new ReadOnce<>(RobotParametersReader::read);
+    private static final ReadOnce<BumperParameters> BUMPERS = new ReadOnce<>(ParameterFileReader::bumpers);
+    private static final ReadOnce<Integer> SONAR_CYCLES = new ReadOnce<>(ParameterFileReader::sonarCycle);
+
     private RobotParameterFiles() {
     }
 
@@ -27,7 +32,7 @@ public final class RobotParameterFiles {
      * @throws robosim.params.ParameterFileException if the file breaks a rule
      */
     public static RobotParameters load(String file) {
-        return RobotParametersReader.read(resolve(file));
+        return LOADED.get(resolve(file));
     }
 
     /**
@@ -79,7 +84,7 @@ public final class RobotParameterFiles {
         Path path = resolve(file);
         Path name = path.getFileName();
         if (name != null && name.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".p")) {
-            return ParameterFileReader.bumpers(path);
+            return BUMPERS.get(path);
         }
         return BumperParameters.ARIA_DEFAULTS;
     }
@@ -97,7 +102,7 @@ public final class RobotParameterFiles {
         Path path = resolve(file);
         Path name = path.getFileName();
         if (name != null && name.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".p")) {
-            return ParameterFileReader.sonarCycle(path);
+            return SONAR_CYCLES.get(path);
         }
         return 0;
     }
