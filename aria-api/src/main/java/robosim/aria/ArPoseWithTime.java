@@ -36,4 +36,14 @@ record ArPoseWithTime(double x, double y, long timeMs, ArPose robotPose) {
     double distanceTo(double px, double py) {
         return Math.hypot(px - x, py - y);
     }
+
+    /** @return {@code distanceTo(px, py) < dist}, exactly, and mostly without {@code Math.hypot} ({@link Near}) */
+    boolean closerThan(double px, double py, double dist) {
+        return Near.within(px - x, py - y, dist);
+    }
+
+    /** @return {@code distanceTo(px, py) > dist}, exactly, and mostly without {@code Math.hypot} ({@link Near}) */
+    boolean fartherThan(double px, double py, double dist) {
+        return Near.beyond(px - x, py - y, dist);
+    }
 }

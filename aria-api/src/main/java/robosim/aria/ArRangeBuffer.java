@@ -58,13 +58,13 @@ final class ArRangeBuffer {
 
     /** Removes the readings strictly closer than {@code dist} to (x, y). */
     void removeWithin(double x, double y, double dist) {
-        readings.removeIf(r -> r.distanceTo(x, y) < dist);
+        readings.removeIf(r -> r.closerThan(x, y, dist));
     }
 
     /** @return whether a reading lies strictly closer than {@code dist} to (x, y) */
     boolean anyCloserThan(double x, double y, double dist) {
         for (ArPoseWithTime r : readings) {
-            if (r.distanceTo(x, y) < dist) {
+            if (r.closerThan(x, y, dist)) {
                 return true;
             }
         }
@@ -83,7 +83,7 @@ final class ArRangeBuffer {
 
     /** Removes the readings farther than {@code dist} from the robot's position. */
     void removeFartherThan(ArPose robot, double dist) {
-        readings.removeIf(r -> r.distanceTo(robot.getX(), robot.getY()) > dist);
+        readings.removeIf(r -> r.fartherThan(robot.getX(), robot.getY(), dist));
     }
 
     /** Moves every reading by a rigid motion, as ARIA's {@code ArRangeBuffer::applyTransform}. */

@@ -173,7 +173,7 @@ public class ArRangeDevice {
         ArPoseWithTime reading = new ArPoseWithTime(x, y, timeMs, pose);
         current.add(reading);
         if (cumulative.getSize() == 0
-                || maxDistToKeepCumulative > 0 && reading.distanceTo(pose.getX(), pose.getY()) > maxDistToKeepCumulative) {
+                || maxDistToKeepCumulative > 0 && reading.fartherThan(pose.getX(), pose.getY(), maxDistToKeepCumulative)) {
             return;
         }
         if (minDistBetweenCumulative > 0) {

@@ -86,7 +86,7 @@ final class LaserCumulative {
         }
         double footX = endX + t * dx;
         double footY = endY + t * dy;
-        return c.distanceTo(footX, footY) < cleanDist
-                && Math.hypot(footX - endX, footY - endY) > CLEAN_KEEP_NEAR_END;
+        return c.closerThan(footX, footY, cleanDist)
+                && Near.beyond(footX - endX, footY - endY, CLEAN_KEEP_NEAR_END);
     }
 }

@@ -107,6 +107,10 @@ final class EnvCommand implements Callable<Integer> {
             + " the world not given one by name, ROBOT=CLASS for one robot; repeatable")
     List<String> inProcess = new ArrayList<>();
 
+    @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH",
+            description = "where the --in-process programs' classes are, besides RoboSim's (directories or jars, ':'-separated)")
+    String classpath;
+
     @Option(names = "--threads", paramLabel = "N", description = OptionTexts.THREADS + "; "
             + "1 reads them on the step loop's thread; the run is the same with any number; default: the processors available")
     Integer threads;
@@ -155,7 +159,8 @@ final class EnvCommand implements Callable<Integer> {
         InProcessPrograms programs = null;
         if (!inProcess.isEmpty()) {
             try {
-                programs = InProcessPrograms.of(inProcess, w.robots().stream().map(r -> r.name()).toList());
+                programs = InProcessPrograms.of(inProcess, w.robots().stream().map(r -> r.name()).toList(),
+                        InProcessPrograms.loader(classpath));
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }

@@ -1,9 +1,13 @@
 package robosim.cli;
 
+import java.io.File;
 import java.io.PrintWriter;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
+import java.net.MalformedURLException;
+import java.net.URL;
+import java.net.URLClassLoader;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -37,17 +41,18 @@ final class InProcessPrograms {
      *
      * @param specs  the {@code --in-process} values: {@code CLASS} or {@code ROBOT=CLASS}
      * @param robots the robots the world names, in order
+     * @param loader where the programs' classes come from
      * @return the programs, one per robot
      * @throws IllegalArgumentException naming the value and the rule, if a value names no class with a
      *                                  static {@code main(String[])}, or a robot the world does not name,
      *                                  or if a robot has no program while others have
      */
-    static InProcessPrograms of(List<String> specs, List<String> robots) {
+    static InProcessPrograms of(List<String> specs, List<String> robots, ClassLoader loader) {
         Method forAll = null;
         Map<String, Method> named = new LinkedHashMap<>();
         for (String spec : specs) {
             int eq = spec.indexOf('=');
-            Method main = main(spec, eq < 0 ? spec : spec.substring(eq + 1));
+            Method main = main(spec, eq < 0 ? spec : spec.substring(eq + 1), loader);
             if (eq < 0) {
                 if (forAll != null) {
                     throw new IllegalArgumentException("'" + spec + "' was supplied for --in-process: only one CLASS may"
@@ -77,10 +82,11 @@ final class InProcessPrograms {
         return new InProcessPrograms(programs);
     }
 
-    private static Method main(String spec, String className) {
-        String rule = ": it is CLASS or ROBOT=CLASS, a class on RoboSim's classpath with a public static main(String[])";
+    private static Method main(String spec, String className, ClassLoader loader) {
+        String rule = ": it is CLASS or ROBOT=CLASS, a class with a public static main(String[]) on RoboSim's"
+                + " classpath or --classpath";
         try {
-            Method m = Class.forName(className.trim()).getMethod("main", String[].class);
+            Method m = Class.forName(className.trim(), true, loader).getMethod("main", String[].class);
             if (!Modifier.isStatic(m.getModifiers())) {
                 throw new IllegalArgumentException("'" + spec + "' was supplied for --in-process" + rule);
             }
@@ -88,6 +94,34 @@ final class InProcessPrograms {
         } catch (ClassNotFoundException | NoSuchMethodException | LinkageError e) {
             throw new IllegalArgumentException("'" + spec + "' was supplied for --in-process" + rule, e);
         }
+    }
+
+    /**
+     * @param classpath directories and jars, {@code :}-separated, or null
+     * @return a loader of RoboSim's classes and those on {@code classpath}
+     * @throws IllegalArgumentException naming the entry, if one does not exist
+     */
+    static ClassLoader loader(String classpath) {
+        ClassLoader robosim = InProcessPrograms.class.getClassLoader();
+        if (classpath == null) {
+            return robosim;
+        }
+        List<URL> urls = new ArrayList<>();
+        for (String p : classpath.split(File.pathSeparator)) {
+            if (p.isEmpty()) {
+                continue;
+            }
+            File f = new File(p);
+            if (!f.exists()) {
+                throw new IllegalArgumentException("'" + p + "' was supplied for --classpath: there is no such directory or jar");
+            }
+            try {
+                urls.add(f.toURI().toURL());
+            } catch (MalformedURLException e) {
+                throw new IllegalArgumentException("'" + p + "' was supplied for --classpath: " + e.getMessage(), e);
+            }
+        }
+        return new URLClassLoader(urls.toArray(new URL[0]), robosim);
     }
 
     /** @return the robots that have a program, in order */
@@ -113,6 +147,7 @@ final class InProcessPrograms {
                     failures.put(robot, e);
                 }
             }, "robot-program-" + robot);
+            t.setContextClassLoader(main.getDeclaringClass().getClassLoader());
             t.setDaemon(true);
             threads.add(t);
             t.start();

@@ -45,7 +45,7 @@ class EnvInProcessTest {
                 "--in-process", "robosim.NoSuchProgram", world("small-maze.xml"));
         assertEquals(2, r.exit(), r.err());
         assertEquals("robosim env: 'robosim.NoSuchProgram' was supplied for --in-process: it is CLASS or ROBOT=CLASS,"
-                + " a class on RoboSim's classpath with a public static main(String[])", r.firstLine());
+                + " a class with a public static main(String[]) on RoboSim's classpath or --classpath", r.firstLine());
         r.assertHintToHelp("robosim env");
     }
 
