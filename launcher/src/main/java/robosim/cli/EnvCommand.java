@@ -108,7 +108,7 @@ final class EnvCommand implements Callable<Integer> {
     List<String> inProcess = new ArrayList<>();
 
     @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH",
-            description = "where the --in-process programs' classes are, besides RoboSim's (directories or jars, ':'-separated)")
+            description = OptionTexts.CLASSPATH + "; for the --in-process programs")
     String classpath;
 
     @Option(names = "--threads", paramLabel = "N", description = OptionTexts.THREADS + "; "

@@ -6,6 +6,10 @@ package robosim.cli;
  * meaning across {@code robosim}'s commands (CommandLineConsistencyTest checks it).
  */
 final class OptionTexts {
+    /** {@code --classpath}: where robot programs' classes are. */
+    static final String CLASSPATH = "where the robot programs' classes are, besides RoboSim's (directories or jars,"
+            + " ':'-separated)";
+
     static final String ROBOT_PORT = "the robot port";
     static final String VIEWER_PORT = "the viewer port";
     static final String SEED = "the seed of everything random";

@@ -81,7 +81,7 @@ final class RobotCommand implements Callable<Integer> {
     SecretOption secret;
 
     @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH",
-            description = "where the program's classes are, besides RoboSim's (directories or jars, ':'-separated)")
+            description = OptionTexts.CLASSPATH)
     String classpath;
 
 
