@@ -1,10 +1,7 @@
 package robosim.cli;
 
-import java.io.File;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
-import java.net.URL;
-import java.net.URLClassLoader;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -138,21 +135,11 @@ final class RobotCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
-        ClassLoader loader = getClass().getClassLoader();
-        if (classpath != null) {
-            List<URL> urls = new ArrayList<>();
-            for (String p : classpath.split(File.pathSeparator)) {
-                if (p.isEmpty()) {
-                    continue;
-                }
-                if (!new File(p).exists()) {
-                    throw new ParameterException(spec.commandLine(),
-                            "'" + p + "' was supplied for --classpath: there is no"
-                            + " such directory or jar");
-                }
-                urls.add(new File(p).toURI().toURL());
-            }
-            loader = new URLClassLoader(urls.toArray(new URL[0]), loader);
+        ClassLoader loader;
+        try {
+            loader = InProcessPrograms.loader(classpath);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
         }
         Method main;
         try {
