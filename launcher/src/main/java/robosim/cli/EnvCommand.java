@@ -237,7 +237,7 @@ final class EnvCommand implements Callable<Integer> {
             if (programs != null) {
                 server.admitInProcess();
                 out.printf(Locale.ROOT, "In-process: %s%n", String.join(", ", programs.robots()));
-                programs.start(server.robotPort());
+                programs.start(server.robotPort(), err);
             }
             out.flush();
             RunReport report;
@@ -249,7 +249,7 @@ final class EnvCommand implements Callable<Integer> {
                 return 1;
             }
             printReport(out, report, pioneerPorts == null ? robot -> Optional.empty() : pioneerPorts::unattended);
-            if (programs != null && !programs.finish(err)) {
+            if (programs != null && !programs.finish()) {
                 return 1;
             }
             if (recorder != null) {

@@ -130,21 +130,32 @@ final class InProcessPrograms {
     }
 
     /**
-     * Starts every program, each on a thread of its own.
+     * Starts every program, each on a thread of its own. A program that throws is told at once, with
+     * its trace, while the Environment goes on (and waits for its robot, if it had not connected).
      *
      * @param port the Environment's robot port
+     * @param err  where a failure is told
      */
-    void start(int port) {
+    void start(int port, PrintWriter err) {
         for (Map.Entry<String, Method> p : programs.entrySet()) {
             String robot = p.getKey();
             Method main = p.getValue();
             Thread t = new Thread(() -> {
+                Throwable failure = null;
                 try {
                     main.invoke(null, (Object) new String[] {robot, "127.0.0.1", Integer.toString(port)});
                 } catch (InvocationTargetException e) {
-                    failures.put(robot, e.getCause());
+                    failure = e.getCause();
                 } catch (IllegalAccessException | RuntimeException e) {
-                    failures.put(robot, e);
+                    failure = e;
+                }
+                if (failure != null) {
+                    failures.put(robot, failure);
+                    synchronized (err) {
+                        err.println("robosim env: robot " + robot + "'s program failed:");
+                        ProgramTrace.print(failure, err);
+                        err.flush();
+                    }
                 }
             }, "robot-program-" + robot);
             t.setContextClassLoader(main.getDeclaringClass().getClassLoader());
@@ -155,25 +166,16 @@ final class InProcessPrograms {
     }
 
     /**
-     * Gives the programs {@link #GRACE_MS} to end once the run is over, then says which failed.
+     * Gives the programs {@link #GRACE_MS} to end once the run is over.
      *
-     * @param err where the failures go, each with its trace
-     * @return whether every program ended without throwing
+     * @return whether every program ended without throwing (a failure was told as it came)
      * @throws InterruptedException if interrupted while waiting
      */
-    boolean finish(PrintWriter err) throws InterruptedException {
+    boolean finish() throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(GRACE_MS);
         for (Thread t : threads) {
             t.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
         }
-        for (String robot : programs.keySet()) {
-            Throwable failure = failures.get(robot);
-            if (failure != null) {
-                err.println("robosim env: robot " + robot + "'s program failed:");
-                ProgramTrace.print(failure, err);
-            }
-        }
-        err.flush();
         return failures.isEmpty();
     }
 }

@@ -40,6 +40,17 @@ class EnvInProcessTest {
     }
 
     @Test
+    void aProgramThatThrowsIsToldAtOnceWithItsTraceAndTheOthersGoOn() {
+        Run r = execute("env", "--robot-port", "0", "--viewer-port", "0", "--no-token", "--quiet", "--connect-timeout", "2",
+                "--in-process", "r1=robosim.testprograms.ThrowingProgram", "--in-process", "r2=robosim.examples.wander.Wander",
+                world("small-maze.xml"));
+        assertEquals(1, r.exit(), r.err());
+        assertTrue(r.err().contains("robosim env: robot r1's program failed:\njava.lang.IllegalStateException: boom\n"), r.err());
+        assertTrue(r.err().contains("\tat robosim.testprograms.ThrowingProgram.main(ThrowingProgram.java:"), r.err());
+        assertTrue(r.err().contains("robots [r1] and 0 viewer(s) did not connect within 2 s"), r.err());
+    }
+
+    @Test
     void aClassWithoutMainIsAnOptionError() {
         Run r = execute("env", "--robot-port", "0", "--viewer-port", "0", "--no-token",
                 "--in-process", "robosim.NoSuchProgram", world("small-maze.xml"));
