@@ -30,9 +30,9 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  * ({@link #rayRange}, {@link #coneRange}, {@link #around}, {@link #lineOfSight}, {@link #bodyPose},
  * {@link #bodyPolygon}, {@link #bodyShape}) keep no scratch state, only read, and may run
  * concurrently with each other, for example one robot's sensors per thread. The motion queries
- * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep no scratch state here either, but
- * they go through JTS's prepared geometries and distance operations; the simulation calls them
- * from one thread.
+ * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep a list of ids from one grid lookup to
+ * the next, and go through JTS's prepared geometries and distance operations: they must not run
+ * concurrently with each other; the simulation calls them from one thread.
  */
 public final class GeometryClient {
     /** Largest heading change of one sweep piece; bounds the hull's error on arcs to about 0.1 mm. */
@@ -58,6 +58,11 @@ public final class GeometryClient {
     private final ObstacleIndex obstacleIndex;
     private final ObstacleEdges edges;
     private final Bodies bodies;
+    /**
+     * The ids the motion queries' grid lookups answer into, kept from one lookup to the next: a
+     * sweep makes tens of them. The motion queries run on one thread (see above).
+     */
+    private final CellGrid.Ids motionIds = new CellGrid.Ids();
 
     /**
      * @param obstacles the static walls and obstacles
@@ -203,14 +208,19 @@ public final class GeometryClient {
         double travel = Math.abs(distance) + Math.abs(rotation) * body.shape.radius();
         double from = 0;
         Pose2D fromPose = start;
+        // each pose's ring is worked out once, for the piece it ends and the one it starts; the
+        // start's is the body's own, which ringAt made from the same pose
+        Coordinate[] fromRing = body.ring;
         for (int i = 1; i <= pieces; i++) {
             double to = part * i / pieces;
             Pose2D toPose = start.advance(distance * to, rotation * to);
-            if (sweptHits(body.shape, fromPose, toPose, id)) {
+            Coordinate[] toRing = body.shape.ringAt(toPose);
+            if (sweptHits(fromRing, toRing, id)) {
                 return contact(body.shape, id, start, distance, rotation, from, to, travel);
             }
             from = to;
             fromPose = toPose;
+            fromRing = toRing;
         }
         return new SweepResult(1, part < 1 ? start.advance(distance, rotation) : fromPose, false);
     }
@@ -236,22 +246,25 @@ public final class GeometryClient {
     private SweepResult contact(BodyShape shape, int id, Pose2D start, double distance, double rotation,
                                 double free, double blocked, double travel) {
         Pose2D freePose = start.advance(distance * free, rotation * free);
+        Coordinate[] freeRing = shape.ringAt(freePose);
         while ((blocked - free) * travel > CONTACT_TOLERANCE) {
             double mid = (free + blocked) / 2;
             Pose2D midPose = start.advance(distance * mid, rotation * mid);
-            if (sweptHits(shape, freePose, midPose, id)) {
+            Coordinate[] midRing = shape.ringAt(midPose);
+            if (sweptHits(freeRing, midRing, id)) {
                 blocked = mid;
             } else {
                 free = mid;
                 freePose = midPose;
+                freeRing = midRing;
             }
         }
         return new SweepResult(free, freePose, true);
     }
 
-    /** Whether the hull of a body at two poses touches an obstacle or another body. */
-    private boolean sweptHits(BodyShape shape, Pose2D a, Pose2D b, int ignoreId) {
-        return hits(Rings.hull(shape.ringAt(a), shape.ringAt(b)), ignoreId);
+    /** Whether the hull of a body at two poses, given by its rings there, touches an obstacle or another body. */
+    private boolean sweptHits(Coordinate[] a, Coordinate[] b, int ignoreId) {
+        return hits(Rings.hull(a, b), ignoreId);
     }
 
     /** Whether the area a simple closed ring encloses touches an obstacle or another body. */
@@ -260,17 +273,19 @@ public final class GeometryClient {
         for (Coordinate c : ring) {
             env.expandToInclude(c);
         }
-        int[] obstacles = obstacleIndex.query(env);
-        if (obstacles.length > 0) {
+        CellGrid.Ids near = motionIds;
+        obstacleIndex.query(env, near);
+        if (near.size() > 0) {
             Polygon g = factory.createPolygon(ring);
-            for (int o : obstacles) {
-                if (obstacleIndex.prepared(o).intersects(g)) {
+            for (int k = 0; k < near.size(); k++) {
+                if (obstacleIndex.prepared(near.get(k)).intersects(g)) {
                     return true;
                 }
             }
         }
-        for (Bodies.Body other : bodies.near(env, ignoreId)) {
-            if (Rings.intersect(ring, other.ring)) {
+        bodies.near(env, ignoreId, near);
+        for (int k = 0; k < near.size(); k++) {
+            if (Rings.intersect(ring, bodies.get(near.get(k)).ring)) {
                 return true;
             }
         }
@@ -346,11 +361,14 @@ public final class GeometryClient {
         Envelope env = new Envelope(body.envelope);
         env.expandBy(tolerance);
         List<Double> out = new ArrayList<>();
-        for (int o : obstacleIndex.query(env)) {
-            addContact(body, obstacleIndex.polygon(o), tolerance, out);
+        CellGrid.Ids near = motionIds;
+        obstacleIndex.query(env, near);
+        for (int k = 0; k < near.size(); k++) {
+            addContact(body, obstacleIndex.polygon(near.get(k)), tolerance, out);
         }
-        for (Bodies.Body other : bodies.near(env, id)) {
-            addContact(body, other.polygon, tolerance, out);
+        bodies.near(env, id, near);
+        for (int k = 0; k < near.size(); k++) {
+            addContact(body, bodies.get(near.get(k)).polygon, tolerance, out);
         }
         return out;
     }
