@@ -185,7 +185,8 @@ public final class GeometryClient {
      * @return true if it touches or overlaps something
      */
     public boolean overlaps(BodyShape shape, Pose2D pose, int ignoreId) {
-        return hits(shape.ringAt(pose), ignoreId);
+        Coordinate[] ring = shape.ringAt(pose);
+        return hits(ring, null, ignoreId);
     }
 
     /**
@@ -206,6 +207,7 @@ public final class GeometryClient {
         double part = Math.abs(rotation) > FULL_TURN ? FULL_TURN / Math.abs(rotation) : 1;
         int pieces = pieces(distance * part, rotation * part);
         double travel = Math.abs(distance) + Math.abs(rotation) * body.shape.radius();
+        Arc arc = new Arc(body.shape, start, distance, rotation);
         double from = 0;
         Pose2D fromPose = start;
         // each pose's ring is worked out once, for the piece it ends and the one it starts; the
@@ -213,14 +215,13 @@ public final class GeometryClient {
         Coordinate[] fromRing = body.ring;
         for (int i = 1; i <= pieces; i++) {
             double to = part * i / pieces;
-            Pose2D toPose = start.advance(distance * to, rotation * to);
-            Coordinate[] toRing = body.shape.ringAt(toPose);
-            if (sweptHits(fromRing, toRing, id)) {
-                return contact(body.shape, id, start, distance, rotation, from, to, travel);
+            Arc.Place place = arc.at(to);
+            if (hits(fromRing, place.ring(), id)) {
+                return contact(arc, id, from, to, travel);
             }
             from = to;
-            fromPose = toPose;
-            fromRing = toRing;
+            fromPose = place.pose();
+            fromRing = place.ring();
         }
         return new SweepResult(1, part < 1 ? start.advance(distance, rotation) : fromPose, false);
     }
@@ -243,39 +244,44 @@ public final class GeometryClient {
         return (int) Math.min(MAX_PIECES, Math.max(1, wanted));
     }
 
-    private SweepResult contact(BodyShape shape, int id, Pose2D start, double distance, double rotation,
-                                double free, double blocked, double travel) {
-        Pose2D freePose = start.advance(distance * free, rotation * free);
-        Coordinate[] freeRing = shape.ringAt(freePose);
+    private SweepResult contact(Arc arc, int id, double free, double blocked, double travel) {
+        Arc.Place freePlace = arc.at(free);
         while ((blocked - free) * travel > CONTACT_TOLERANCE) {
             double mid = (free + blocked) / 2;
-            Pose2D midPose = start.advance(distance * mid, rotation * mid);
-            Coordinate[] midRing = shape.ringAt(midPose);
-            if (sweptHits(freeRing, midRing, id)) {
+            Arc.Place midPlace = arc.at(mid);
+            if (hits(freePlace.ring(), midPlace.ring(), id)) {
                 blocked = mid;
             } else {
                 free = mid;
-                freePose = midPose;
-                freeRing = midRing;
+                freePlace = midPlace;
             }
         }
-        return new SweepResult(free, freePose, true);
+        return new SweepResult(free, freePlace.pose(), true);
     }
 
-    /** Whether the hull of a body at two poses, given by its rings there, touches an obstacle or another body. */
-    private boolean sweptHits(Coordinate[] a, Coordinate[] b, int ignoreId) {
-        return hits(Rings.hull(a, b), ignoreId);
-    }
-
-    /** Whether the area a simple closed ring encloses touches an obstacle or another body. */
-    private boolean hits(Coordinate[] ring, int ignoreId) {
+    /**
+     * Whether the area a simple closed ring encloses, or the convex hull of two, touches an obstacle
+     * or another body. The hull is made only when something lies near it: its envelope is the two
+     * rings' (the points farthest left, right, down and up are corners of the hull), so what is
+     * looked up is what the hull's envelope finds.
+     *
+     * @param a        a closed ring
+     * @param b        another, whose hull with {@code a} is meant, or null for {@code a} alone
+     * @param ignoreId a body to leave out, or -1
+     */
+    private boolean hits(Coordinate[] a, Coordinate[] b, int ignoreId) {
         Envelope env = new Envelope();
-        for (Coordinate c : ring) {
+        for (Coordinate c : a) {
             env.expandToInclude(c);
         }
+        for (int i = 0; b != null && i < b.length; i++) {
+            env.expandToInclude(b[i]);
+        }
+        Coordinate[] ring = null;
         CellGrid.Ids near = motionIds;
         obstacleIndex.query(env, near);
         if (near.size() > 0) {
+            ring = b == null ? a : Rings.hull(a, b);
             Polygon g = factory.createPolygon(ring);
             for (int k = 0; k < near.size(); k++) {
                 if (obstacleIndex.prepared(near.get(k)).intersects(g)) {
@@ -284,6 +290,9 @@ public final class GeometryClient {
             }
         }
         bodies.near(env, ignoreId, near);
+        if (near.size() > 0 && ring == null) {
+            ring = b == null ? a : Rings.hull(a, b);
+        }
         for (int k = 0; k < near.size(); k++) {
             if (Rings.intersect(ring, bodies.get(near.get(k)).ring)) {
                 return true;
