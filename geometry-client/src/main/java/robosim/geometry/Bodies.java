@@ -92,6 +92,30 @@ final class Bodies {
     }
 
     /**
+     * {@link #near}, as ids into a list of the caller's, which keeps its array from one query to the
+     * next.
+     *
+     * @param env      an area
+     * @param ignoreId a body left out, or -1
+     * @param out      emptied, then given the ids of the bodies whose envelope intersects the area, ascending
+     */
+    void near(Envelope env, int ignoreId, CellGrid.Ids out) {
+        out.clear();
+        if (grid == null) {
+            return;
+        }
+        grid.query(env, out);
+        int n = 0;
+        for (int k = 0; k < out.size(); k++) {
+            int i = out.get(k);
+            if (i != ignoreId && !hidden.get(i) && list.get(i).envelope.intersects(env)) {
+                out.set(n++, i);
+            }
+        }
+        out.truncate(n);
+    }
+
+    /**
      * Adds to a gathering the edges of the bodies {@link #near} would answer, body by body in the
      * same order.
      *

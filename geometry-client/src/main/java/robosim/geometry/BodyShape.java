@@ -105,14 +105,26 @@ public final class BodyShape {
      * @return the body's vertices in the world, counter-clockwise, ring closed (first repeated last)
      */
     public Coordinate[] ringAt(Pose2D pose) {
-        int n = xs.length;
-        Coordinate[] ring = new Coordinate[n + 1];
         // the heading's cosine and sine once for every vertex, not twice each: the vertices are
         // where Pose2D.worldX and worldY put them, bit for bit
-        double cos = Math.cos(pose.th());
-        double sin = Math.sin(pose.th());
+        return ringAt(pose.x(), pose.y(), Math.cos(pose.th()), Math.sin(pose.th()));
+    }
+
+    /**
+     * {@link #ringAt(Pose2D)} with the heading's cosine and sine already worked out, as a sweep has
+     * them ({@link Arc}).
+     *
+     * @param x   mm
+     * @param y   mm
+     * @param cos the cosine of the heading
+     * @param sin the sine of the heading
+     * @return the body's vertices in the world, counter-clockwise, ring closed
+     */
+    Coordinate[] ringAt(double x, double y, double cos, double sin) {
+        int n = xs.length;
+        Coordinate[] ring = new Coordinate[n + 1];
         for (int i = 0; i < n; i++) {
-            ring[i] = new Coordinate(pose.x() + xs[i] * cos - ys[i] * sin, pose.y() + xs[i] * sin + ys[i] * cos);
+            ring[i] = new Coordinate(x + xs[i] * cos - ys[i] * sin, y + xs[i] * sin + ys[i] * cos);
         }
         ring[n] = ring[0].copy();
         return ring;

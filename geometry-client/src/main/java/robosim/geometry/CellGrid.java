@@ -1,6 +1,7 @@
 package robosim.geometry;
 
 import java.util.Arrays;
+import java.util.Objects;
 import org.locationtech.jts.geom.Envelope;
 
 /**
@@ -319,11 +320,29 @@ final class CellGrid {
         private int[] ids = new int[64];
         private int size;
 
-        private void add(int id) {
+        void add(int id) {
             if (size == ids.length) {
                 ids = Arrays.copyOf(ids, size * 2);
             }
             ids[size++] = id;
+        }
+
+        /** Forgets every id. */
+        void clear() {
+            size = 0;
+        }
+
+        /**
+         * Keeps the first {@code n} ids, as a filter that wrote the ids it keeps over the list
+         * with {@link #set} leaves them.
+         */
+        void truncate(int n) {
+            size = Math.min(size, n);
+        }
+
+        /** Puts {@code id} at place {@code i}, below {@link #size}. */
+        void set(int i, int id) {
+            ids[Objects.checkIndex(i, size)] = id;
         }
 
         /** @return how many ids */

@@ -30,9 +30,9 @@ import org.locationtech.jts.operation.distance.DistanceOp;
  * ({@link #rayRange}, {@link #coneRange}, {@link #around}, {@link #lineOfSight}, {@link #bodyPose},
  * {@link #bodyPolygon}, {@link #bodyShape}) keep no scratch state, only read, and may run
  * concurrently with each other, for example one robot's sensors per thread. The motion queries
- * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep no scratch state here either, but
- * they go through JTS's prepared geometries and distance operations; the simulation calls them
- * from one thread.
+ * ({@link #overlaps}, {@link #sweep}, {@link #contacts}) keep a list of ids from one grid lookup to
+ * the next, and go through JTS's prepared geometries and distance operations: they must not run
+ * concurrently with each other; the simulation calls them from one thread.
  */
 public final class GeometryClient {
     /** Largest heading change of one sweep piece; bounds the hull's error on arcs to about 0.1 mm. */
@@ -58,6 +58,11 @@ public final class GeometryClient {
     private final ObstacleIndex obstacleIndex;
     private final ObstacleEdges edges;
     private final Bodies bodies;
+    /**
+     * The ids the motion queries' grid lookups answer into, kept from one lookup to the next: a
+     * sweep makes tens of them. The motion queries run on one thread (see above).
+     */
+    private final CellGrid.Ids motionIds = new CellGrid.Ids();
 
     /**
      * @param obstacles the static walls and obstacles
@@ -180,7 +185,8 @@ public final class GeometryClient {
      * @return true if it touches or overlaps something
      */
     public boolean overlaps(BodyShape shape, Pose2D pose, int ignoreId) {
-        return hits(shape.ringAt(pose), ignoreId);
+        Coordinate[] ring = shape.ringAt(pose);
+        return hits(ring, null, ignoreId);
     }
 
     /**
@@ -201,16 +207,21 @@ public final class GeometryClient {
         double part = Math.abs(rotation) > FULL_TURN ? FULL_TURN / Math.abs(rotation) : 1;
         int pieces = pieces(distance * part, rotation * part);
         double travel = Math.abs(distance) + Math.abs(rotation) * body.shape.radius();
+        Arc arc = new Arc(body.shape, start, distance, rotation);
         double from = 0;
         Pose2D fromPose = start;
+        // each pose's ring is worked out once, for the piece it ends and the one it starts; the
+        // start's is the body's own, which ringAt made from the same pose
+        Coordinate[] fromRing = body.ring;
         for (int i = 1; i <= pieces; i++) {
             double to = part * i / pieces;
-            Pose2D toPose = start.advance(distance * to, rotation * to);
-            if (sweptHits(body.shape, fromPose, toPose, id)) {
-                return contact(body.shape, id, start, distance, rotation, from, to, travel);
+            Arc.Place place = arc.at(to);
+            if (hits(fromRing, place.ring(), id)) {
+                return contact(arc, id, from, to, travel);
             }
             from = to;
-            fromPose = toPose;
+            fromPose = place.pose();
+            fromRing = place.ring();
         }
         return new SweepResult(1, part < 1 ? start.advance(distance, rotation) : fromPose, false);
     }
@@ -233,44 +244,57 @@ public final class GeometryClient {
         return (int) Math.min(MAX_PIECES, Math.max(1, wanted));
     }
 
-    private SweepResult contact(BodyShape shape, int id, Pose2D start, double distance, double rotation,
-                                double free, double blocked, double travel) {
-        Pose2D freePose = start.advance(distance * free, rotation * free);
+    private SweepResult contact(Arc arc, int id, double free, double blocked, double travel) {
+        Arc.Place freePlace = arc.at(free);
         while ((blocked - free) * travel > CONTACT_TOLERANCE) {
             double mid = (free + blocked) / 2;
-            Pose2D midPose = start.advance(distance * mid, rotation * mid);
-            if (sweptHits(shape, freePose, midPose, id)) {
+            Arc.Place midPlace = arc.at(mid);
+            if (hits(freePlace.ring(), midPlace.ring(), id)) {
                 blocked = mid;
             } else {
                 free = mid;
-                freePose = midPose;
+                freePlace = midPlace;
             }
         }
-        return new SweepResult(free, freePose, true);
+        return new SweepResult(free, freePlace.pose(), true);
     }
 
-    /** Whether the hull of a body at two poses touches an obstacle or another body. */
-    private boolean sweptHits(BodyShape shape, Pose2D a, Pose2D b, int ignoreId) {
-        return hits(Rings.hull(shape.ringAt(a), shape.ringAt(b)), ignoreId);
-    }
-
-    /** Whether the area a simple closed ring encloses touches an obstacle or another body. */
-    private boolean hits(Coordinate[] ring, int ignoreId) {
+    /**
+     * Whether the area a simple closed ring encloses, or the convex hull of two, touches an obstacle
+     * or another body. The hull is made only when something lies near it: its envelope is the two
+     * rings' (the points farthest left, right, down and up are corners of the hull), so what is
+     * looked up is what the hull's envelope finds.
+     *
+     * @param a        a closed ring
+     * @param b        another, whose hull with {@code a} is meant, or null for {@code a} alone
+     * @param ignoreId a body to leave out, or -1
+     */
+    private boolean hits(Coordinate[] a, Coordinate[] b, int ignoreId) {
         Envelope env = new Envelope();
-        for (Coordinate c : ring) {
+        for (Coordinate c : a) {
             env.expandToInclude(c);
         }
-        int[] obstacles = obstacleIndex.query(env);
-        if (obstacles.length > 0) {
+        for (int i = 0; b != null && i < b.length; i++) {
+            env.expandToInclude(b[i]);
+        }
+        Coordinate[] ring = null;
+        CellGrid.Ids near = motionIds;
+        obstacleIndex.query(env, near);
+        if (near.size() > 0) {
+            ring = b == null ? a : Rings.hull(a, b);
             Polygon g = factory.createPolygon(ring);
-            for (int o : obstacles) {
-                if (obstacleIndex.prepared(o).intersects(g)) {
+            for (int k = 0; k < near.size(); k++) {
+                if (obstacleIndex.prepared(near.get(k)).intersects(g)) {
                     return true;
                 }
             }
         }
-        for (Bodies.Body other : bodies.near(env, ignoreId)) {
-            if (Rings.intersect(ring, other.ring)) {
+        bodies.near(env, ignoreId, near);
+        if (near.size() > 0 && ring == null) {
+            ring = b == null ? a : Rings.hull(a, b);
+        }
+        for (int k = 0; k < near.size(); k++) {
+            if (Rings.intersect(ring, bodies.get(near.get(k)).ring)) {
                 return true;
             }
         }
@@ -346,11 +370,14 @@ public final class GeometryClient {
         Envelope env = new Envelope(body.envelope);
         env.expandBy(tolerance);
         List<Double> out = new ArrayList<>();
-        for (int o : obstacleIndex.query(env)) {
-            addContact(body, obstacleIndex.polygon(o), tolerance, out);
+        CellGrid.Ids near = motionIds;
+        obstacleIndex.query(env, near);
+        for (int k = 0; k < near.size(); k++) {
+            addContact(body, obstacleIndex.polygon(near.get(k)), tolerance, out);
         }
-        for (Bodies.Body other : bodies.near(env, id)) {
-            addContact(body, other.polygon, tolerance, out);
+        bodies.near(env, id, near);
+        for (int k = 0; k < near.size(); k++) {
+            addContact(body, bodies.get(near.get(k)).polygon, tolerance, out);
         }
         return out;
     }

@@ -110,6 +110,36 @@ final class ObstacleIndex {
     }
 
     /**
+     * {@link #query(Envelope)} into a list of the caller's, which keeps its array from one query to
+     * the next: what the motion queries use, several times a step for every moving robot.
+     *
+     * @param env an area
+     * @param out emptied, then given the numbers of the obstacles whose envelope intersects it, in
+     *            the STRtree's order
+     */
+    void query(Envelope env, CellGrid.Ids out) {
+        out.clear();
+        if (tree != null) {
+            for (Object o : tree.query(env)) {
+                out.add((Integer) o);
+            }
+            return;
+        }
+        if (grid == null) {
+            return;
+        }
+        grid.query(env, out);
+        int n = 0;
+        for (int k = 0; k < out.size(); k++) {
+            int i = out.get(k);
+            if (polygons[i].getEnvelopeInternal().intersects(env)) {
+                out.set(n++, i);
+            }
+        }
+        out.truncate(n);
+    }
+
+    /**
      * @param i an obstacle's number
      * @return its polygon
      */

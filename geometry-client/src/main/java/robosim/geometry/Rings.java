@@ -1,7 +1,6 @@
 package robosim.geometry;
 
 import java.util.Arrays;
-import java.util.Comparator;
 import org.locationtech.jts.algorithm.Orientation;
 import org.locationtech.jts.algorithm.RayCrossingCounter;
 import org.locationtech.jts.geom.Coordinate;
@@ -16,9 +15,6 @@ import org.locationtech.jts.geom.Location;
  * whose envelopes meet, tens of microseconds and kilobytes of garbage per test).
  */
 final class Rings {
-    private static final Comparator<Coordinate> BY_X_THEN_Y = Comparator.<Coordinate>comparingDouble(c -> c.x)
-            .thenComparingDouble(c -> c.y);
-
     private Rings() {
     }
 
@@ -85,7 +81,7 @@ final class Rings {
         Coordinate[] pts = new Coordinate[a.length - 1 + b.length - 1];
         System.arraycopy(a, 0, pts, 0, a.length - 1);
         System.arraycopy(b, 0, pts, a.length - 1, b.length - 1);
-        Arrays.sort(pts, BY_X_THEN_Y);
+        sortByXThenY(pts);
         Coordinate[] h = new Coordinate[2 * pts.length + 1];
         int k = 0;
         for (Coordinate p : pts) {
@@ -103,6 +99,30 @@ final class Rings {
         }
         // the lower chain started at the leftmost point and the upper chain ends there: closed
         return Arrays.copyOf(h, k);
+    }
+
+    /**
+     * Sorts a few points by x, then y, as {@code Double.compare} orders them (-0.0 before 0.0),
+     * keeping equal points in their order: the order {@code Arrays.sort} gives with that comparator,
+     * by insertion, which for the 8 to 64 points of two bodies' rings is quicker than a merge sort
+     * calling a composed comparator.
+     */
+    private static void sortByXThenY(Coordinate[] pts) {
+        for (int i = 1; i < pts.length; i++) {
+            Coordinate p = pts[i];
+            int j = i - 1;
+            while (j >= 0 && after(pts[j], p)) {
+                pts[j + 1] = pts[j];
+                j--;
+            }
+            pts[j + 1] = p;
+        }
+    }
+
+    /** Whether {@code a} comes strictly after {@code b} by x, then y. */
+    private static boolean after(Coordinate a, Coordinate b) {
+        int byX = Double.compare(a.x, b.x);
+        return byX > 0 || byX == 0 && Double.compare(a.y, b.y) > 0;
     }
 
     private static Envelope envelope(Coordinate[] ring) {
