@@ -9,16 +9,13 @@ import java.util.concurrent.atomic.AtomicReference;
 import robosim.aria.ArRobot;
 import robosim.env.core.Parallel;
 import robosim.env.core.Simulation;
-import robosim.env.net.Access;
 import robosim.env.net.EnvironmentServer;
-import robosim.env.net.Limits;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.hw.EnvironmentLinks;
 import robosim.hw.RobotRuntime;
 import robosim.hw.RobotThreads;
 import robosim.hw.RuntimeChoices;
-import robosim.protocol.FrameReader;
 
 /**
  * The grid world with the robots in the Environment's JVM, on an in-process link: the same
@@ -53,9 +50,7 @@ public final class InProcessBench {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
         StepRateBench.Loaded loaded = StepRateBench.load(worldFile, Parallel.SERIAL);
         Simulation sim = loaded.sim();
-        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, StepRateBench.STEP_TIMEOUT_MS,
-                StepRateBench.CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads, Limits.defaults(),
-                Access.open());
+        ServerOptions options = StepRateBench.serverOptions(steps, threads);
         StepWindows windows = window > 0 ? new StepWindows(window) : null;
         // a runtime of the bench's own: whatever links the system properties choose, it takes the in-process one
         RobotRuntime runtime = RobotRuntime.create("bench", RuntimeChoices.fromSystemProperties()
@@ -63,7 +58,7 @@ public final class InProcessBench {
         AtomicReference<Throwable> failure = new AtomicReference<>();
         Thread runner = Thread.currentThread();
         List<Thread> threadsStarted = new ArrayList<>();
-        StepRateBench.Result result;
+        RunReport report;
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
             server.admitInProcess();
@@ -81,7 +76,6 @@ public final class InProcessBench {
                 t.start();
             }
             Thread sampler = windows == null ? null : StepRateBench.sampler(sim, null, windows);
-            RunReport report;
             try {
                 report = server.run();
             } catch (InterruptedException e) {
@@ -106,9 +100,6 @@ public final class InProcessBench {
             if (windows != null) {
                 windows.end(report.steps());
             }
-            StepRateBench.Load load = loaded.load(report.connectedNanoTime() - loaded.builtAt());
-            result = new StepRateBench.Result("in-process", robots, sensors, 0, load, report.steps(),
-                    report.wallNanos() / 1e9);
         }
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ROBOTS_END_MS);
         for (Thread t : threadsStarted) {
@@ -117,7 +108,8 @@ public final class InProcessBench {
         List<JvmMemory.Report> memory = List.of(new JvmMemory.Report("env", JvmMemory.figures(null)));
         List<StepRateBench.WindowReport> windowReports = windows == null ? List.of()
                 : List.of(new StepRateBench.WindowReport("env", windows.windows()));
-        return new StepRateBench.Result(result.run(), result.robots(), result.sensors(), result.clients(), result.load(),
-                result.steps(), result.seconds(), memory, windowReports);
+        return new StepRateBench.Result("in-process", robots, sensors, 0,
+                loaded.load(report.connectedNanoTime() - loaded.builtAt()), report.steps(), report.wallNanos() / 1e9,
+                memory, windowReports);
     }
 }

@@ -12,9 +12,7 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import robosim.env.core.Simulation;
-import robosim.env.net.Access;
 import robosim.env.net.EnvironmentServer;
-import robosim.env.net.Limits;
 import robosim.env.net.ServerOptions;
 import robosim.env.core.Parallel;
 import robosim.hw.HardwareOptions;
@@ -24,7 +22,6 @@ import robosim.pioneer.PioneerClient;
 import robosim.pioneer.server.PioneerPortOptions;
 import robosim.pioneer.server.PioneerPorts;
 import robosim.pioneer.server.ServedRobot;
-import robosim.protocol.FrameReader;
 import robosim.protocol.RobotKind;
 
 /**
@@ -76,9 +73,7 @@ public final class PioneerFloodBench {
             InterruptedException {
         Path worldFile = GridWorld.write(robots, dir, robotFile);
         Simulation sim = StepRateBench.load(worldFile, Parallel.SERIAL).sim();
-        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, 0, false, StepRateBench.STEP_TIMEOUT_MS,
-                StepRateBench.CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, ServerOptions.defaultThreads(),
-                Limits.defaults(), Access.open());
+        ServerOptions options = StepRateBench.serverOptions(0, ServerOptions.defaultThreads());
         List<Process> clients = new ArrayList<>();
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();

@@ -182,8 +182,7 @@ public final class StepRateBench {
         // the server hands the simulation its sensing threads
         Loaded loaded = load(worldFile, Parallel.SERIAL);
         Simulation sim = loaded.sim();
-        ServerOptions options = new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS,
-                CONNECT_TIMEOUT_MS, 0, FrameReader.DEFAULT_MAX_FRAME, threads, Limits.defaults(), Access.open());
+        ServerOptions options = serverOptions(steps, threads);
         List<BenchRobots.Share> shares = BenchRobots.split(robots, clients);
         List<Process> started = new CopyOnWriteArrayList<>();
         ClientWatch watch = new ClientWatch(Thread.currentThread());
@@ -252,6 +251,16 @@ public final class StepRateBench {
         }
         return new Result(result.run(), result.robots(), result.sensors(), result.clients(), result.load(), result.steps(),
                 result.seconds(), memory, windowReports);
+    }
+
+    /**
+     * @param steps   steps to run, 0 until stopped
+     * @param threads threads that read the robots' sensors
+     * @return how the bench's Environment runs: on loopback, any free ports, as fast as it can, no secret
+     */
+    static ServerOptions serverOptions(long steps, int threads) {
+        return new ServerOptions("127.0.0.1", 0, 0, steps, false, STEP_TIMEOUT_MS, CONNECT_TIMEOUT_MS, 0,
+                FrameReader.DEFAULT_MAX_FRAME, threads, Limits.defaults(), Access.open());
     }
 
     /**

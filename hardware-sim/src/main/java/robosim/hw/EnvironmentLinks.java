@@ -1,6 +1,7 @@
 package robosim.hw;
 
 import java.util.Locale;
+import java.util.Optional;
 import robosim.protocol.inprocess.InProcessPorts;
 
 /**
@@ -95,17 +96,22 @@ public final class EnvironmentLinks {
         String key = host + ":" + port;
         int robots = runtime.countRobotAt(key);
         Runnable released = () -> runtime.uncountRobotAt(key);
-        boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && (robots > 1 || inProcess(host, port));
+        boolean shared = mode == Mode.SHARED || mode == Mode.AUTO && robots > 1
+                || inProcess(runtime, host, port).isPresent();
         return shared ? new LinkMember(runtime, host, port, options, released)
                 : new SocketLink(runtime, host, port, options, released);
     }
 
     /**
-     * @return whether an Environment of this JVM at {@code host:port} admits robots in-process:
-     *         a runtime that chooses {@link Mode#AUTO} then reaches it without TCP
+     * @param runtime the runtime whose robot connects
+     * @param host    the Environment's host
+     * @param port    its robot port
+     * @return the Environment of this JVM at {@code host:port} that admits robots in-process, if there
+     *         is one and the runtime leaves the choice to it ({@link Mode#AUTO}): its robots then reach
+     *         it on one in-process link
      */
-    static boolean inProcess(String host, int port) {
-        return InProcessPorts.find(host, port).isPresent();
+    static Optional<InProcessPorts.Acceptor> inProcess(RobotRuntime runtime, String host, int port) {
+        return runtime.choices().links() == Mode.AUTO ? InProcessPorts.find(host, port) : Optional.empty();
     }
 
     /**

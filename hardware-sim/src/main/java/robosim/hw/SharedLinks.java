@@ -58,13 +58,8 @@ final class SharedLinks {
      *         else over TCP
      */
     private MessageLine line(String host, int port, HardwareOptions options) throws IOException {
-        if (runtime.choices().links() == EnvironmentLinks.Mode.AUTO) {
-            Optional<InProcessPorts.Acceptor> local = InProcessPorts.find(host, port);
-            if (local.isPresent()) {
-                return InProcessLine.open(local.get(), options);
-            }
-        }
-        return SocketLine.connect(host, port, options);
+        Optional<InProcessPorts.Acceptor> local = EnvironmentLinks.inProcess(runtime, host, port);
+        return local.isPresent() ? InProcessLine.open(local.get(), options) : SocketLine.connect(host, port, options);
     }
 
     /** Sends, on every open link, the requests of robots that are ready when others are late. */

@@ -1,9 +1,6 @@
 package robosim.hw;
 
 import java.io.IOException;
-import java.net.ConnectException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,11 +9,8 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.protocol.Bye;
 import robosim.protocol.Command;
-import robosim.protocol.FrameReader;
-import robosim.protocol.FrameWriter;
 import robosim.protocol.KeepAlive;
 import robosim.protocol.Message;
-import robosim.protocol.MessageCodec;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotRequests;
 import robosim.protocol.TimeStep;
@@ -30,17 +24,12 @@ import robosim.protocol.Welcome;
  */
 final class SocketLink extends ReleasedOnClose {
     private static final Logger LOG = Logger.getLogger(SocketLink.class.getName());
-    private static final long RETRY_MS = 200;
-    /** One codec for every link of the JVM: Jackson's mapper is thread-safe, and costly to warm. */
-    static final MessageCodec CODEC = new MessageCodec();
 
     private final RobotRuntime runtime;
     private final String host;
     private final int port;
     private final HardwareOptions options;
-    private Socket socket;
-    private FrameWriter writer;
-    private FrameReader reader;
+    private volatile SocketLine line;
 
     /**
      * @param runtime  the runtime whose choices make the link's thread
@@ -55,34 +44,6 @@ final class SocketLink extends ReleasedOnClose {
         this.host = host;
         this.port = port;
         this.options = options;
-    }
-
-    /**
-     * Connects, trying again while nothing listens (the Environment may still be starting) until
-     * the connect timeout.
-     */
-    static Socket connectSocket(String host, int port, HardwareOptions options) throws IOException {
-        long deadline = System.currentTimeMillis() + options.connectTimeoutMs();
-        while (true) {
-            Socket socket = new Socket();
-            try {
-                socket.connect(new InetSocketAddress(host, port), (int) options.connectTimeoutMs());
-                socket.setTcpNoDelay(true);
-                return socket;
-            } catch (ConnectException e) {
-                socket.close();
-                if (System.currentTimeMillis() + RETRY_MS > deadline) {
-                    throw new ConnectException("no Environment at " + host + ":" + port + " within "
-                            + options.connectTimeoutMs() + " ms (" + e.getMessage() + ")");
-                }
-                try {
-                    Thread.sleep(RETRY_MS);
-                } catch (InterruptedException ie) {
-                    Thread.currentThread().interrupt();
-                    throw new IOException("interrupted while connecting", ie);
-                }
-            }
-        }
     }
 
     /** @return the Environment's refusal or odd answer to a hello, as a connect failure */
@@ -120,19 +81,17 @@ final class SocketLink extends ReleasedOnClose {
     @Override
     public Welcome open(RobotHello hello, Supplier<String> secret, StepReceiver receiver) throws IOException {
         try {
-            socket = connectSocket(host, port, options);
-            socket.setSoTimeout((int) options.connectTimeoutMs());
-            reader = new FrameReader(socket.getInputStream(), CODEC, FrameReader.DEFAULT_MAX_FRAME);
-            writer = new FrameWriter(socket.getOutputStream(), CODEC);
-            writer.write(secret == null ? hello : hello.withToken(secret.get()));
-            Message first = reader.read();
+            // the welcome may take the connect timeout; once in the run, silence is bounded by the lost time
+            line = SocketLine.connect(host, port, options, options.connectTimeoutMs());
+            line.write(secret == null ? hello : hello.withToken(secret.get()));
+            Message first = line.read();
             while (first instanceof KeepAlive) {
-                first = reader.read();
+                first = line.read();
             }
             if (!(first instanceof Welcome w)) {
                 throw refusal(host, port, first);
             }
-            socket.setSoTimeout((int) options.lostAfterMs());
+            line.readTimeout(options.lostAfterMs());
             runtime.readerThread("hw-" + hello.name(), () -> read(receiver)).start();
             return w;
         } catch (IOException | RuntimeException e) {
@@ -146,7 +105,7 @@ final class SocketLink extends ReleasedOnClose {
         String reason = CLOSED;
         try {
             Message m;
-            while ((m = reader.read()) != null) {
+            while ((m = line.read()) != null) {
                 if (m instanceof TimeStep ts) {
                     receiver.step(new RobotSensorResponse(ts.step(), ts.state()));
                 } else if (m instanceof KeepAlive) {
@@ -171,13 +130,13 @@ final class SocketLink extends ReleasedOnClose {
 
     @Override
     public void send(long step, List<RobotRequest> requests) throws IOException {
-        writer.write(new RobotRequests(step, commands(requests)));
+        line.write(new RobotRequests(step, commands(requests)));
     }
 
     @Override
     public void bye(String reason) {
         try {
-            writer.write(new Bye(reason));
+            line.write(new Bye(reason));
         } catch (IOException | RuntimeException e) {
             LOG.log(Level.FINE, "bye not sent", e);
         }
@@ -191,12 +150,9 @@ final class SocketLink extends ReleasedOnClose {
 
     @Override
     void closed() {
-        if (socket != null) {
-            try {
-                socket.close();
-            } catch (IOException e) {
-                LOG.log(Level.FINE, "closing", e);
-            }
+        SocketLine l = line;
+        if (l != null) {
+            l.close();
         }
     }
 }

@@ -160,7 +160,7 @@ final class EnvCommand implements Callable<Integer> {
         if (!inProcess.isEmpty()) {
             try {
                 programs = InProcessPrograms.of(inProcess, w.robots().stream().map(r -> r.name()).toList(),
-                        InProcessPrograms.loader(classpath));
+                        ProgramClasspath.loader(classpath));
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }

@@ -1,13 +1,9 @@
 package robosim.cli;
 
-import java.io.File;
 import java.io.PrintWriter;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
-import java.net.MalformedURLException;
-import java.net.URL;
-import java.net.URLClassLoader;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -94,34 +90,6 @@ final class InProcessPrograms {
         } catch (ClassNotFoundException | NoSuchMethodException | LinkageError e) {
             throw new IllegalArgumentException("'" + spec + "' was supplied for --in-process" + rule, e);
         }
-    }
-
-    /**
-     * @param classpath directories and jars, {@code :}-separated, or null
-     * @return a loader of RoboSim's classes and those on {@code classpath}
-     * @throws IllegalArgumentException naming the entry, if one does not exist
-     */
-    static ClassLoader loader(String classpath) {
-        ClassLoader robosim = InProcessPrograms.class.getClassLoader();
-        if (classpath == null) {
-            return robosim;
-        }
-        List<URL> urls = new ArrayList<>();
-        for (String p : classpath.split(File.pathSeparator)) {
-            if (p.isEmpty()) {
-                continue;
-            }
-            File f = new File(p);
-            if (!f.exists()) {
-                throw new IllegalArgumentException("'" + p + "' was supplied for --classpath: there is no such directory or jar");
-            }
-            try {
-                urls.add(f.toURI().toURL());
-            } catch (MalformedURLException e) {
-                throw new IllegalArgumentException("'" + p + "' was supplied for --classpath: " + e.getMessage(), e);
-            }
-        }
-        return new URLClassLoader(urls.toArray(new URL[0]), robosim);
     }
 
     /** @return the robots that have a program, in order */

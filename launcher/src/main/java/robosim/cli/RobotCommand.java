@@ -137,7 +137,7 @@ final class RobotCommand implements Callable<Integer> {
         }
         ClassLoader loader;
         try {
-            loader = InProcessPrograms.loader(classpath);
+            loader = ProgramClasspath.loader(classpath);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }

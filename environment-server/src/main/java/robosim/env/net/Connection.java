@@ -94,7 +94,7 @@ final class Connection {
         this.channel = null;
         this.key = null;
         this.codec = codec;
-        this.decoder = new FrameDecoder(codec, Integer.MAX_VALUE);
+        this.decoder = null;
         this.maxQueuedBytes = Long.MAX_VALUE;
         this.address = "in-process";
     }
@@ -103,7 +103,7 @@ final class Connection {
      * An in-process robot connection: a link of robots of this JVM (see {@link InProcessDoor}).
      *
      * @param robots where its messages go
-     * @param codec  decodes the rare frame sent to every connection alike (a keep-alive)
+     * @param codec  the server's codec
      * @param log    the limiter of the server's connections
      * @return the connection, not yet greeted
      */
@@ -284,20 +284,26 @@ final class Connection {
     }
 
     /**
+     * Sends a message encoded once for many peers: a peer over TCP is queued the frame (pass each
+     * its duplicate), an in-process one takes the message itself.
+     *
+     * @param m     the message
+     * @param frame its frame, or null for an in-process peer, which needs none
+     */
+    void send(Message m, ByteBuffer frame) {
+        if (local != null) {
+            send(m);
+        } else {
+            sendFrame(frame);
+        }
+    }
+
+    /**
      * Queues a frame already encoded (the same frame can go to many peers: pass each a duplicate)
-     * and writes what the peer can take now.
+     * and writes what the peer, one over TCP, can take now.
      */
     void sendFrame(ByteBuffer frame) {
         if (closed || closeWhenFlushed) {
-            return;
-        }
-        if (local != null) {
-            // a frame encoded once for many connections: this one takes it as the message it holds
-            try {
-                decoder.decode(frame.duplicate()).forEach(local::deliver);
-            } catch (IOException e) {
-                throw new IllegalStateException("a frame this Environment encoded does not decode", e);
-            }
             return;
         }
         if (outgoing.isEmpty()) {

@@ -5,6 +5,7 @@ import java.nio.channels.Selector;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 import robosim.protocol.LogLimiter;
 import robosim.protocol.Message;
@@ -102,14 +103,14 @@ final class InProcessDoor implements InProcessPorts.Acceptor {
      * @param received a message on a link
      * @param ended    a link that its runtime closed
      */
-    void drain(Consumer<Connection> opened, MessageHandler received, Consumer<Connection> ended) {
+    void drain(Consumer<Connection> opened, BiConsumer<Connection, Message> received, Consumer<Connection> ended) {
         Arrival a;
         while ((a = arrivals.poll()) != null) {
             if (a.opened()) {
                 opened.accept(a.connection());
             } else if (a.message() != null) {
                 if (!a.connection().isClosed()) {
-                    received.received(a.connection(), a.message());
+                    received.accept(a.connection(), a.message());
                 }
             } else if (!a.connection().isClosed()) {
                 ended.accept(a.connection());
@@ -125,11 +126,5 @@ final class InProcessDoor implements InProcessPorts.Acceptor {
     /** Refuses links from now on; the connections already open close with the Environment's. */
     void close() {
         closed = true;
-    }
-
-    /** Takes one message of an in-process link. */
-    @FunctionalInterface
-    interface MessageHandler {
-        void received(Connection c, Message m);
     }
 }

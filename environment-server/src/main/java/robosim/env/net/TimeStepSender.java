@@ -71,11 +71,7 @@ final class TimeStepSender {
         workers.forEach(frames.length, links.isEmpty() ? PooledParallel.MIN_CHUNK : 1,
                 i -> frames[i] = to.get(i).isInProcess() ? null : FrameWriter.frame(codec, steps.get(i)));
         for (int i = 0; i < frames.length; i++) {
-            if (frames[i] == null) {
-                to.get(i).send(steps.get(i));
-            } else {
-                to.get(i).sendFrame(frames[i]);
-            }
+            to.get(i).send(steps.get(i), frames[i]);
         }
         sentToRobotsNanos = System.nanoTime();
     }
@@ -93,10 +89,11 @@ final class TimeStepSender {
             return;
         }
         sentToRobotsNanos = now;
-        ByteBuffer frame = FrameWriter.frame(codec, new KeepAlive(step));
+        KeepAlive keepAlive = new KeepAlive(step);
+        ByteBuffer frame = FrameWriter.frame(codec, keepAlive);
         for (Connection c : connections) {
             if (c.kind == Connection.Kind.ROBOT && (c.isLink() || c.name() != null)) {
-                c.sendFrame(frame.duplicate());
+                c.send(keepAlive, frame.duplicate());
             }
         }
     }
