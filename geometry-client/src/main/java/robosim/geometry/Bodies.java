@@ -79,14 +79,11 @@ final class Bodies {
      *         their ids
      */
     List<Body> near(Envelope env, int ignoreId) {
-        List<Body> near = new ArrayList<>();
-        if (grid != null) {
-            for (int i : grid.query(env)) {
-                Body b = list.get(i);
-                if (i != ignoreId && !hidden.get(i) && b.envelope.intersects(env)) {
-                    near.add(b);
-                }
-            }
+        CellGrid.Ids ids = new CellGrid.Ids();
+        near(env, ignoreId, ids);
+        List<Body> near = new ArrayList<>(ids.size());
+        for (int k = 0; k < ids.size(); k++) {
+            near.add(list.get(ids.get(k)));
         }
         return near;
     }

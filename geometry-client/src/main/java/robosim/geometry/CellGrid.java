@@ -275,7 +275,7 @@ final class CellGrid {
     int[] query(Envelope env) {
         Ids out = new Ids();
         query(env, out);
-        return Arrays.copyOf(out.ids, out.size);
+        return out.toArray();
     }
 
     /**
@@ -325,6 +325,11 @@ final class CellGrid {
                 ids = Arrays.copyOf(ids, size * 2);
             }
             ids[size++] = id;
+        }
+
+        /** @return the ids, in a new array of their number */
+        int[] toArray() {
+            return Arrays.copyOf(ids, size);
         }
 
         /** Forgets every id. */

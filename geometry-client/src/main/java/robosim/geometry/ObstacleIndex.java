@@ -1,7 +1,6 @@
 package robosim.geometry;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Polygon;
@@ -93,20 +92,9 @@ final class ObstacleIndex {
      * @return the numbers of the obstacles whose envelope intersects it, in the STRtree's order
      */
     int[] query(Envelope env) {
-        if (tree != null) {
-            return tree.query(env).stream().mapToInt(o -> (Integer) o).toArray();
-        }
-        if (grid == null) {
-            return new int[0];
-        }
-        int[] near = grid.query(env);
-        int n = 0;
-        for (int i : near) {
-            if (polygons[i].getEnvelopeInternal().intersects(env)) {
-                near[n++] = i;
-            }
-        }
-        return n == near.length ? near : Arrays.copyOf(near, n);
+        CellGrid.Ids out = new CellGrid.Ids();
+        query(env, out);
+        return out.toArray();
     }
 
     /**
