@@ -13,13 +13,11 @@ import robosim.env.core.Simulation;
 import robosim.env.net.EnvironmentServer;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
-import robosim.protocol.RobotParameters;
-import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
+import robosim.env.world.maze.GoldBound;
 import robosim.env.world.maze.Maze;
 import robosim.env.world.maze.MazeWorldWriter;
 import robosim.env.world.xml.WorldReader;
-import robosim.examples.goldfinder.Gold;
 import robosim.examples.goldfinder.GoldFinder;
 
 /**
@@ -32,7 +30,7 @@ public final class GoldFinderBench {
 
     /**
      * The steps each maze took one team size (−1: not found within the limit), and the lower bound
-     * of each maze for that team ({@link #lowerBound}).
+     * of each maze for that team ({@link GoldBound#steps}).
      */
     public record Result(int robots, long[] steps, long[] bounds) {
         /** @return the mean of the lower bounds */
@@ -85,7 +83,7 @@ public final class GoldFinderBench {
                     most, robotFile.toAbsolutePath().toString()), StandardCharsets.UTF_8);
             World world = WorldReader.read(file);
             for (int t = 0; t < teams.size(); t++) {
-                out[t].bounds()[seed - 1] = lowerBound(maze, world.withFirstRobots(teams.get(t)), CELL_SIZE);
+                out[t].bounds()[seed - 1] = GoldBound.steps(maze, world.withFirstRobots(teams.get(t)), CELL_SIZE);
                 out[t].steps()[seed - 1] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps, loss, latency);
             }
         }
@@ -94,61 +92,6 @@ public final class GoldFinderBench {
 
     /** The benchmark mazes' cell size, mm. */
     static final int CELL_SIZE = 1500;
-
-    /** East, north, west, south, as {@link Maze#open} numbers them. */
-    private static final int[][] DIRECTIONS = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-
-    /**
-     * The fewest steps in which a team could find the gold if it knew the maze: the shortest path
-     * from the nearest robot's cell to the gold's, driven at the robot's top speed and
-     * accelerations, straight along each corridor, turning in place at each corner, and ending
-     * where the gold is {@value Gold#FOUND_DISTANCE} mm away. Robots that sense their way must do
-     * no better.
-     *
-     * @param maze     the maze
-     * @param world    its world, with the team's robots
-     * @param cellSize mm
-     * @return steps
-     */
-    public static long lowerBound(Maze maze, World world, double cellSize) {
-        int gx = (int) Math.floor(world.gold().x() / cellSize);
-        int gy = (int) Math.floor(world.gold().y() / cellSize);
-        int[][] toGold = maze.distancesFrom(gx, gy);
-        double best = Double.POSITIVE_INFINITY;
-        for (RobotSpec r : world.robots()) {
-            RobotParameters p = r.parameters();
-            int x = (int) Math.floor(r.x() / cellSize);
-            int y = (int) Math.floor(r.y() / cellSize);
-            double seconds = 0;
-            double run = 0;
-            int heading = -1;
-            while (toGold[x][y] > 0) {
-                for (int d = 0; d < 4; d++) {
-                    int nx = x + DIRECTIONS[d][0];
-                    int ny = y + DIRECTIONS[d][1];
-                    if (maze.open(x, y, d) && toGold[nx][ny] == toGold[x][y] - 1) {
-                        if (heading >= 0 && d != heading) {
-                            seconds += ramp(run, p.maxVelocity(), p.transAccel()) + ramp(90, p.maxRVelocity(), p.rotAccel());
-                            run = 0;
-                        }
-                        heading = d;
-                        run += cellSize;
-                        x = nx;
-                        y = ny;
-                        break;
-                    }
-                }
-            }
-            seconds += ramp(Math.max(0, run - Gold.FOUND_DISTANCE), p.maxVelocity(), p.transAccel());
-            best = Math.min(best, seconds);
-        }
-        return (long) Math.ceil(best * 1000 / world.stepMs());
-    }
-
-    /** Seconds to cover a distance from rest to rest, accelerating and braking at {@code accel}, capped at {@code top}. */
-    private static double ramp(double distance, double top, double accel) {
-        return distance >= top * top / accel ? distance / top + top / accel : 2 * Math.sqrt(distance / accel);
-    }
 
     private static long steps(World world, long seed, long maxSteps, double loss, int latency)
             throws IOException, InterruptedException {
