@@ -9,7 +9,7 @@ import picocli.CommandLine.Command;
         description = "RoboSim, a multi-robot simulator: an Environment server, robot clients and viewers.",
         subcommands = {EnvCommand.class, RobotCommand.class, ViewerCommand.class, ReplayCommand.class, DemoCommand.class,
                 BenchCommand.class, MazeCommand.class, GoldfinderCommand.class, CommsCommand.class, ControlCommand.class,
-                RemoteCommand.class, PanelCommand.class, ClasspathCommand.class, CommandLine.HelpCommand.class})
+                RemoteCommand.class, PanelCommand.class, ClasspathCommand.class, ExperimentCommand.class, CommandLine.HelpCommand.class})
 public final class Main implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

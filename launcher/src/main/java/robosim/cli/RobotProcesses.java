@@ -43,11 +43,32 @@ public final class RobotProcesses {
      */
     public static Process start(String className, String name, int port, String secret, Path log, String... args)
             throws IOException {
+        return start(className, null, name, port, secret, log, List.of(args));
+    }
+
+    /**
+     * Starts {@code robosim robot [--classpath PATH] CLASS NAME 127.0.0.1 PORT ARGS...} in a new JVM.
+     *
+     * @param className the robot program
+     * @param classpath where its classes are besides RoboSim's, or null
+     * @param name      the robot's name
+     * @param port      the Environment's robot port on loopback
+     * @param secret    the run's secret, or null to let the program find it
+     * @param log       where its output goes
+     * @param args      more arguments for the program
+     * @return the process
+     * @throws IOException if the JVM cannot be started
+     */
+    public static Process start(String className, String classpath, String name, int port, String secret, Path log,
+                                List<String> args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(javaBinary(), "-Djava.awt.headless=true",
                 "-Drobosim.root=" + RobotParameterFiles.root(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName(),
-                "robot", className, name, "127.0.0.1", Integer.toString(port)));
-        cmd.addAll(List.of(args));
+                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "robot"));
+        if (classpath != null) {
+            cmd.addAll(List.of("--classpath", classpath));
+        }
+        cmd.addAll(List.of(className, name, "127.0.0.1", Integer.toString(port)));
+        cmd.addAll(args);
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile());
         if (secret != null) {
             pb.environment().put(RunSecret.ENV, secret);
@@ -72,7 +93,8 @@ public final class RobotProcesses {
         }
     }
 
-    private static String javaBinary() {
+    /** @return this JVM's java command, for the JVMs it starts */
+    static String javaBinary() {
         return Path.of(System.getProperty("java.home"), "bin", "java").toString();
     }
 }

@@ -1,0 +1,105 @@
+package robosim.experiment;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Pattern;
+import robosim.env.core.RobotSummary;
+import robosim.env.net.RunReport;
+import robosim.env.world.World;
+import robosim.experiment.Experiment.Aggregate;
+
+/**
+ * The metrics of a run: the built-in ones, from the run's report, and those its programs reported.
+ * Every metric but {@value #WALL_TIME} is the simulation's own, the same for the same run wherever
+ * and however fast it runs.
+ */
+public final class Metrics {
+    /** A metric's name. */
+    public static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_.-]{0,63}");
+
+    /** Steps simulated. */
+    public static final String STEPS = "steps";
+    /** Simulated time, s. */
+    public static final String SIM_TIME = "simTime";
+    /** How the run ended, a short word. */
+    public static final String ENDING = "ending";
+    /** Why, in words. */
+    public static final String END_REASON = "endReason";
+    /** 1 if the world's gold was found, 0 if not; empty in a world without gold. */
+    public static final String FOUND = "found";
+    /** The step the gold was found at; empty if it was not. */
+    public static final String FOUND_STEP = "foundStep";
+    /** Who found it. */
+    public static final String FOUND_BY = "foundBy";
+    /** The fewest steps a team that knew the maze would take to find its gold ({@link robosim.env.world.maze.GoldBound}). */
+    public static final String LOWER_BOUND = "lowerBound";
+    /** The steps to find the gold over the lower bound: how far the team was from searching perfectly. */
+    public static final String BOUND_RATIO = "boundRatio";
+    /** The robots in the run. */
+    public static final String ROBOTS = "robots";
+    /** Distance travelled by all the robots, mm. */
+    public static final String DISTANCE = "distance";
+    /** Collisions of all the robots. */
+    public static final String COLLISIONS = "collisions";
+    /** Wall-clock time of the run, s: the one metric that is the machine's, not the simulation's. */
+    public static final String WALL_TIME = "wallTime";
+
+    /** The built-in metrics, in column order. */
+    public static final List<String> BUILT_IN = List.of(STEPS, SIM_TIME, ENDING, FOUND, FOUND_STEP, FOUND_BY,
+            LOWER_BOUND, BOUND_RATIO, ROBOTS, DISTANCE, COLLISIONS, END_REASON, WALL_TIME);
+
+    private Metrics() {
+    }
+
+    /**
+     * @param report     the run's report
+     * @param world      its world
+     * @param lowerBound its maze's lower bound, or null
+     * @param aggregates how the robots' reported values make the run's
+     * @param wallTime   the run's wall-clock time, s
+     * @return the run's metrics, built-in first
+     */
+    static Map<String, Object> of(RunReport report, World world, Long lowerBound, Map<String, Aggregate> aggregates,
+                                  double wallTime) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put(STEPS, report.steps());
+        m.put(SIM_TIME, report.timeMs() / 1000.0);
+        m.put(ENDING, Endings.of(report));
+        boolean gold = world.gold() != null;
+        m.put(FOUND, gold ? (report.find() == null ? 0 : 1) : null);
+        m.put(FOUND_STEP, report.find() == null ? null : report.find().step());
+        m.put(FOUND_BY, report.find() == null ? null : report.find().robot());
+        m.put(LOWER_BOUND, lowerBound);
+        m.put(BOUND_RATIO, report.find() == null || lowerBound == null || lowerBound == 0 ? null
+                : Math.round(report.find().step() * 10_000.0 / lowerBound) / 10_000.0);
+        m.put(ROBOTS, report.robots().size());
+        double distance = 0;
+        long collisions = 0;
+        for (RobotSummary r : report.robots()) {
+            distance += r.distance();
+            collisions += r.collisions();
+        }
+        m.put(DISTANCE, Math.round(distance * 10) / 10.0);
+        m.put(COLLISIONS, collisions);
+        m.put(END_REASON, report.endReason());
+        m.put(WALL_TIME, Math.round(wallTime * 1000) / 1000.0);
+        return m;
+    }
+
+    /**
+     * @param report the run's report
+     * @return each robot's figures
+     */
+    static List<RunRecord.RobotFigures> robots(RunReport report) {
+        List<RunRecord.RobotFigures> out = new ArrayList<>();
+        for (RobotSummary r : report.robots()) {
+            Map<String, Object> f = new LinkedHashMap<>();
+            f.put(DISTANCE, Math.round(r.distance() * 10) / 10.0);
+            f.put(COLLISIONS, r.collisions());
+            out.add(new RunRecord.RobotFigures(r.name(), f));
+        }
+        return out;
+    }
+}

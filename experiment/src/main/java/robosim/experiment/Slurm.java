@@ -1,0 +1,198 @@
+package robosim.experiment;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
+
+/**
+ * A sweep on a SLURM cluster: one job array, each task running a chunk of the runs with
+ * {@code robosim experiment FILE --out DIR --run FIRST-LAST} on its node, into the results folder all
+ * the nodes share. {@code --collect} then builds the tables, plots and report from the records.
+ */
+public final class Slurm {
+    /** sbatch's option values the script passes through: no spaces, quotes or shell characters. */
+    static final Pattern OPTION_VALUE = Pattern.compile("[A-Za-z0-9_.:+,@%=/-]{1,128}");
+    /** The most tasks one array may have (SLURM's default MaxArraySize is 1001). */
+    public static final int MAX_TASKS = 1000;
+
+    /**
+     * What the job asks of the cluster; null leaves the cluster's default.
+     *
+     * @param partition     {@code --partition}
+     * @param time          {@code --time}, e.g. {@code 00:30:00}
+     * @param cpusPerTask   {@code --cpus-per-task}
+     * @param mem           {@code --mem}, e.g. {@code 2G}
+     * @param runsPerTask   runs each task runs (in JVMs of their own, {@code cpusPerTask} at once)
+     */
+    public record Request(String partition, String time, Integer cpusPerTask, String mem, int runsPerTask) {
+        /**
+         * @throws IllegalArgumentException naming the option, the value and the rule
+         */
+        public Request {
+            check("--partition", partition);
+            check("--time", time);
+            check("--mem", mem);
+            if (cpusPerTask != null && cpusPerTask < 1) {
+                throw new IllegalArgumentException(cpusPerTask + " was supplied for --cpus-per-task: it must be at least 1");
+            }
+            if (runsPerTask < 1) {
+                throw new IllegalArgumentException(runsPerTask + " was supplied for --runs-per-task: it must be at least 1");
+            }
+        }
+
+        private static void check(String option, String value) {
+            if (value != null && !OPTION_VALUE.matcher(value).matches()) {
+                throw new IllegalArgumentException("'" + value + "' was supplied for " + option + ": it is 1 to 128 letters,"
+                        + " digits or . _ : + , @ % = / -");
+            }
+        }
+    }
+
+    private Slurm() {
+    }
+
+    /**
+     * @param runs        the sweep's runs
+     * @param runsPerTask runs per task
+     * @return the array's tasks
+     */
+    public static int tasks(int runs, int runsPerTask) {
+        return (runs + runsPerTask - 1) / runsPerTask;
+    }
+
+    /**
+     * Writes the job script.
+     *
+     * @param experiment the experiment
+     * @param robosim    the launcher every node runs ({@code bin/robosim}, on the shared file system)
+     * @param out        the results folder, shared by the nodes
+     * @param request    what the job asks for
+     * @param runs       the runs to do, in order (a resumed sweep's are those without a record)
+     * @return the script's path ({@code DIR/slurm/NAME.sbatch})
+     * @throws IOException if it cannot be written
+     * @throws IllegalArgumentException if the runs need more than {@value #MAX_TASKS} tasks
+     */
+    public static Path writeScript(Experiment experiment, Path robosim, Path out, Request request, List<Integer> runs)
+            throws IOException {
+        int tasks = tasks(runs.size(), request.runsPerTask());
+        if (tasks > MAX_TASKS) {
+            throw new IllegalArgumentException(runs.size() + " runs at " + request.runsPerTask() + " per task make " + tasks
+                    + " tasks: an array has at most " + MAX_TASKS + "; give --runs-per-task "
+                    + tasks(runs.size(), MAX_TASKS));
+        }
+        Path dir = out.resolve("slurm");
+        Files.createDirectories(dir);
+        Path script = dir.resolve(experiment.name() + ".sbatch");
+        Path list = dir.resolve(experiment.name() + ".runs");
+        // the runs each task takes, one line per task: a resumed sweep's runs need not be a range
+        List<String> lines = new ArrayList<>();
+        for (int t = 0; t < tasks; t++) {
+            List<Integer> chunk = runs.subList(t * request.runsPerTask(),
+                    Math.min(runs.size(), (t + 1) * request.runsPerTask()));
+            lines.add(Report.ranges(chunk).replace(" ", ""));
+        }
+        Files.write(list, lines, StandardCharsets.UTF_8);
+        StringBuilder s = new StringBuilder("#!/bin/bash\n");
+        s.append("#SBATCH --job-name=robosim-").append(experiment.name()).append('\n');
+        s.append("#SBATCH --array=0-").append(tasks - 1).append('\n');
+        s.append("#SBATCH --output=").append(dir.toAbsolutePath()).append("/task-%A_%a.out\n");
+        if (request.partition() != null) {
+            s.append("#SBATCH --partition=").append(request.partition()).append('\n');
+        }
+        if (request.time() != null) {
+            s.append("#SBATCH --time=").append(request.time()).append('\n');
+        }
+        if (request.cpusPerTask() != null) {
+            s.append("#SBATCH --cpus-per-task=").append(request.cpusPerTask()).append('\n');
+        }
+        if (request.mem() != null) {
+            s.append("#SBATCH --mem=").append(request.mem()).append('\n');
+        }
+        s.append(String.format(Locale.ROOT, "# Written by robosim experiment --slurm: %d runs of %s in %d task(s),"
+                + " each running the runs of its line of%n# %s, each run in a JVM of its own, into %s.%n"
+                + "# Submit it with: sbatch %s%n# then build the results: %s experiment %s --out %s --collect%n",
+                runs.size(), experiment.file().toAbsolutePath().normalize(), tasks, list.toAbsolutePath(),
+                out.toAbsolutePath(), script.toAbsolutePath(), robosim, experiment.file().toAbsolutePath().normalize(),
+                out.toAbsolutePath()));
+        s.append("set -euo pipefail\n");
+        s.append("runs=\"$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" ").append(quote(list.toAbsolutePath().toString()))
+                .append(")\"\n");
+        s.append("exec ").append(quote(robosim.toString())).append(" experiment ")
+                .append(quote(experiment.file().toAbsolutePath().normalize().toString()))
+                .append(" --out ").append(quote(out.toAbsolutePath().toString()))
+                .append(" --run \"$runs\" --parallel \"${SLURM_CPUS_PER_TASK:-1}\"\n");
+        Files.writeString(script, s.toString(), StandardCharsets.UTF_8);
+        try {
+            Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxr-xr-x"));
+        } catch (UnsupportedOperationException e) {
+            // not a POSIX file system: sbatch reads the script anyway
+        }
+        return script;
+    }
+
+    /** @return the text in single quotes for bash */
+    static String quote(String s) {
+        return "'" + s.replace("'", "'\\''") + "'";
+    }
+
+    /**
+     * Submits a script with {@code sbatch --parsable}.
+     *
+     * @param script the script
+     * @param wait   whether to wait for every task to end ({@code sbatch --wait})
+     * @return the job's id
+     * @throws IOException if sbatch cannot be run or refuses, with what it said
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public static String submit(Path script, boolean wait) throws IOException, InterruptedException {
+        List<String> cmd = new ArrayList<>(List.of("sbatch", "--parsable"));
+        if (wait) {
+            cmd.add("--wait");
+        }
+        cmd.add(script.toAbsolutePath().toString());
+        Process p;
+        try {
+            p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        } catch (IOException e) {
+            throw new IOException("cannot run sbatch (" + e.getMessage() + "): is this a SLURM cluster's login node?"
+                    + " --slurm-script writes the script without submitting it", e);
+        }
+        String said = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        int exit = p.waitFor();
+        String id = said.lines().filter(l -> l.matches("\\d+(;.*)?")).findFirst().map(l -> l.split(";")[0]).orElse(null);
+        if (id == null) {
+            throw new IOException("sbatch refused " + script + " (exit " + exit + "): " + said);
+        }
+        if (exit != 0 && !wait) {
+            throw new IOException("sbatch exited with " + exit + " for job " + id + ": " + said);
+        }
+        return id;
+    }
+
+    /**
+     * @param timeout how long to wait for an answer
+     * @return whether {@code sinfo} answers here: a cluster to submit to
+     */
+    public static boolean available(long timeout, TimeUnit unit) {
+        try {
+            Process p = new ProcessBuilder("sinfo", "-h", "-o", "%P").redirectErrorStream(true).start();
+            if (!p.waitFor(timeout, unit)) {
+                p.destroyForcibly();
+                return false;
+            }
+            return p.exitValue() == 0;
+        } catch (IOException e) {
+            return false;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
+    }
+}
