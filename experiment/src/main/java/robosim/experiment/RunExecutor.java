@@ -101,7 +101,8 @@ public final class RunExecutor {
         List<Thread> threads = new ArrayList<>();
         List<Process> processes = new ArrayList<>();
         RecordingWriter recorder = null;
-        RunReport report;
+        RunReport report = null;
+        Interrupter stopper = new Interrupter(Thread.currentThread());
         try (EnvironmentServer server = new EnvironmentServer(sim, options)) {
             server.bind();
             if (recording != null) {
@@ -119,7 +120,7 @@ public final class RunExecutor {
                     List<String> args = new ArrayList<>(List.of(robot, "127.0.0.1", Integer.toString(server.robotPort())));
                     args.addAll(p.args());
                     if (p.link() == Link.IN_PROCESS) {
-                        threads.add(startThread(robot, mains.get(k), args, failures));
+                        threads.add(startThread(robot, mains.get(k), args, failures, stopper));
                     } else {
                         if (jvms == null) {
                             throw new RunFailure("program " + p.className() + " asks for link: jvm, but this runner"
@@ -132,7 +133,16 @@ public final class RunExecutor {
                     }
                 }
             }
-            report = server.run();
+            stopper.arm();
+            try {
+                report = server.run();
+            } catch (InterruptedException e) {
+                if (failures.isEmpty()) {
+                    throw e;
+                }
+            } finally {
+                stopper.disarm();
+            }
         } finally {
             long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(GRACE_MS);
             for (Thread t : threads) {
@@ -142,6 +152,11 @@ public final class RunExecutor {
             if (recorder != null) {
                 recorder.close();
             }
+        }
+        if (report == null) {
+            Map.Entry<String, Throwable> first = failures.entrySet().iterator().next();
+            throw new RunFailure("robot " + first.getKey() + "'s program failed: " + describe(first.getValue())
+                    + "; the run was stopped");
         }
         double wall = (System.nanoTime() - start) / 1e9;
         Map<String, Object> metrics = Metrics.of(report, world, made.lowerBound, experiment.aggregates(), wall);
@@ -241,14 +256,21 @@ public final class RunExecutor {
         }
     }
 
-    private Thread startThread(String robot, Method main, List<String> args, Map<String, Throwable> failures) {
+    private Thread startThread(String robot, Method main, List<String> args, Map<String, Throwable> failures,
+                               Interrupter stopper) {
         Thread t = new Thread(() -> {
+            Throwable failure = null;
             try {
                 main.invoke(null, (Object) args.toArray(String[]::new));
             } catch (InvocationTargetException e) {
-                failures.put(robot, e.getCause());
+                failure = e.getCause();
             } catch (IllegalAccessException | RuntimeException e) {
-                failures.put(robot, e);
+                failure = e;
+            }
+            if (failure != null) {
+                failures.putIfAbsent(robot, failure);
+                // a robot whose program died may never connect or may stall every step: the run stops now
+                stopper.interrupt();
             }
         }, "robot-program-" + robot);
         t.setContextClassLoader(loader);
@@ -300,6 +322,35 @@ public final class RunExecutor {
             return InetAddress.getLocalHost().getHostName();
         } catch (IOException e) {
             return "unknown";
+        }
+    }
+
+    /**
+     * Interrupts the thread running the Environment while, and only while, the run is under way: a
+     * program that fails after the run has ended leaves the thread alone.
+     */
+    private static final class Interrupter {
+        private final Thread runner;
+        private boolean armed;
+
+        Interrupter(Thread runner) {
+            this.runner = runner;
+        }
+
+        synchronized void arm() {
+            armed = true;
+        }
+
+        /** The run is over: no interrupt comes after this, and none that came before it is left pending. */
+        synchronized void disarm() {
+            armed = false;
+            Thread.interrupted();
+        }
+
+        synchronized void interrupt() {
+            if (armed) {
+                runner.interrupt();
+            }
         }
     }
 

@@ -108,7 +108,7 @@ final class YamlTree {
                 }
                 p.nextToken();
                 keyLines.put(key, keyLine);
-                entries.put(key, node(file, p, count));
+                entries.put(key, atKey(node(file, p, count), keyLine));
             }
             return new Mapping(Collections.unmodifiableMap(entries), Collections.unmodifiableMap(keyLines), line);
         }
@@ -120,6 +120,20 @@ final class YamlTree {
             return new Sequence(List.copyOf(items), line);
         }
         return new Scalar(t == JsonToken.VALUE_NULL ? "" : p.getText(), t, line);
+    }
+
+    /**
+     * A block mapping or list begins at its first item, a line below its key: an error about it as a
+     * whole is told at the key's line.
+     */
+    private static Node atKey(Node n, int keyLine) {
+        if (n instanceof Mapping m) {
+            return new Mapping(m.entries(), m.keyLines(), keyLine);
+        }
+        if (n instanceof Sequence s) {
+            return new Sequence(s.items(), keyLine);
+        }
+        return n;
     }
 
     private static int line(JsonParser p) {

@@ -1,0 +1,82 @@
+package robosim.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** A run in this JVM: GoldFinder in a small maze, over the in-process link. */
+@Timeout(value = 120, unit = TimeUnit.SECONDS)
+class RunExecutorTest {
+    @TempDir
+    Path dir;
+
+    private Experiment experiment(String programs) throws Exception {
+        Path f = dir.resolve("e.yaml");
+        Files.writeString(f, "world: {maze: {cells: 3}}\nprograms:\n" + programs
+                + "factors: {team: [1, 2]}\nsteps: 5000\n", StandardCharsets.UTF_8);
+        return ExperimentReader.read(f);
+    }
+
+    private static Map<String, Object> simulated(RunRecord r) {
+        Map<String, Object> m = new LinkedHashMap<>(r.metrics());
+        m.remove(Metrics.WALL_TIME);
+        return m;
+    }
+
+    @Test
+    void aRunFindsTheGoldAndGivesTheSameMetricsEachTime() throws Exception {
+        Experiment e = experiment("  - {class: robosim.examples.goldfinder.GoldFinder, count: '${team}'}\n");
+        RunExecutor x = new RunExecutor(e, "f", dir, getClass().getClassLoader(), null);
+        RunRecord first = x.execute(e.run(1), dir.resolve("rec/run-1.rsr"));
+        assertTrue(first.ok(), first.failure());
+        assertEquals("gold-found", first.metrics().get(Metrics.ENDING));
+        assertEquals(1, first.metrics().get(Metrics.FOUND));
+        long found = ((Number) first.metrics().get(Metrics.FOUND_STEP)).longValue();
+        long bound = ((Number) first.metrics().get(Metrics.LOWER_BOUND)).longValue();
+        assertTrue(bound > 0 && found >= bound, "found at " + found + ", no sooner than the bound " + bound);
+        assertEquals(2, first.robots().size());
+        assertTrue(Files.size(dir.resolve("rec/run-1.rsr")) > 0, "the recording was kept");
+        RunRecord again = x.execute(e.run(1), null);
+        assertEquals(simulated(first), simulated(again), "the same run gives the same row");
+    }
+
+    @Test
+    void aProgramThatIsNoProgramFailsItsRunWithTheReason() throws Exception {
+        Experiment e = experiment("  - {class: robosim.NoSuchProgram, count: 1}\n");
+        RunRecord r = new RunExecutor(e, "f", dir, getClass().getClassLoader(), null).execute(e.run(0), null);
+        assertEquals(RunRecord.FAILED, r.status());
+        assertTrue(r.failure().contains("program robosim.NoSuchProgram is no class with a public static main"),
+                r.failure());
+        assertNull(r.metrics().get(Metrics.STEPS));
+    }
+
+    @Test
+    void aProgramThatThrowsFailsItsRunAndTheRunStillEnds() throws Exception {
+        Experiment e = experiment("  - {class: " + Thrower.class.getName() + ", count: 1}\n");
+        RunRecord r = new RunExecutor(e, "f", dir, getClass().getClassLoader(), null).execute(e.run(0), null);
+        assertEquals(RunRecord.FAILED, r.status());
+        assertTrue(r.failure().startsWith("robot r1's program failed: java.lang.IllegalStateException: no robot today"),
+                r.failure());
+    }
+
+    /** A program that fails before its robot connects. */
+    public static final class Thrower {
+        private Thrower() {
+        }
+
+        /** @param args robot, host, port */
+        public static void main(String[] args) {
+            throw new IllegalStateException("no robot today");
+        }
+    }
+}
