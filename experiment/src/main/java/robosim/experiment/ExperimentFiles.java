@@ -18,9 +18,20 @@ public final class ExperimentFiles {
      * @throws IOException if it cannot be read
      */
     public static String fingerprint(Path file) throws IOException {
+        return fingerprint(Files.readAllBytes(file));
+    }
+
+    /**
+     * @param text a text
+     * @return the first 16 hex digits of the SHA-256 of its UTF-8 bytes
+     */
+    static String fingerprint(String text) {
+        return fingerprint(text.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+    }
+
+    private static String fingerprint(byte[] bytes) {
         try {
-            byte[] d = MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(file));
-            return HexFormat.of().formatHex(d, 0, 8);
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes), 0, 8);
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("this JDK has no SHA-256", e);
         }

@@ -150,7 +150,11 @@ public final class LocalRunner {
         progress.flush();
     }
 
-    static String duration(double seconds) {
+    /**
+     * @param seconds a duration
+     * @return it as {@code 45s}, {@code 3m05s} or {@code 2h10m}
+     */
+    public static String duration(double seconds) {
         long s = Math.round(seconds);
         return s >= 3600 ? String.format(Locale.ROOT, "%dh%02dm", s / 3600, s / 60 % 60)
                 : s >= 60 ? String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60) : s + "s";

@@ -194,10 +194,11 @@ public final class RunExecutor {
             Path params = RobotParameterFiles.resolve(m.robotFile()).toAbsolutePath();
             Path dir = out.resolve("worlds");
             Files.createDirectories(dir);
-            Path file = dir.resolve(String.format(Locale.ROOT, "maze-%dx%d-%d-%d.xml", m.width(), m.height(),
-                    m.cellSize(), m.mazeSeed()));
             String xml = MazeWorldWriter.write(maze, String.format(Locale.ROOT, "maze-%dx%d-%d", m.width(), m.height(),
                     m.mazeSeed()), m.cellSize(), wanted, params.toString().replace('\\', '/'));
+            // named by its text: runs at once that need the same maze with other robots never share a file
+            Path file = dir.resolve(String.format(Locale.ROOT, "maze-%dx%d-%d-%s.xml", m.width(), m.height(),
+                    m.mazeSeed(), ExperimentFiles.fingerprint(xml)));
             writeOnce(file, xml);
             World world = properties(WorldReader.read(file), m.properties());
             Long bound = world.gold() == null || wanted == 0 ? null : GoldBound.steps(maze, world, m.cellSize());

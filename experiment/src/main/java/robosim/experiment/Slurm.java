@@ -71,16 +71,18 @@ public final class Slurm {
      * Writes the job script.
      *
      * @param experiment the experiment
-     * @param robosim    the launcher every node runs ({@code bin/robosim}, on the shared file system)
+     * @param launcher   the command that starts RoboSim's launcher on a node (this JVM's java, heap and
+     *                   classpath, on the file system the nodes share), before its subcommand
      * @param out        the results folder, shared by the nodes
      * @param request    what the job asks for
      * @param runs       the runs to do, in order (a resumed sweep's are those without a record)
+     * @param options    more options for each task's {@code experiment} command ({@code --classpath}, {@code --heap}, ...)
      * @return the script's path ({@code DIR/slurm/NAME.sbatch})
      * @throws IOException if it cannot be written
      * @throws IllegalArgumentException if the runs need more than {@value #MAX_TASKS} tasks
      */
-    public static Path writeScript(Experiment experiment, Path robosim, Path out, Request request, List<Integer> runs)
-            throws IOException {
+    public static Path writeScript(Experiment experiment, List<String> launcher, Path out, Request request,
+                                   List<Integer> runs, List<String> options) throws IOException {
         int tasks = tasks(runs.size(), request.runsPerTask());
         if (tasks > MAX_TASKS) {
             throw new IllegalArgumentException(runs.size() + " runs at " + request.runsPerTask() + " per task make " + tasks
@@ -117,17 +119,26 @@ public final class Slurm {
         }
         s.append(String.format(Locale.ROOT, "# Written by robosim experiment --slurm: %d runs of %s in %d task(s),"
                 + " each running the runs of its line of%n# %s, each run in a JVM of its own, into %s.%n"
-                + "# Submit it with: sbatch %s%n# then build the results: %s experiment %s --out %s --collect%n",
+                + "# Submit it with: sbatch %s%n# then build the results: bin/robosim experiment %s --out %s --collect%n"
+                + "# ROBOSIM_JAVA, if set where you submit, names the java the nodes run instead of this one.%n",
                 runs.size(), experiment.file().toAbsolutePath().normalize(), tasks, list.toAbsolutePath(),
-                out.toAbsolutePath(), script.toAbsolutePath(), robosim, experiment.file().toAbsolutePath().normalize(),
+                out.toAbsolutePath(), script.toAbsolutePath(), experiment.file().toAbsolutePath().normalize(),
                 out.toAbsolutePath()));
         s.append("set -euo pipefail\n");
         s.append("runs=\"$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" ").append(quote(list.toAbsolutePath().toString()))
                 .append(")\"\n");
-        s.append("exec ").append(quote(robosim.toString())).append(" experiment ")
+        s.append("exec \"${ROBOSIM_JAVA:-").append(launcher.get(0).replace("\"", "")).append("}\"");
+        for (String a : launcher.subList(1, launcher.size())) {
+            s.append(' ').append(quote(a));
+        }
+        s.append(" experiment ")
                 .append(quote(experiment.file().toAbsolutePath().normalize().toString()))
                 .append(" --out ").append(quote(out.toAbsolutePath().toString()))
-                .append(" --run \"$runs\" --parallel \"${SLURM_CPUS_PER_TASK:-1}\"\n");
+                .append(" --run \"$runs\" --parallel \"${SLURM_CPUS_PER_TASK:-1}\"");
+        for (String o : options) {
+            s.append(' ').append(quote(o));
+        }
+        s.append('\n');
         Files.writeString(script, s.toString(), StandardCharsets.UTF_8);
         try {
             Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxr-xr-x"));
@@ -143,10 +154,27 @@ public final class Slurm {
     }
 
     /**
+     * @param job a job's id
+     * @return whether any of its tasks is still pending or running ({@code squeue -h -j JOB} lists it)
+     * @throws IOException if squeue cannot be run
+     * @throws InterruptedException if interrupted
+     */
+    public static boolean queued(String job) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder("squeue", "-h", "-j", job, "-o", "%i").redirectErrorStream(true).start();
+        String said = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        if (!p.waitFor(30, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            throw new IOException("squeue did not answer within 30 s");
+        }
+        // an ended job is forgotten after a while: squeue then says its id is invalid
+        return p.exitValue() == 0 && !said.isEmpty();
+    }
+
+    /**
      * Submits a script with {@code sbatch --parsable}.
      *
      * @param script the script
-     * @param wait   whether to wait for every task to end ({@code sbatch --wait})
+     * @param wait   whether sbatch itself waits for every task to end ({@code sbatch --wait})
      * @return the job's id
      * @throws IOException if sbatch cannot be run or refuses, with what it said
      * @throws InterruptedException if interrupted while waiting

@@ -174,7 +174,7 @@ final class ExperimentCommand implements Callable<Integer> {
                         - pending.size()) + " done before", dir);
         o.flush();
         if (slurm || slurmScript) {
-            return cluster(e, fingerprint, dir, pending, o, err);
+            return cluster(e, fingerprint, dir, pending, recorded, o, err);
         }
         int workers = parallel != null ? parallel : LocalRunner.defaultParallel(heapBytes());
         o.printf(Locale.ROOT, "Running %d at once, each in a JVM of its own (--heap %s)%n", workers, heap);
@@ -297,8 +297,8 @@ final class ExperimentCommand implements Callable<Integer> {
         return c.missing().isEmpty() ? 0 : 1;
     }
 
-    private int cluster(Experiment e, String fingerprint, Path dir, List<Integer> pending, PrintWriter o,
-                        PrintWriter err) throws IOException, InterruptedException {
+    private int cluster(Experiment e, String fingerprint, Path dir, List<Integer> pending, TreeSet<Integer> recordedRuns,
+                        PrintWriter o, PrintWriter err) throws IOException, InterruptedException {
         Slurm.Request request;
         try {
             request = new Slurm.Request(partition, time, cpusPerTask, mem, runsPerTask);
@@ -312,7 +312,7 @@ final class ExperimentCommand implements Callable<Integer> {
         Path robosim = RobotParameterFiles.root().resolve("bin").resolve("robosim").toAbsolutePath();
         Path script;
         try {
-            script = Slurm.writeScript(e, robosim, dir, request, pending);
+            script = Slurm.writeScript(e, launcher(), dir, request, pending, taskOptions(recordedRuns));
         } catch (IllegalArgumentException x) {
             throw new ParameterException(spec.commandLine(), x.getMessage());
         }
@@ -326,7 +326,7 @@ final class ExperimentCommand implements Callable<Integer> {
         o.flush();
         String job;
         try {
-            job = Slurm.submit(script, await);
+            job = Slurm.submit(script, false);
         } catch (IOException x) {
             err.println("robosim experiment: " + x.getMessage());
             return 1;
@@ -338,14 +338,59 @@ final class ExperimentCommand implements Callable<Integer> {
             o.flush();
             return 0;
         }
+        o.flush();
+        awaitJob(e, fingerprint, dir, job, pending, err);
         return collect(e, fingerprint, dir, o, err);
     }
 
+    /** Waits for a job's tasks to leave the queue, telling how many of its runs have their records as they come. */
+    private static void awaitJob(Experiment e, String fingerprint, Path dir, String job, List<Integer> pending,
+                                 PrintWriter err) throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        int told = -1;
+        while (true) {
+            boolean queued = Slurm.queued(job);
+            TreeMap<Integer, RunRecord> records = Collector.mine(e, fingerprint, dir);
+            int done = (int) pending.stream().filter(records::containsKey).count();
+            int failed = (int) pending.stream().filter(i -> records.containsKey(i) && !records.get(i).ok()).count();
+            if (done != told) {
+                double elapsed = (System.nanoTime() - start) / 1e9;
+                err.printf(Locale.ROOT, "job %s: %d/%d runs recorded, %d failed; %s, ETA %s%n", job, done,
+                        pending.size(), failed, LocalRunner.duration(elapsed),
+                        done == 0 ? "?" : LocalRunner.duration(elapsed / done * (pending.size() - done)));
+                err.flush();
+                told = done;
+            }
+            if (!queued) {
+                return;
+            }
+            Thread.sleep(1000);
+        }
+    }
+
+    /** @return the options each cluster task's command passes on to the runs it starts */
+    private List<String> taskOptions(TreeSet<Integer> recordedRuns) {
+        List<String> options = new ArrayList<>(List.of("--heap", heap));
+        if (classpath != null) {
+            options.addAll(List.of("--classpath", classpath));
+        }
+        if (!recordedRuns.isEmpty()) {
+            options.addAll(List.of("--record", record));
+        }
+        return options;
+    }
+
+    /** @return the command that starts this launcher in a new JVM as this one runs: java, heap, classpath, class */
+    private List<String> launcher() {
+        return List.of(RobotProcesses.javaBinary(), "-Xmx" + heap, "-Djava.awt.headless=true",
+                "-Drobosim.root=" + RobotParameterFiles.root(), "-cp", System.getProperty("java.class.path"),
+                Main.class.getName());
+    }
+
     private List<String> workerCommand(Path dir, int index, TreeSet<Integer> recorded) {
-        List<String> cmd = new ArrayList<>(List.of(RobotProcesses.javaBinary(), "-Xmx" + heap,
-                "-Djava.awt.headless=true", "-Drobosim.root=" + RobotParameterFiles.root(),
-                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "experiment",
-                file.toAbsolutePath().normalize().toString(), "--out", dir.toString(), "--run", Integer.toString(index)));
+        List<String> cmd = new ArrayList<>(launcher());
+        cmd.addAll(List.of("experiment", file.toAbsolutePath().normalize().toString(), "--out", dir.toString(),
+                "--run", Integer.toString(index)));
         if (recorded.contains(index)) {
             cmd.addAll(List.of("--record", Integer.toString(index)));
         }
