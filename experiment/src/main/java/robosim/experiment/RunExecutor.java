@@ -51,6 +51,7 @@ public final class RunExecutor {
     private final Path out;
     private final ClassLoader loader;
     private final RobotJvms jvms;
+    private Link everyLink;
 
     /**
      * @param experiment  the experiment
@@ -65,6 +66,16 @@ public final class RunExecutor {
         this.out = out;
         this.loader = loader;
         this.jvms = jvms;
+    }
+
+    /**
+     * @param link how every program's robots reach the Environment, whatever the file says; null for
+     *             what it says
+     * @return this
+     */
+    public RunExecutor withEveryLink(Link link) {
+        this.everyLink = link;
+        return this;
     }
 
     /**
@@ -119,7 +130,7 @@ public final class RunExecutor {
                     String robot = robots.get(next++);
                     List<String> args = new ArrayList<>(List.of(robot, "127.0.0.1", Integer.toString(server.robotPort())));
                     args.addAll(p.args());
-                    if (p.link() == Link.IN_PROCESS) {
+                    if ((everyLink != null ? everyLink : p.link()) == Link.IN_PROCESS) {
                         threads.add(startThread(robot, mains.get(k), args, failures, stopper));
                     } else {
                         if (jvms == null) {
@@ -169,7 +180,8 @@ public final class RunExecutor {
             failure = "the recording " + recording + " failed: " + recorder.failure().getMessage();
         }
         return new RunRecord(experiment.name(), fingerprint, run.index(), run.factors(), run.replicate(), run.seed(),
-                failure == null ? RunRecord.OK : RunRecord.FAILED, failure, metrics, figures, host());
+                failure == null ? RunRecord.OK : RunRecord.FAILED, failure, metrics, figures, host(),
+                report.wallNanos() / 1e9);
     }
 
     /** A world made for a run, with its maze's lower bound (null for a world file or a maze without gold). */
@@ -295,7 +307,7 @@ public final class RunExecutor {
         Map<String, Object> metrics = new LinkedHashMap<>();
         metrics.put(Metrics.WALL_TIME, (System.nanoTime() - start) / 1e9);
         return new RunRecord(experiment.name(), fingerprint, run.index(), run.factors(), run.replicate(), run.seed(),
-                RunRecord.FAILED, reason, metrics, List.of(), host());
+                RunRecord.FAILED, reason, metrics, List.of(), host(), 0);
     }
 
     /**
@@ -305,7 +317,7 @@ public final class RunExecutor {
      */
     public RunRecord lost(RunSpec run, String reason) {
         return new RunRecord(experiment.name(), fingerprint, run.index(), run.factors(), run.replicate(), run.seed(),
-                RunRecord.FAILED, reason, Map.of(), List.of(), host());
+                RunRecord.FAILED, reason, Map.of(), List.of(), host(), 0);
     }
 
     private static String describe(Throwable t) {

@@ -20,10 +20,13 @@ import java.util.Map;
  * @param metrics     the run's metrics, by name, in column order: numbers, or text
  * @param robots      each robot's figures
  * @param host        the machine it ran on
+ * @param simulationSeconds wall-clock time of its steps alone, from the first to the end, s (0 if it
+ *                    did not run): the rest of {@link Metrics#WALL_TIME}, and of its JVM's life, is the
+ *                    sweep's overhead (for the benchmark; not a column of results.csv)
  */
 public record RunRecord(String experiment, String fingerprint, int index, Map<String, String> factors, int replicate,
                         long seed, String status, String failure, Map<String, Object> metrics, List<RobotFigures> robots,
-                        String host) {
+                        String host, double simulationSeconds) {
     /** A run that ran to its end (whatever the end). */
     public static final String OK = "ok";
     /** A run that could not: a program failed, the world could not be made, the worker died. */

@@ -38,7 +38,7 @@ class SummaryTest {
 
     private static RunRecord record(int index, String team, String status, Map<String, Object> metrics) {
         return new RunRecord("e", "f00d", index, Map.of("team", team), index % 2 + 1, index % 2 + 1, status,
-                status.equals(RunRecord.OK) ? null : "robot r1's program failed: \"x\", y", metrics, List.of(), "h");
+                status.equals(RunRecord.OK) ? null : "robot r1's program failed: \"x\", y", metrics, List.of(), "h", 0);
     }
 
     private Experiment experiment() throws Exception {

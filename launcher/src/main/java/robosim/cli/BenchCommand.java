@@ -122,6 +122,19 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--mazes", defaultValue = "20", paramLabel = "N", description = "mazes for --goldfinder; default ${DEFAULT-VALUE}")
     int mazes;
 
+    @Option(names = "--sweep", paramLabel = "FILE", description = "instead: an experiment's sweep, runs per minute"
+            + " with its robots on the in-process link and in JVMs of their own (--sweep-links), --sweep-parallel at"
+            + " once, and each run's time beyond its simulation")
+    Path sweep;
+
+    @Option(names = "--sweep-parallel", defaultValue = "2", paramLabel = "N",
+            description = "for --sweep: runs at once; default ${DEFAULT-VALUE}")
+    int sweepParallel;
+
+    @Option(names = "--sweep-links", split = ",", defaultValue = "in-process,jvm", paramLabel = "L",
+            description = "for --sweep: the links to measure, in-process and jvm; default ${DEFAULT-VALUE}")
+    List<String> sweepLinks;
+
     @Option(names = "--floors", description = "instead: what a step cannot go below here, measured without RoboSim:"
             + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
     boolean floors;
@@ -234,6 +247,22 @@ final class BenchCommand implements Callable<Integer> {
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
                 System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform",
                 EnvironmentLinks.Mode.configured().name().toLowerCase(Locale.ROOT));
+        if (sweep != null) {
+            if (sweepParallel < 1) {
+                throw new ParameterException(spec.commandLine(), sweepParallel + " was supplied for --sweep-parallel:"
+                        + " it must be at least 1");
+            }
+            for (String l : sweepLinks) {
+                if (!l.equals("in-process") && !l.equals("jvm")) {
+                    throw new ParameterException(spec.commandLine(), "'" + l + "' was supplied for --sweep-links: links"
+                            + " are in-process and jvm");
+                }
+            }
+            for (int r = 0; r < repeat; r++) {
+                SweepBench.print(o, sweep, SweepBench.run(sweep, out, sweepParallel, sweepLinks));
+            }
+            return 0;
+        }
         if (floors) {
             for (int r = 0; r < repeat; r++) {
                 Floors.print(o, Floors.measure(50_000));

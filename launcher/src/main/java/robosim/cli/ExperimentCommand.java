@@ -25,6 +25,7 @@ import robosim.experiment.LocalRunner;
 import robosim.experiment.RunExecutor;
 import robosim.experiment.RunRecord;
 import robosim.experiment.RunRecords;
+import robosim.experiment.RunSpec;
 import robosim.experiment.Slurm;
 import robosim.params.RobotParameterFiles;
 
@@ -74,6 +75,11 @@ final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--heap", defaultValue = "512m", paramLabel = "SIZE", description = "each run's JVM heap (-Xmx);"
             + " default ${DEFAULT-VALUE}")
     String heap;
+
+    @Option(names = "--link", paramLabel = "LINK", description = "how every program's robots reach the Environment,"
+            + " whatever the file says: in-process (threads of the run's JVM) or jvm (a JVM per robot, over TCP);"
+            + " the rows are the same either way")
+    String link;
 
     @Option(names = {"--classpath", "--cp"}, paramLabel = "PATH", description = OptionTexts.CLASSPATH)
     String classpath;
@@ -142,7 +148,7 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), x.getMessage());
         }
         RunExecutor executor = new RunExecutor(e, fingerprint, dir, loader, (cls, robot, port, secret, log, args) ->
-                RobotProcesses.start(cls, classpath, robot, port, secret, log, args));
+                RobotProcesses.start(cls, classpath, robot, port, secret, log, args)).withEveryLink(everyLink());
         if (runs != null) {
             return runOnly(e, fingerprint, dir, executor, indices("--run", runs, e.runCount()), recorded, o, err);
         }
@@ -203,6 +209,19 @@ final class ExperimentCommand implements Callable<Integer> {
                     + " --runs-per-task go with --slurm or --slurm-script");
         }
         heapBytes();
+        everyLink();
+    }
+
+    private RunSpec.Link everyLink() {
+        if (link == null) {
+            return null;
+        }
+        return switch (link) {
+            case "in-process" -> RunSpec.Link.IN_PROCESS;
+            case "jvm" -> RunSpec.Link.JVM;
+            default -> throw new ParameterException(spec.commandLine(), "'" + link + "' was supplied for --link: it is"
+                    + " in-process or jvm");
+        };
     }
 
     private long heapBytes() {
@@ -377,6 +396,9 @@ final class ExperimentCommand implements Callable<Integer> {
         if (!recordedRuns.isEmpty()) {
             options.addAll(List.of("--record", record));
         }
+        if (link != null) {
+            options.addAll(List.of("--link", link));
+        }
         return options;
     }
 
@@ -396,6 +418,9 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         if (classpath != null) {
             cmd.addAll(List.of("--classpath", classpath));
+        }
+        if (link != null) {
+            cmd.addAll(List.of("--link", link));
         }
         return cmd;
     }
