@@ -80,7 +80,7 @@ public final class Collector {
             if (!r.fingerprint().equals(fingerprint) || r.index() >= experiment.runCount()) {
                 throw new IOException(out + " holds runs of another experiment file (run " + r.index() + " of "
                         + r.experiment() + ", fingerprint " + r.fingerprint() + "; this file's is " + fingerprint
-                        + "): give a new --out for a changed file, or remove the folder");
+                        + "): give a new --out-dir for a changed file, or remove the folder");
             }
         }
         return records;

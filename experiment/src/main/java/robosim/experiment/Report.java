@@ -62,7 +62,7 @@ final class Report {
         }
         if (!missing.isEmpty()) {
             s.append("## Missing runs\n\nNo record yet: ").append(ranges(missing))
-                    .append(". `robosim experiment FILE --out DIR --resume` runs them.\n");
+                    .append(". `robosim experiment FILE --out-dir DIR --resume` runs them.\n");
         }
         return s.toString();
     }

@@ -13,7 +13,7 @@ import java.util.regex.Pattern;
 
 /**
  * A sweep on a SLURM cluster: one job array, each task running a chunk of the runs with
- * {@code robosim experiment FILE --out DIR --run FIRST-LAST} on its node, into the results folder all
+ * {@code robosim experiment FILE --out-dir DIR --run FIRST-LAST} on its node, into the results folder all
  * the nodes share. {@code --collect} then builds the tables, plots and report from the records.
  */
 public final class Slurm {
@@ -119,7 +119,7 @@ public final class Slurm {
         }
         s.append(String.format(Locale.ROOT, "# Written by robosim experiment --slurm: %d runs of %s in %d task(s),"
                 + " each running the runs of its line of%n# %s, each run in a JVM of its own, into %s.%n"
-                + "# Submit it with: sbatch %s%n# then build the results: bin/robosim experiment %s --out %s --collect%n"
+                + "# Submit it with: sbatch %s%n# then build the results: bin/robosim experiment %s --out-dir %s --collect%n"
                 + "# ROBOSIM_JAVA, if set where you submit, names the java the nodes run instead of this one.%n",
                 runs.size(), experiment.file().toAbsolutePath().normalize(), tasks, list.toAbsolutePath(),
                 out.toAbsolutePath(), script.toAbsolutePath(), experiment.file().toAbsolutePath().normalize(),
@@ -133,7 +133,7 @@ public final class Slurm {
         }
         s.append(" experiment ")
                 .append(quote(experiment.file().toAbsolutePath().normalize().toString()))
-                .append(" --out ").append(quote(out.toAbsolutePath().toString()))
+                .append(" --out-dir ").append(quote(out.toAbsolutePath().toString()))
                 .append(" --run \"$runs\" --parallel \"${SLURM_CPUS_PER_TASK:-1}\"");
         for (String o : options) {
             s.append(' ').append(quote(o));

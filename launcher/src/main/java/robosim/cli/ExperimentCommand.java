@@ -36,7 +36,7 @@ import robosim.params.RobotParameterFiles;
  */
 @Command(name = "experiment", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run an experiment: every run of its sweep (factors × replicates), each in a JVM of its own,"
-                + " several at once, into --out; then results.csv, summary.csv (means with 95% confidence intervals),"
+                + " several at once, into --out-dir; then results.csv, summary.csv (means with 95% confidence intervals),"
                 + " plots/*.png and report.md.",
                 "On a SLURM cluster, --slurm submits the sweep as a job array instead and --collect builds the results"
                         + " once its tasks are done. The file's format is in docs/EXPERIMENTS.md."})
@@ -47,8 +47,8 @@ final class ExperimentCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "the experiment file (YAML)")
     Path file;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "the results folder; default out/experiments/NAME"
-            + " (NAME the experiment's)")
+    @Option(names = "--out-dir", paramLabel = "DIR", description = OptionTexts.OUT_DIR
+            + "; the results folder, default out/experiments/NAME (NAME the experiment's)")
     Path out;
 
     @Option(names = "--parallel", paramLabel = "N", description = "runs at once; default as many as the processors,"
@@ -65,10 +65,10 @@ final class ExperimentCommand implements Callable<Integer> {
     String runs;
 
     @Option(names = "--collect", description = "build results.csv, summary.csv, the plots and report.md from the"
-            + " records in --out (after a cluster's tasks), running nothing")
+            + " records in --out-dir (after a cluster's tasks), running nothing")
     boolean collect;
 
-    @Option(names = "--record", paramLabel = "RUNS", description = "keep these runs' recordings (e.g. 0,5 or all) in"
+    @Option(names = "--record-runs", paramLabel = "RUNS", description = "keep these runs' recordings (e.g. 0,5 or all) in"
             + " DIR/recordings, for robosim replay")
     String record;
 
@@ -88,7 +88,7 @@ final class ExperimentCommand implements Callable<Integer> {
     boolean list;
 
     @Option(names = "--slurm", description = "submit the sweep to SLURM as a job array (sbatch), each task running"
-            + " --runs-per-task runs on its node into --out, which the nodes must share")
+            + " --runs-per-task runs on its node into --out-dir, which the nodes must share")
     boolean slurm;
 
     @Option(names = "--slurm-script", description = "only write the job script (DIR/slurm/NAME.sbatch), to submit"
@@ -132,7 +132,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         String fingerprint = ExperimentFiles.fingerprint(file);
         Path dir = (out != null ? out : Path.of("out", "experiments", e.name())).toAbsolutePath().normalize();
-        TreeSet<Integer> recorded = record == null ? new TreeSet<>() : indices("--record", record, e.runCount());
+        TreeSet<Integer> recorded = record == null ? new TreeSet<>() : indices("--record-runs", record, e.runCount());
         if (list) {
             for (int i = 0; i < e.runCount(); i++) {
                 var r = e.run(i);
@@ -164,7 +164,7 @@ final class ExperimentCommand implements Callable<Integer> {
         }
         if (!before.isEmpty() && !resume) {
             err.println("robosim experiment: " + dir + " already holds " + before.size() + " run record(s) of this"
-                    + " experiment: --resume goes on with them, or give another --out");
+                    + " experiment: --resume goes on with them, or give another --out-dir");
             return 1;
         }
         List<Integer> pending = new ArrayList<>();
@@ -245,14 +245,14 @@ final class ExperimentCommand implements Callable<Integer> {
     /** The runs named by a --run or --record value, each checked. */
     private TreeSet<Integer> indices(String option, String value, int count) {
         TreeSet<Integer> out = new TreeSet<>();
-        if (value.equals("all") && option.equals("--record")) {
+        if (value.equals("all") && option.equals("--record-runs")) {
             for (int i = 0; i < count; i++) {
                 out.add(i);
             }
             return out;
         }
         String rule = ": it is run indices from 0 to " + (count - 1) + ", e.g. 7 or 0-3,9"
-                + (option.equals("--record") ? ", or all" : "");
+                + (option.equals("--record-runs") ? ", or all" : "");
         for (String part : value.split(",")) {
             String[] ends = part.trim().split("-", -1);
             try {
@@ -338,7 +338,7 @@ final class ExperimentCommand implements Callable<Integer> {
         o.println("Job script: " + script);
         if (slurmScript) {
             o.println("Submit it with: sbatch " + script);
-            o.println("Then: " + robosim + " experiment " + file.toAbsolutePath().normalize() + " --out " + dir + " --collect");
+            o.println("Then: " + robosim + " experiment " + file.toAbsolutePath().normalize() + " --out-dir " + dir + " --collect");
             o.flush();
             return 0;
         }
@@ -353,7 +353,7 @@ final class ExperimentCommand implements Callable<Integer> {
         o.printf(Locale.ROOT, "Submitted job %s: %d task(s)%n", job, Slurm.tasks(pending.size(), runsPerTask));
         if (!await) {
             o.println("When its tasks are done: " + robosim + " experiment " + file.toAbsolutePath().normalize()
-                    + " --out " + dir + " --collect");
+                    + " --out-dir " + dir + " --collect");
             o.flush();
             return 0;
         }
@@ -394,7 +394,7 @@ final class ExperimentCommand implements Callable<Integer> {
             options.addAll(List.of("--classpath", classpath));
         }
         if (!recordedRuns.isEmpty()) {
-            options.addAll(List.of("--record", record));
+            options.addAll(List.of("--record-runs", record));
         }
         if (link != null) {
             options.addAll(List.of("--link", link));
@@ -411,10 +411,10 @@ final class ExperimentCommand implements Callable<Integer> {
 
     private List<String> workerCommand(Path dir, int index, TreeSet<Integer> recorded) {
         List<String> cmd = new ArrayList<>(launcher());
-        cmd.addAll(List.of("experiment", file.toAbsolutePath().normalize().toString(), "--out", dir.toString(),
+        cmd.addAll(List.of("experiment", file.toAbsolutePath().normalize().toString(), "--out-dir", dir.toString(),
                 "--run", Integer.toString(index)));
         if (recorded.contains(index)) {
-            cmd.addAll(List.of("--record", Integer.toString(index)));
+            cmd.addAll(List.of("--record-runs", Integer.toString(index)));
         }
         if (classpath != null) {
             cmd.addAll(List.of("--classpath", classpath));

@@ -53,7 +53,7 @@ final class SweepBench {
             c.setOut(new PrintWriter(said));
             c.setErr(new PrintWriter(said));
             long start = System.nanoTime();
-            c.execute("experiment", file.toString(), "--out", dir.toString(), "--parallel", Integer.toString(parallel),
+            c.execute("experiment", file.toString(), "--out-dir", dir.toString(), "--parallel", Integer.toString(parallel),
                     "--link", link);
             double wall = (System.nanoTime() - start) / 1e9;
             try {

@@ -67,18 +67,18 @@ class ExperimentCommandTest {
     @Test
     void theSameRunsGiveTheSameRowsAtAnyParallelismAndAResumedSweepRunsOnlyWhatIsMissing() throws Exception {
         Path f = file("tiny.yaml", TINY);
-        Run one = execute("experiment", f.toString(), "--out", dir.resolve("one").toString(), "--parallel", "1");
+        Run one = execute("experiment", f.toString(), "--out-dir", dir.resolve("one").toString(), "--parallel", "1");
         assertEquals(0, one.exit(), one.err());
         assertTrue(one.out().contains("Experiment tiny: 2 combination(s) x 2 replicate(s) = 4 runs; all to run"), one.out());
         assertTrue(one.err().contains("[4/4] run "), one.err());
-        Run two = execute("experiment", f.toString(), "--out", dir.resolve("two").toString(), "--parallel", "2",
-                "--record", "3");
+        Run two = execute("experiment", f.toString(), "--out-dir", dir.resolve("two").toString(), "--parallel", "2",
+                "--record-runs", "3");
         assertEquals(0, two.exit(), two.err());
         List<String> rows = rows(dir.resolve("one"));
         assertEquals(5, rows.size());
         assertTrue(rows.get(1).contains(",ok,") && rows.get(1).contains("gold-found"), rows.get(1));
         assertEquals(rows, rows(dir.resolve("two")), "the rows do not depend on the parallelism");
-        assertTrue(Files.size(dir.resolve("two/recordings/run-000003.rsr")) > 0, "--record kept run 3's recording");
+        assertTrue(Files.size(dir.resolve("two/recordings/run-000003.rsr")) > 0, "--record-runs kept run 3's recording");
         assertTrue(Files.exists(dir.resolve("two/plots/foundStep.png")));
         String report = Files.readString(dir.resolve("two/report.md"));
         assertTrue(report.contains("4 runs: 4 done, 0 failed, 0 missing") && report.contains("![foundStep](plots/foundStep.png)"),
@@ -86,14 +86,14 @@ class ExperimentCommandTest {
 
         // a folder with records is not overwritten...
         String before = Files.readString(dir.resolve("two/runs/run-000001.json"));
-        Run again = execute("experiment", f.toString(), "--out", dir.resolve("two").toString());
+        Run again = execute("experiment", f.toString(), "--out-dir", dir.resolve("two").toString());
         assertEquals(1, again.exit(), again.err());
         assertTrue(again.err().contains("already holds 4 run record(s) of this experiment: --resume goes on with them,"
-                + " or give another --out"), again.err());
+                + " or give another --out-dir"), again.err());
         assertEquals(before, Files.readString(dir.resolve("two/runs/run-000001.json")), "nothing was lost");
         // ...but resumed: only the run without a record runs, and gives its row again
         Files.delete(dir.resolve("two/runs/run-000002.json"));
-        Run resumed = execute("experiment", f.toString(), "--out", dir.resolve("two").toString(), "--resume");
+        Run resumed = execute("experiment", f.toString(), "--out-dir", dir.resolve("two").toString(), "--resume");
         assertEquals(0, resumed.exit(), resumed.err());
         assertTrue(resumed.out().contains("1 to run, 3 done before"), resumed.out());
         assertTrue(resumed.err().contains("[1/1] run 2 "), resumed.err());
@@ -104,7 +104,7 @@ class ExperimentCommandTest {
     void aFailedRunIsRecordedWithItsReasonAndTheOthersRun() throws Exception {
         Path f = file("mixed.yaml", TINY.replace("[robosim.examples.goldfinder.GoldFinder]",
                 "[robosim.examples.goldfinder.GoldFinder, robosim.NoSuchProgram]").replace("replicates: 2", "replicates: 1"));
-        Run r = execute("experiment", f.toString(), "--out", dir.resolve("mixed").toString(), "--parallel", "2");
+        Run r = execute("experiment", f.toString(), "--out-dir", dir.resolve("mixed").toString(), "--parallel", "2");
         assertEquals(1, r.exit(), r.err());
         assertTrue(r.out().contains("Runs: 4 of 4 recorded, 2 failed"), r.out());
         List<String> lines = Files.readAllLines(dir.resolve("mixed/results.csv"));
@@ -117,7 +117,7 @@ class ExperimentCommandTest {
     @Test
     void aBadFileIsToldWithItsLineAndRunsNothing() throws Exception {
         Path f = file("bad.yaml", TINY.replace("team: [1, 2]", "team: [1, -2]"));
-        Run r = execute("experiment", f.toString(), "--out", dir.resolve("bad").toString());
+        Run r = execute("experiment", f.toString(), "--out-dir", dir.resolve("bad").toString());
         assertEquals(2, r.exit(), r.err());
         assertEquals("robosim experiment: " + f + " line 6: -2 is given for programs' count: it must be from 0 to 10000"
                 + " in run 2 (program=robosim.examples.goldfinder.GoldFinder, team=-2)", r.firstLine());
@@ -127,7 +127,7 @@ class ExperimentCommandTest {
     @Test
     void theScriptForAClusterPassesTheRequestOnAndSplitsTheRunsIntoTasks() throws Exception {
         Path f = file("tiny.yaml", TINY);
-        Run r = execute("experiment", f.toString(), "--out", dir.resolve("c").toString(), "--slurm-script",
+        Run r = execute("experiment", f.toString(), "--out-dir", dir.resolve("c").toString(), "--slurm-script",
                 "--partition", "short", "--time", "00:20:00", "--cpus-per-task", "2", "--mem", "2G", "--runs-per-task", "3");
         assertEquals(0, r.exit(), r.err());
         Path script = dir.resolve("c/slurm/tiny.sbatch");
@@ -136,7 +136,7 @@ class ExperimentCommandTest {
                 "#SBATCH --cpus-per-task=2", "#SBATCH --mem=2G", "#SBATCH --output=" + dir.resolve("c/slurm") + "/task-%A_%a.out")) {
             assertTrue(s.contains(line + "\n"), line + " in\n" + s);
         }
-        assertTrue(s.contains(" experiment '" + f + "' --out '" + dir.resolve("c") + "' --run \"$runs\""), s);
+        assertTrue(s.contains(" experiment '" + f + "' --out-dir '" + dir.resolve("c") + "' --run \"$runs\""), s);
         assertEquals(List.of("0-2", "3"), Files.readAllLines(dir.resolve("c/slurm/tiny.runs")));
         assertTrue(r.out().contains("Submit it with: sbatch " + script), r.out());
         Run bad = execute("experiment", f.toString(), "--slurm-script", "--partition", "a b");
@@ -154,9 +154,9 @@ class ExperimentCommandTest {
         Assumptions.assumeTrue(cluster, "no SLURM cluster answers sinfo here (.ci/run starts one;"
                 + " sudo .ci/slurm-cluster start on a developer's machine)");
         String small = RobotParameterFiles.root().resolve("examples/experiments/goldfinder-small.yaml").toString();
-        Run local = execute("experiment", small, "--out", dir.resolve("local").toString(), "--parallel", "2");
+        Run local = execute("experiment", small, "--out-dir", dir.resolve("local").toString(), "--parallel", "2");
         assertEquals(0, local.exit(), local.err());
-        Run slurm = execute("experiment", small, "--out", dir.resolve("slurm").toString(), "--slurm", "--wait");
+        Run slurm = execute("experiment", small, "--out-dir", dir.resolve("slurm").toString(), "--slurm", "--wait");
         assertEquals(0, slurm.exit(), slurm.out() + slurm.err());
         assertTrue(slurm.out().contains("Submitted job "), slurm.out());
         assertTrue(slurm.out().contains("Runs: 8 of 8 recorded, 0 failed"), slurm.out());
