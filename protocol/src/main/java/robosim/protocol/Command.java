@@ -385,8 +385,9 @@ public sealed interface Command {
             for (int i = 0; i < reason.length(); i++) {
                 char c = reason.charAt(i);
                 if (Character.isISOControl(c)) {
-                    throw new IllegalArgumentException(String.format(Locale.ROOT, "a reason with the control character U+%04X at"
-                            + " index %d was supplied for ending the run: it is one line of text", (int) c, i));
+                    throw new IllegalArgumentException(String.format(Locale.ROOT, "a reason with the control"
+                            + " character U+%04X at index %d was supplied for ending the run: it is one line of text",
+                            (int) c, i));
                 }
             }
         }

@@ -82,9 +82,11 @@ class CommandTest {
                 refused("Say(1001 characters)", () -> new Command.Say("x".repeat(1001)),
                         "a robot says at most 1000 characters, not 1001"),
                 refused("ReportMetric(null name)", () -> new Command.ReportMetric(null, 1),
-                        "null was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or '-'"),
+                        "null was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
+                                + " '-'"),
                 refused("ReportMetric(empty name)", () -> new Command.ReportMetric("", 1),
-                        "'' was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or '-'"),
+                        "'' was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
+                                + " '-'"),
                 refused("ReportMetric(name starting with a digit)", () -> new Command.ReportMetric("2nd", 1),
                         "'2nd' was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
                                 + " '-'"),

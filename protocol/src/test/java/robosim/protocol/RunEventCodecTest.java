@@ -138,7 +138,8 @@ class RunEventCodecTest {
     @ParameterizedTest
     @MethodSource("brokenMetrics")
     void aSnapshotsMetricThatBreaksTheRuleIsAnInvalidValue(String metric, String rule) {
-        byte[] frame = json("{\"type\":\"frame\",\"step\":5,\"timeMs\":500,\"robots\":[],\"metrics\":[" + metric + "]}");
+        byte[] frame = json("{\"type\":\"frame\",\"step\":5,\"timeMs\":500,\"robots\":[],\"metrics\":["
+                + metric + "]}");
 
         InvalidValueException e = assertThrows(InvalidValueException.class, () -> JSON.decode(frame));
 

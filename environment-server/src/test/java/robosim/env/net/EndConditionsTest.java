@@ -107,7 +107,8 @@ class EndConditionsTest {
         steps(sim, 811);
         assertNull(EndConditions.ending(sim, rules, 0));
 
-        sim.step(Map.of("r2", List.of(new Command.EndRun("gold found")), "r1", List.of(new Command.EndRun("me first"))));
+        sim.step(Map.of("r2", List.of(new Command.EndRun("gold found")),
+                "r1", List.of(new Command.EndRun("me first"))));
 
         assertEquals(new EndOfRun(RunEnding.ROBOT_ENDED, "ended by robot r1 at step 812: me first"),
                 EndConditions.ending(sim, rules, 0), "r1 comes before r2 in the world: its request is the first");

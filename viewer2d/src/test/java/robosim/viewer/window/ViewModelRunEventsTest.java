@@ -16,8 +16,8 @@ class ViewModelRunEventsTest {
 
         model.snapshots(List.of(Fixtures.snapshot(811, Fixtures.robotAtRest())
                         .withRunEvents(List.of(new Snapshot.Metric("r1", "cells", 40)), null),
-                Fixtures.snapshot(812, Fixtures.robotAtRest()).withRunEvents(
-                        List.of(new Snapshot.Metric("r1", "cells", 41)), new Snapshot.EndRequest("r1", 812, "gold found"))));
+                Fixtures.snapshot(812, Fixtures.robotAtRest()).withRunEvents(List.of(
+                        new Snapshot.Metric("r1", "cells", 41)), new Snapshot.EndRequest("r1", 812, "gold found"))));
 
         assertEquals(List.of("step 812: robot r1 ended the run: gold found"), model.messages());
     }
