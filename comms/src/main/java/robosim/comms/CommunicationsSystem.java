@@ -2,6 +2,7 @@ package robosim.comms;
 
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -23,6 +24,8 @@ public final class CommunicationsSystem {
     private final List<String> robots;
     private final Map<String, Set<String>> groups = new TreeMap<>();
     private final List<InFlight> inFlight = new ArrayList<>();
+    /** Each sender's copies dropped on the way to a recipient, since the system was made. */
+    private final Map<String, Long> lost = new HashMap<>();
     private final SplittableRandom random;
     private CommsSettings settings;
 
@@ -155,9 +158,15 @@ public final class CommunicationsSystem {
             Command.SendMessage m = f.message();
             String to = m.mode() == Command.Addressing.ALL ? "*" : m.to();
             for (String r : recipients(f)) {
-                if (connected.contains(r) && reaches(f.from(), r, positions)) {
+                if (!connected.contains(r)) {
+                    // a robot without a program receives nothing: no copy was on its way to be lost
+                    continue;
+                }
+                if (reaches(f.from(), r, positions)) {
                     out.computeIfAbsent(r, k -> new ArrayList<>())
                             .add(new MessageDelivery(f.from(), m.mode(), to, m.kind(), m.body(), f.sentStep(), m.id()));
+                } else {
+                    lost.merge(f.from(), 1L, Long::sum);
                 }
             }
         }
@@ -185,6 +194,18 @@ public final class CommunicationsSystem {
         }
         // one draw per message and recipient that got this far, so the stream stays in step
         return settings.lossProbability() == 0 || random.nextDouble() >= settings.lossProbability();
+    }
+
+    /**
+     * Copies of a robot's messages dropped on the way to a recipient whose program is connected: out
+     * of range, behind a wall, or lost by chance; a message to three robots that reaches one counts
+     * two. Copies for robots without a program are not counted.
+     *
+     * @param sender a robot
+     * @return its copies dropped since the system was made
+     */
+    public long lost(String sender) {
+        return lost.getOrDefault(sender, 0L);
     }
 
     /** @return messages sent and not yet delivered */

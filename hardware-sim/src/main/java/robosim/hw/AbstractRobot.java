@@ -378,6 +378,47 @@ public abstract class AbstractRobot {
     }
 
     /**
+     * Reports one of the robot's figures for the run's results, such as the cells it has explored or
+     * the step it reached its goal: the Environment keeps the last value of each name for the run's
+     * report (an experiment's table takes it from there), and recordings and viewers see each report.
+     * Report a figure when it changes, or once at the end; reporting it every step costs a little on
+     * the wire and nothing else.
+     *
+     * <p>The report goes with the robot's next requests, as every command does, so the run is the
+     * same at any speed. The Environment keeps at most {@value Command.ReportMetric#MAX_METRICS} names
+     * per robot: a new name past them is not kept, and the robot reads why in its next state
+     * ({@link #pollRequestError()}). A robot that is not connected sends nothing.
+     *
+     * @param name  the figure's name: a letter, then up to 63 letters, digits, {@code _}, {@code .} or
+     *              {@code -}, such as {@code cellsExplored}
+     * @param value its value now
+     * @throws IllegalArgumentException if the name breaks that rule or the value is not finite, saying
+     *                                  which
+     */
+    public void reportMetric(String name, double value) {
+        request(new Command.ReportMetric(name, value));
+    }
+
+    /**
+     * Asks the Environment to end the run, as a program does that has found what it looked for or
+     * knows the run has nothing more to show. The run ends after the step the request goes with (the
+     * robot's next requests, as every command); every robot's part then ends with the run's end
+     * ({@link RunEnd.Kind#RUN_ENDED}), and the run's report names this robot, the step and the reason.
+     * Only the first request of a run counts, whichever robot made it.
+     *
+     * <p>Keep the robot in the run until then: wait for the end (ARIA's {@code waitForRunExit}, or a
+     * sleep in simulated time) rather than disconnect or return from {@code main} at once, which
+     * would leave without sending the request.
+     *
+     * @param reason why, for the run's report and log, such as {@code gold found}: 1 to
+     *               {@value Command.EndRun#MAX_REASON} characters, one line (no control characters)
+     * @throws IllegalArgumentException if the reason breaks that rule, saying how
+     */
+    public void endRun(String reason) {
+        request(new Command.EndRun(reason));
+    }
+
+    /**
      * @param group a group whose multicasts this robot will receive
      * @throws IllegalArgumentException if it is null or blank
      */

@@ -105,6 +105,12 @@ final class CommandToPackets {
         if (c instanceof Command.Draw) {
             return refuse("drawings in the world's views", "Draw");
         }
+        if (c instanceof Command.ReportMetric) {
+            return refuse("metrics for the run's results", "ReportMetric");
+        }
+        if (c instanceof Command.EndRun) {
+            return refuse("request to end the run", "EndRun");
+        }
         return refuse("messages between robots", c.getClass().getSimpleName());
     }
 

@@ -3,6 +3,7 @@ package robosim.hw;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robosim.hw.FakeLink.WAIT_MS;
 
@@ -102,6 +103,38 @@ class AbstractRobotUnitTest {
         link.step(1);
         assertEquals(List.of(new RobotRequest(new Command.Draw("map", List.of(cell))),
                 new RobotRequest(new Command.Draw("frontier", List.of()))), link.next().requests());
+    }
+
+    @Test
+    void metricsAndAnEndRequestLeaveWithTheStepsRobotRequests() throws Exception {
+        run(() -> {
+            robot.reportMetric("cellsExplored", 12);
+            robot.endRun("gold found");
+            robot.sleepSimulated(100);
+        });
+        link.step(1);
+        assertEquals(List.of(new RobotRequest(new Command.ReportMetric("cellsExplored", 12)),
+                new RobotRequest(new Command.EndRun("gold found"))), link.next().requests());
+    }
+
+    @Test
+    void aMetricOrAReasonThatBreaksItsRuleIsRefusedAtTheCallAndNothingIsSent() throws Exception {
+        String[] refused = new String[3];
+        run(() -> {
+            refused[0] = assertThrows(IllegalArgumentException.class,
+                    () -> robot.reportMetric("cells explored", 1)).getMessage();
+            refused[1] = assertThrows(IllegalArgumentException.class,
+                    () -> robot.reportMetric("cells", Double.NaN)).getMessage();
+            refused[2] = assertThrows(IllegalArgumentException.class, () -> robot.endRun("")).getMessage();
+            robot.say("after");
+            robot.sleepSimulated(100);
+        });
+        link.step(1);
+        assertEquals(List.of(new RobotRequest(new Command.Say("after"))), link.next().requests());
+        assertEquals("'cells explored' was supplied for a metric's name: a letter, then up to 63 letters, digits,"
+                + " '_', '.' or '-'", refused[0]);
+        assertEquals("NaN was supplied for metric cells: it must be a finite number", refused[1]);
+        assertEquals("a reason of 0 characters was supplied for ending the run: 1 to 200 characters", refused[2]);
     }
 
     @Test

@@ -102,6 +102,18 @@ class CommandToPacketsTest {
     }
 
     @Test
+    void aMetricAndAnEndRequestAreRefusedSayingWhatThePioneerProtocolLacks() {
+        assertTrue(to.packets(new Command.ReportMetric("cells", 3)).isEmpty());
+        assertTrue(to.packets(new Command.EndRun("done")).isEmpty());
+        List<String> errors = to.takeErrors();
+        assertEquals(2, errors.size(), errors.toString());
+        assertTrue(errors.get(0).startsWith("ReportMetric was not carried out") && errors.get(0).contains(
+                "which has no metrics for the run's results"), errors.get(0));
+        assertTrue(errors.get(1).startsWith("EndRun was not carried out") && errors.get(1).contains(
+                "which has no request to end the run"), errors.get(1));
+    }
+
+    @Test
     void theCameraIsRefusedNamingTheAuxPort() {
         assertTrue(to.packets(new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300)).isEmpty());
         assertTrue(to.packets(new Command.AimPtz(10, 0, 0)).isEmpty());

@@ -3,6 +3,7 @@ package robosim.protocol;
 import com.fasterxml.jackson.annotation.JsonSubTypes;
 import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * A request of a robot: ARIA's direct motion commands, switching its sensors, messages to other
@@ -46,6 +47,8 @@ import java.util.List;
         @JsonSubTypes.Type(value = Command.SetSonarCycle.class, name = "sonarCycle"),
         @JsonSubTypes.Type(value = Command.SetMotors.class, name = "motors"),
         @JsonSubTypes.Type(value = Command.Draw.class, name = "draw"),
+        @JsonSubTypes.Type(value = Command.ReportMetric.class, name = "metric"),
+        @JsonSubTypes.Type(value = Command.EndRun.class, name = "endRun"),
 })
 public sealed interface Command {
     /** Commands carried out by the robot's drive controller. */
@@ -294,6 +297,98 @@ public sealed interface Command {
             if (text == null || text.length() > 1000) {
                 throw new IllegalArgumentException("a robot says at most 1000 characters, not "
                         + (text == null ? "nothing" : text.length()));
+            }
+        }
+    }
+
+    /**
+     * Reports one of the robot's figures for the run's results, such as the cells it explored: the
+     * Environment keeps the last value of each name for the run's report, and its recordings and
+     * viewers see each report. It keeps at most {@value #MAX_METRICS} names per robot and refuses a
+     * new name past them with an error the robot reads next.
+     *
+     * Its constructor throws IllegalArgumentException if the name is not a letter followed by up to
+     * 63 letters, digits, {@code _}, {@code .} or {@code -}, or the value is not finite.
+     *
+     * @param name  what the figure is called, such as {@code cellsExplored}
+     * @param value its value now
+     */
+    record ReportMetric(String name, double value) implements RunEvent {
+        /** The most names one robot may report in a run. */
+        public static final int MAX_METRICS = 64;
+        /** The most characters in a name. */
+        public static final int MAX_NAME = 64;
+
+        public ReportMetric {
+            requireName(name);
+            requireValue(name, value);
+        }
+
+        /**
+         * The rule for a metric's name, as one rule for every place that takes one.
+         *
+         * @param name the name
+         * @throws IllegalArgumentException if it is not a letter followed by up to 63 letters,
+         *                                  digits, {@code _}, {@code .} or {@code -}
+         */
+        public static void requireName(String name) {
+            if (name == null || !name.matches("[A-Za-z][A-Za-z0-9_.-]{0," + (MAX_NAME - 1) + "}")) {
+                String what = name == null ? "null" : name.length() > MAX_NAME
+                        ? "a name of " + name.length() + " characters" : "'" + name + "'";
+                throw new IllegalArgumentException(what + " was supplied for a metric's name: a letter, then up to "
+                        + (MAX_NAME - 1) + " letters, digits, '_', '.' or '-'");
+            }
+        }
+
+        /**
+         * The rule for a metric's value, as one rule for every place that takes one.
+         *
+         * @param name  the metric's name, for the message
+         * @param value its value
+         * @throws IllegalArgumentException if it is not finite
+         */
+        public static void requireValue(String name, double value) {
+            finite("metric " + name, value);
+        }
+    }
+
+    /**
+     * Asks the Environment to end the run after this step, as a program does that has found what it
+     * looked for. The first request of a run counts: the run ends after the step it came in, its
+     * report names the robot, the step and the reason; later requests change nothing.
+     *
+     * Its constructor throws IllegalArgumentException if the reason is not 1 to
+     * {@value #MAX_REASON} characters, or holds a control character (a line break, a tab, ...).
+     *
+     * @param reason why, for the run's report and log, such as {@code gold found}
+     */
+    record EndRun(String reason) implements RunEvent {
+        /** The most characters in a reason. */
+        public static final int MAX_REASON = 200;
+
+        public EndRun {
+            requireReason(reason);
+        }
+
+        /**
+         * The rule for the reason of an end request, as one rule for every place that takes one.
+         *
+         * @param reason the reason
+         * @throws IllegalArgumentException if it is not 1 to {@value #MAX_REASON} characters, or
+         *                                  holds a control character
+         */
+        public static void requireReason(String reason) {
+            if (reason == null || reason.isEmpty() || reason.length() > MAX_REASON) {
+                throw new IllegalArgumentException((reason == null ? "null" : "a reason of " + reason.length()
+                        + " characters") + " was supplied for ending the run: 1 to " + MAX_REASON + " characters");
+            }
+            for (int i = 0; i < reason.length(); i++) {
+                char c = reason.charAt(i);
+                if (Character.isISOControl(c)) {
+                    throw new IllegalArgumentException(String.format(Locale.ROOT, "a reason with the control"
+                            + " character U+%04X at index %d was supplied for ending the run: it is one line of text",
+                            (int) c, i));
+                }
             }
         }
     }

@@ -18,11 +18,19 @@ import java.util.List;
  * @param drawings the robots' drawings that changed in this step (one with no figures was cleared);
  *                 a viewer that attaches gets every robot's current drawings in its first snapshot.
  *                 Absent (read as none) when none changed, and in recordings made before robots drew
+ * @param metrics  the metrics robots reported in this step ({@link Command.ReportMetric}), the last
+ *                 value of each robot's name in the step, in the order they were first reported in it;
+ *                 absent (read as none) when none was, and in recordings made before robots reported them
+ * @param endRequest the robot's request to end the run that ends it after this step
+ *                 ({@link Command.EndRun}), in the snapshot of the step it came in; absent (null)
+ *                 otherwise, and in recordings made before robots could end a run
  */
 public record Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages,
                           List<Said> said, List<Event> events,
                        @JsonInclude(JsonInclude.Include.NON_EMPTY) List<ObjectView> objects,
-                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<Drawing> drawings) implements Message {
+                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<Drawing> drawings,
+                       @JsonInclude(JsonInclude.Include.NON_EMPTY) List<Metric> metrics,
+                       @JsonInclude(JsonInclude.Include.NON_NULL) EndRequest endRequest) implements Message {
     /** Copies the lists so the record stays immutable. */
     public Snapshot {
         robots = List.copyOf(robots);
@@ -31,6 +39,24 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
         events = events == null ? List.of() : List.copyOf(events);
         objects = objects == null ? List.of() : List.copyOf(objects);
         drawings = drawings == null ? List.of() : List.copyOf(drawings);
+        metrics = metrics == null ? List.of() : List.copyOf(metrics);
+    }
+
+    /**
+     * A snapshot in which no robot reported a metric or asked to end the run.
+     *
+     * @param step     the step just completed
+     * @param timeMs   simulated time after it
+     * @param robots   every robot
+     * @param messages the messages robots sent in this step
+     * @param said     what robots said in this step
+     * @param events   the robots that joined or went since the snapshot before
+     * @param objects  the world's objects where they are now
+     * @param drawings the robots' drawings that changed in this step
+     */
+    public Snapshot(long step, long timeMs, List<RobotView> robots, List<MessageDelivery> messages, List<Said> said,
+                    List<Event> events, List<ObjectView> objects, List<Drawing> drawings) {
+        this(step, timeMs, robots, messages, said, events, objects, drawings, List.of(), null);
     }
 
     /**
@@ -55,7 +81,7 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those drawings
      */
     public Snapshot withDrawings(List<Drawing> changed) {
-        return new Snapshot(step, timeMs, robots, messages, said, events, objects, changed);
+        return new Snapshot(step, timeMs, robots, messages, said, events, objects, changed, metrics, endRequest);
     }
 
     /**
@@ -101,7 +127,61 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those events
      */
     public Snapshot withEvents(List<Event> happened) {
-        return new Snapshot(step, timeMs, robots, messages, said, happened, objects, drawings);
+        return new Snapshot(step, timeMs, robots, messages, said, happened, objects, drawings, metrics, endRequest);
+    }
+
+    /**
+     * @param reported   the metrics robots reported in this step
+     * @param endRequest the request to end the run that came in this step, or null
+     * @return this snapshot with those run events
+     */
+    public Snapshot withRunEvents(List<Metric> reported, EndRequest endRequest) {
+        return new Snapshot(step, timeMs, robots, messages, said, events, objects, drawings, reported, endRequest);
+    }
+
+    /**
+     * A metric a robot reported ({@link Command.ReportMetric}), for viewers and recordings.
+     *
+     * @param robot the robot
+     * @param name  the metric's name
+     * @param value its value
+     */
+    public record Metric(String robot, String name, double value) {
+        /**
+         * @throws IllegalArgumentException if the robot is missing, or the name or the value breaks
+         *                                  {@link Command.ReportMetric}'s rules
+         */
+        public Metric {
+            if (robot == null || robot.isEmpty()) {
+                throw new IllegalArgumentException("metric " + name + " needs the robot that reported it");
+            }
+            Command.ReportMetric.requireName(name);
+            Command.ReportMetric.requireValue(name, value);
+        }
+    }
+
+    /**
+     * A robot's request to end the run ({@link Command.EndRun}), the first of the run, which ended it.
+     *
+     * @param robot  the robot
+     * @param step   the step it came in; the run ended after it
+     * @param reason why, as the robot said it
+     */
+    public record EndRequest(String robot, long step, String reason) {
+        /**
+         * @throws IllegalArgumentException if the robot is missing, the step is below 1, or the reason
+         *                                  breaks {@link Command.EndRun}'s rule
+         */
+        public EndRequest {
+            if (robot == null || robot.isEmpty()) {
+                throw new IllegalArgumentException("a request to end the run needs the robot that made it");
+            }
+            if (step < 1) {
+                throw new IllegalArgumentException(step + " was supplied for the step of robot " + robot
+                        + "'s request to end the run: steps count from 1");
+            }
+            Command.EndRun.requireReason(reason);
+        }
     }
 
     /**
@@ -243,7 +323,7 @@ public record Snapshot(long step, long timeMs, List<RobotView> robots, List<Mess
      * @return this snapshot with those objects
      */
     public Snapshot withObjects(List<ObjectView> others) {
-        return new Snapshot(step, timeMs, robots, messages, said, events, others, drawings);
+        return new Snapshot(step, timeMs, robots, messages, said, events, others, drawings, metrics, endRequest);
     }
 
     /**

@@ -80,7 +80,38 @@ class CommandTest {
                 refused("Say(null)", () -> new Command.Say(null),
                         "a robot says at most 1000 characters, not nothing"),
                 refused("Say(1001 characters)", () -> new Command.Say("x".repeat(1001)),
-                        "a robot says at most 1000 characters, not 1001"));
+                        "a robot says at most 1000 characters, not 1001"),
+                refused("ReportMetric(null name)", () -> new Command.ReportMetric(null, 1),
+                        "null was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
+                                + " '-'"),
+                refused("ReportMetric(empty name)", () -> new Command.ReportMetric("", 1),
+                        "'' was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
+                                + " '-'"),
+                refused("ReportMetric(name starting with a digit)", () -> new Command.ReportMetric("2nd", 1),
+                        "'2nd' was supplied for a metric's name: a letter, then up to 63 letters, digits, '_', '.' or"
+                                + " '-'"),
+                refused("ReportMetric(name with a space)", () -> new Command.ReportMetric("cells explored", 1),
+                        "'cells explored' was supplied for a metric's name: a letter, then up to 63 letters, digits,"
+                                + " '_', '.' or '-'"),
+                refused("ReportMetric(name of 65 characters)", () -> new Command.ReportMetric("m".repeat(65), 1),
+                        "a name of 65 characters was supplied for a metric's name: a letter, then up to 63 letters,"
+                                + " digits, '_', '.' or '-'"),
+                refused("ReportMetric(NaN)", () -> new Command.ReportMetric("cells", Double.NaN),
+                        "NaN was supplied for metric cells: it must be a finite number"),
+                refused("ReportMetric(-Infinity)", () -> new Command.ReportMetric("cells", Double.NEGATIVE_INFINITY),
+                        "-Infinity was supplied for metric cells: it must be a finite number"),
+                refused("EndRun(null)", () -> new Command.EndRun(null),
+                        "null was supplied for ending the run: 1 to 200 characters"),
+                refused("EndRun(empty)", () -> new Command.EndRun(""),
+                        "a reason of 0 characters was supplied for ending the run: 1 to 200 characters"),
+                refused("EndRun(201 characters)", () -> new Command.EndRun("x".repeat(201)),
+                        "a reason of 201 characters was supplied for ending the run: 1 to 200 characters"),
+                refused("EndRun(a line break)", () -> new Command.EndRun("gold\nfound"),
+                        "a reason with the control character U+000A at index 4 was supplied for ending the run: it is"
+                                + " one line of text"),
+                refused("EndRun(a C1 control)", () -> new Command.EndRun("gold\u0085"),
+                        "a reason with the control character U+0085 at index 4 was supplied for ending the run: it is"
+                                + " one line of text"));
     }
 
     private static Arguments refused(String what, Executable make, String rule) {
@@ -103,5 +134,9 @@ class CommandTest {
         assertDoesNotThrow(() -> new Command.Say("x".repeat(1000)));
         assertDoesNotThrow(() -> new Command.SetVel(-Double.MAX_VALUE));
         assertDoesNotThrow(() -> new Command.SetAccel(Double.MIN_VALUE, Double.MIN_VALUE));
+        assertDoesNotThrow(() -> new Command.ReportMetric("m", -Double.MAX_VALUE));
+        assertDoesNotThrow(() -> new Command.ReportMetric("m" + "a1_.-".repeat(12) + "xyz", 0));
+        assertDoesNotThrow(() -> new Command.EndRun("x"));
+        assertDoesNotThrow(() -> new Command.EndRun("gold found ✓ ".repeat(15) + "x".repeat(5)));
     }
 }

@@ -364,7 +364,9 @@ class MessageCodecTest {
                 + "{\"cmd\":\"sonarCycle\",\"msPerFiring\":40},"
                 + "{\"cmd\":\"motors\",\"on\":true},"
                 + "{\"cmd\":\"draw\",\"layer\":\"frontier\",\"figures\":[{\"kind\":\"cells\",\"color\":\"#ff0000\","
-                + "\"xy\":[0.0,0.0,500.0,500.0]}]}]}", json);
+                + "\"xy\":[0.0,0.0,500.0,500.0]}]},"
+                + "{\"cmd\":\"metric\",\"name\":\"cellsExplored\",\"value\":37.5},"
+                + "{\"cmd\":\"endRun\",\"reason\":\"gold found ✓\"}]}", json);
     }
 
     @Test

@@ -94,7 +94,9 @@ final class Messages {
                 new Command.BindChannel(3, "#00ff7f"),
                 new Command.SetSonarCycle(40),
                 new Command.SetMotors(true),
-                new Command.Draw("frontier", List.of(new Figure(Figure.CELLS, "red", new double[] {0, 0, 500, 500})))));
+                new Command.Draw("frontier", List.of(new Figure(Figure.CELLS, "red", new double[] {0, 0, 500, 500}))),
+                new Command.ReportMetric("cellsExplored", 37.5),
+                new Command.EndRun("gold found ✓")));
     }
 
     static ViewerHello viewerHello() {
@@ -116,7 +118,10 @@ final class Messages {
                 new Snapshot.RobotView("robot2", 8000, 9000.75, -90, false, false, new int[] {118, 101},
                         8010.5, 8990, -89.5, new int[] {3000, 2999, 2998}, 0.5, -120.5, 3.25)),
                 List.of(new MessageDelivery("robot1", Command.Addressing.ALL, "*", "text", "gold!", 42, 9)),
-                List.of(new Snapshot.Said("robot2", "hello")));
+                List.of(new Snapshot.Said("robot2", "hello")))
+                .withRunEvents(List.of(new Snapshot.Metric("robot1", "cellsExplored", 37.5),
+                        new Snapshot.Metric("robot2", "gold.distance", -0.25)),
+                        new Snapshot.EndRequest("robot1", 42, "gold found ✓"));
     }
 
     static Bye bye() {

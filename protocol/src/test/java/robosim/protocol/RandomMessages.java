@@ -120,7 +120,7 @@ public final class RandomMessages {
     }
 
     Command command() {
-        return switch (random.nextInt(29)) {
+        return switch (random.nextInt(31)) {
             case 0 -> new Command.SetVel(finite());
             case 1 -> new Command.SetRotVel(finite());
             case 2 -> new Command.SetVel2(finite(), finite());
@@ -155,6 +155,8 @@ public final class RandomMessages {
                     random.nextBoolean() ? null : Colors.format(random.nextInt(0x1000000)));
             case 27 -> new Command.SetSonarCycle(random.nextInt(Command.SetSonarCycle.MAX_SONAR_CYCLE_MS + 1));
             case 28 -> new Command.SetMotors(random.nextBoolean());
+            case 29 -> new Command.ReportMetric("m" + Integer.toString(random.nextInt(1 << 20), 36), finite());
+            case 30 -> new Command.EndRun("r" + text(100).replaceAll("\\p{Cc}", "_"));
             default -> new Command.SetAccel(positive(), positive());
         };
     }

@@ -288,6 +288,25 @@ public final class Nomad {
         return s != null && s.tk(text);
     }
 
+    /**
+     * @param name  the figure's name
+     * @param value its value now
+     * @return see {@link Scout#report_metric}
+     */
+    public static boolean report_metric(String name, double value) {
+        Scout s = robot;
+        return s != null && s.report_metric(name, value);
+    }
+
+    /**
+     * @param reason why the run should end
+     * @return see {@link Scout#end_run}
+     */
+    public static boolean end_run(String reason) {
+        Scout s = robot;
+        return s != null && s.end_run(reason);
+    }
+
     private static boolean copy(Scout s, boolean ok) {
         System.arraycopy(s.State, 0, State, 0, StateVector.NUM_STATE);
         return ok;

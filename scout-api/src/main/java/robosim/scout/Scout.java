@@ -449,6 +449,50 @@ public class Scout extends AbstractRobot {
         return true;
     }
 
+    /**
+     * Reports one of the robot's figures for the run's results (RoboSim's own call; the Nomad
+     * library has none): the Environment keeps the last value of each name for the run's report, and
+     * recordings and viewers see each report. It is sent with the step's requests, as the motion
+     * calls are. See {@link #reportMetric} for the rules.
+     *
+     * @param name  the figure's name: a letter, then up to 63 letters, digits, {@code _}, {@code .} or
+     *              {@code -}, such as {@code cellsExplored}
+     * @param value its value now, a finite number
+     * @return true if sent; false if the robot is not connected, or the name or value breaks its rule
+     *         (nothing is sent then, and the rule is logged)
+     */
+    public boolean report_metric(String name, double value) {
+        Command.ReportMetric metric;
+        try {
+            metric = new Command.ReportMetric(name, value);
+        } catch (IllegalArgumentException e) {
+            LOG.warning(() -> "robot " + getName() + ": report_metric sent nothing: " + e.getMessage());
+            return false;
+        }
+        return send(metric);
+    }
+
+    /**
+     * Asks the Environment to end the run after this step (RoboSim's own call): the run's report
+     * names this robot, the step and the reason; only the first request of a run counts. Keep the
+     * robot in the run until it ends (a loop around {@link #gs} that runs until it returns false),
+     * so that the request is sent. See {@link #endRun}.
+     *
+     * @param reason why, such as {@code gold found}: 1 to 200 characters, one line
+     * @return true if sent; false if the robot is not connected, or the reason breaks its rule
+     *         (nothing is sent then, and the rule is logged)
+     */
+    public boolean end_run(String reason) {
+        Command.EndRun end;
+        try {
+            end = new Command.EndRun(reason);
+        } catch (IllegalArgumentException e) {
+            LOG.warning(() -> "robot " + getName() + ": end_run sent nothing: " + e.getMessage());
+            return false;
+        }
+        return send(end);
+    }
+
     // ---- helpers ----
 
     private boolean awaitReply() {

@@ -82,6 +82,23 @@ class MotionCommandTest {
     }
 
     @Test
+    void reportMetricAndEndRunSendTheirCommands() {
+        assertTrue(scout.report_metric("cellsExplored", 14));
+        assertTrue(scout.end_run("gold found"));
+        assertEquals(List.of(new Command.ReportMetric("cellsExplored", 14), new Command.EndRun("gold found")),
+                scout.sent);
+    }
+
+    @Test
+    void aMetricOrAReasonThatBreaksItsRuleIsFalseAndSendsNothing() {
+        assertFalse(scout.report_metric("cells explored", 1));
+        assertFalse(scout.report_metric("cells", Double.POSITIVE_INFINITY));
+        assertFalse(scout.end_run("line one\nline two"));
+        assertFalse(scout.end_run(null));
+        assertEquals(List.of(), scout.sent);
+    }
+
+    @Test
     void unsupportedCallsReturnFalseAndSendNothing() {
         assertFalse(scout.pa(10, 10, 0));
         assertFalse(scout.conf_ir(5, new int[] {0, 1, 255}));
@@ -111,6 +128,8 @@ class MotionCommandTest {
         assertFalse(scout.conf_tm(1));
         assertFalse(scout.conf_sn(1, new int[] {0}));
         assertFalse(scout.tk("x"));
+        assertFalse(scout.report_metric("cells", 1));
+        assertFalse(scout.end_run("done"));
         assertFalse(scout.disconnect_robot());
         assertEquals(List.of(), scout.sent);
     }

@@ -30,6 +30,8 @@ class NomadTest {
         assertFalse(Nomad.da(0, 0));
         assertFalse(Nomad.conf_sn(10, new int[] {0}));
         assertFalse(Nomad.tk("hello"));
+        assertFalse(Nomad.report_metric("cells", 1));
+        assertFalse(Nomad.end_run("done"));
         assertFalse(Nomad.disconnect_robot(1));
         assertFalse(Nomad.disconnect_robot("s1"));
     }

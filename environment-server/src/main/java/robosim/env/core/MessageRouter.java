@@ -84,6 +84,11 @@ final class MessageRouter {
         return tallies.getOrDefault(robot, new long[2]).clone();
     }
 
+    /** @return the copies of the robot's messages dropped on the way to a recipient, since the run started */
+    long lost(String robot) {
+        return comms.lost(robot);
+    }
+
     List<MessageDelivery> delivered(String robot) {
         return delivered.getOrDefault(robot, List.of());
     }

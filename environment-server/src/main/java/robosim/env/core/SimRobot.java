@@ -45,6 +45,8 @@ final class SimRobot {
     private double rotVel;
     private boolean stalled;
     private int collisions;
+    /** How many times the stall flag went up. */
+    private int stalls;
     private double distance;
     private final RobotSensors sensors;
     private final Odometry odometry;
@@ -140,8 +142,10 @@ final class SimRobot {
         drive.travelled(covered - half, covered + half);
         sensors.moved(new Sensor.Moved(geometry, bodyId, th, covered - half, covered + half, dt));
         if (r.blocked()) {
+            // a collision is counted as the robot becomes stalled, not at each step it stays so
             if (!stalled) {
                 collisions++;
+                stalls++;
             }
             stalled = true;
             vel = 0;
@@ -240,6 +244,10 @@ final class SimRobot {
 
     int collisions() {
         return collisions;
+    }
+
+    int stalls() {
+        return stalls;
     }
 
     double distance() {

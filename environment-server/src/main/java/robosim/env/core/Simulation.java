@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
@@ -439,13 +440,37 @@ public final class Simulation {
 
     /**
      * @param name a robot
-     * @return its true pose, distance travelled and collisions
+     * @return its true pose, distance travelled, collisions, stalls and messages
      */
     public RobotSummary summary(String name) {
         SimRobot r = robot(name);
         Odometry o = r.odometry();
+        long[] tally = messages.tally(name);
         return new RobotSummary(r.name, r.x(), r.y(), r.th(), r.distance(), r.collisions(), r.stalled(),
-                o.x(), o.y(), o.th());
+                o.x(), o.y(), o.th(), r.stalls(), tally[0], messages.lost(name), tally[1]);
+    }
+
+    /**
+     * The metrics the robots reported ({@link Command.ReportMetric}): for each, the last value of
+     * each name.
+     *
+     * @return robot name to metric name to value: every robot in the world's order (an empty map for
+     *         one that reported none), each robot's metrics in the order it first reported them
+     */
+    public Map<String, Map<String, Double>> metrics() {
+        Map<String, Map<String, Double>> all = new LinkedHashMap<>();
+        for (SimRobot r : order) {
+            all.put(r.name, Collections.unmodifiableMap(new LinkedHashMap<>(events.metrics(r.name))));
+        }
+        return Collections.unmodifiableMap(all);
+    }
+
+    /**
+     * @return the first robot's request to end the run ({@link Command.EndRun}): the robot, the step
+     *         it came in and its reason; or null if none came
+     */
+    public Snapshot.EndRequest endRequest() {
+        return events.endRequest();
     }
 
     /**
@@ -484,11 +509,16 @@ public final class Simulation {
         }
     }
 
-    /** @return the moving parts of the world now, for viewers, with the drawings that changed in the last step */
+    /**
+     * @return the moving parts of the world now, for viewers, with the drawings that changed, the
+     *         metrics reported and the request to end the run that came in the last step
+     */
     public Snapshot snapshot() {
         readUnread();
+        Snapshot.EndRequest end = events.endRequest();
         return new Snapshot(step, timeMs(), Views.robots(order), messages.sentLastStep(), events.said())
-                .withObjects(pucks.views(grippers::lifted)).withDrawings(drawings.changed());
+                .withObjects(pucks.views(grippers::lifted)).withDrawings(drawings.changed())
+                .withRunEvents(events.reported(), end != null && end.step() == step ? end : null);
     }
 
     /**

@@ -157,7 +157,8 @@ public final class EnvironmentServer implements AutoCloseable {
         long connected = System.nanoTime();
         startRun();
         long started = System.nanoTime();
-        String reason = loop();
+        EndOfRun end = loop();
+        String reason = end.reason();
         List<Departure> departures = rules.departures();
         List<String> absent = absent(departures);
         long wall = System.nanoTime() - started;
@@ -174,8 +175,8 @@ public final class EnvironmentServer implements AutoCloseable {
         for (String name : sim().robotNames()) {
             summaries.add(sim().summary(name));
         }
-        return new RunReport(sim().stepCount(), sim().timeMs(), reason, summaries, wall, sim().find(), connected,
-                departures, rules.joins(), absent);
+        return new RunReport(sim().stepCount(), sim().timeMs(), reason, end.ending(), summaries, wall, sim().find(),
+                connected, departures, rules.joins(), absent, sim().metrics(), sim().endRequest());
     }
 
     /**
@@ -215,9 +216,9 @@ public final class EnvironmentServer implements AutoCloseable {
      * are sent its world and step 0, and the new run starts when its robots have connected. There is
      * no connect timeout now: the user drives, and may stop, restart or load again meanwhile.
      *
-     * @return why the Environment ends while waiting (a stop), or null once the new run has started
+     * @return the Environment's end while waiting (a stop), or null once the new run has started
      */
-    private String switchRun(RunControl.Switch first) throws InterruptedException {
+    private EndOfRun switchRun(RunControl.Switch first) throws InterruptedException {
         RunControl.Switch s = first;
         while (s != null) {
             Simulation next = new Simulation(s.world(), sim().seed(), workers);
@@ -230,7 +231,7 @@ public final class EnvironmentServer implements AutoCloseable {
             s = null;
             progress.waitingUntimedSince(System.nanoTime());
             while (!rules.allConnected() || rules.viewerCount() < options.waitViewers()) {
-                String end = control.atBoundary();
+                EndOfRun end = control.atBoundary();
                 if (end != null) {
                     return end;
                 }
@@ -285,14 +286,14 @@ public final class EnvironmentServer implements AutoCloseable {
         return "; refused: " + String.join(", ", each);
     }
 
-    private String loop() throws InterruptedException {
+    private EndOfRun loop() throws InterruptedException {
         progress.runningSince(System.nanoTime());
         while (true) {
             if (progress.following()) {
                 // the one look at the clock a step takes for the progress, and only when someone follows it
                 progress.reportIfDue(RunProgress.Phase.RUNNING, System.nanoTime());
             }
-            String end = EndConditions.reason(sim(), rules, options.maxSteps());
+            EndOfRun end = EndConditions.ending(sim(), rules, options.maxSteps());
             if (end == null) {
                 // control requests are carried out here, between steps, so the same requests at the same steps give the same run
                 end = control.atBoundary();

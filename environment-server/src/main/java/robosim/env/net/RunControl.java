@@ -122,11 +122,11 @@ final class RunControl implements ControlRequests {
     /**
      * Between two steps: carries out the waiting requests in the order they came.
      *
-     * @return why the run ends, if a client stopped it; else null
+     * @return the run's end ({@link RunEnding#STOPPED}), if a client stopped it; else null
      */
-    String atBoundary() {
+    EndOfRun atBoundary() {
         while (!pending.isEmpty() && switchTo == null) {
-            String end = apply(pending.poll());
+            EndOfRun end = apply(pending.poll());
             if (end != null) {
                 return end;
             }
@@ -190,7 +190,7 @@ final class RunControl implements ControlRequests {
         }
     }
 
-    private String apply(Pending p) {
+    private EndOfRun apply(Pending p) {
         long k = sim().stepCount();
         String who = "control client " + LogLimiter.excerpt(p.from().name());
         ControlOp op = p.op();
@@ -220,7 +220,7 @@ final class RunControl implements ControlRequests {
         } else if (op instanceof ControlOp.Stop) {
             reply(p, true, "stopped after step " + k);
             LOG.info(() -> who + " stopped the run after step " + k);
-            return "stopped by " + who;
+            return new EndOfRun(RunEnding.STOPPED, "stopped by " + who);
         } else if (op instanceof ControlOp.Pace pc) {
             pace = pc.factor();
             rebase = true;

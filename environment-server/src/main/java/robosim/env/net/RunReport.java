@@ -1,17 +1,23 @@
 package robosim.env.net;
 
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import robosim.env.core.Find;
 import robosim.env.core.RobotSummary;
+import robosim.protocol.Snapshot;
 
 /**
  * How a run ended.
  *
  * @param steps     steps simulated
  * @param timeMs    simulated time, ms
- * @param endReason why it ended
- * @param robots    every robot at the end, in the world file's order
+ * @param endReason why it ended, in words
+ * @param ending    how it ended, for machines ({@link RunEnding#wireName()} in files)
+ * @param robots    every robot at the end, in the world file's order, with the figures the
+ *                  Environment counts for each (distance, collisions, stalls, messages)
  * @param wallNanos wall-clock time the steps took, from the first step to the end (for benchmarks)
  * @param find      the confirmed find of the world's gold, or null
  * @param connectedNanoTime {@link System#nanoTime()} when every robot had connected (and the awaited
@@ -24,16 +30,52 @@ import robosim.env.core.RobotSummary;
  *                  world), in the order they came
  * @param absent    the robots of the world that never connected to this run (an open world's, or a
  *                  run's after a restart or load that ended before they came), in the world's order
+ * @param metrics   the metrics the robots reported, the last value of each: robot name to metric name
+ *                  to value, every robot of the world in its order (an empty map for one that reported
+ *                  none), each robot's metrics in the order it first reported them
+ * @param endRequest the robot's request that ended the run (robot, step, reason), or null: with
+ *                  {@link RunEnding#ROBOT_ENDED}, and only then
  */
-public record RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos,
-                        Find find, long connectedNanoTime, List<Departure> departures, List<Join> joins,
-                        List<String> absent) {
-    /** Copies the lists so the record stays immutable. */
+public record RunReport(long steps, long timeMs, String endReason, RunEnding ending, List<RobotSummary> robots,
+                        long wallNanos, Find find, long connectedNanoTime, List<Departure> departures, List<Join> joins,
+                        List<String> absent, Map<String, Map<String, Double>> metrics,
+                        Snapshot.EndRequest endRequest) {
+    /** Copies the lists and the maps so the record stays immutable, and in order. */
     public RunReport {
+        if (ending == null) {
+            throw new IllegalArgumentException("a run report needs its ending, with the reason '" + endReason + "'");
+        }
         robots = List.copyOf(robots);
         departures = List.copyOf(departures);
         joins = List.copyOf(joins);
         absent = List.copyOf(absent);
+        Map<String, Map<String, Double>> copy = new LinkedHashMap<>();
+        metrics.forEach((robot, own) -> copy.put(robot, Collections.unmodifiableMap(new LinkedHashMap<>(own))));
+        metrics = Collections.unmodifiableMap(copy);
+    }
+
+    /**
+     * A report without metrics or an end request, whose ending is {@link RunEnding#STOPPED}: a
+     * report made by hand, as the launcher's tests make them to check how reports print.
+     *
+     * @param steps             steps simulated
+     * @param timeMs            simulated time, ms
+     * @param endReason         why it ended
+     * @param robots            every robot at the end
+     * @param wallNanos         wall-clock time the steps took
+     * @param find              the confirmed find of the world's gold, or null
+     * @param connectedNanoTime when every robot had connected, or 0
+     * @param departures        the robots that went before the end
+     * @param joins             the robots that joined after the run started
+     * @param absent            the robots that never connected to this run
+     * @deprecated kept while the launcher's tests make reports this way; give the ending, the
+     *             metrics and the end request
+     */
+    @Deprecated(forRemoval = true)
+    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
+                     long connectedNanoTime, List<Departure> departures, List<Join> joins, List<String> absent) {
+        this(steps, timeMs, endReason, RunEnding.STOPPED, robots, wallNanos, find, connectedNanoTime, departures,
+                joins, absent, Map.of(), null);
     }
 
     /**

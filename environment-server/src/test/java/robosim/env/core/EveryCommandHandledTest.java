@@ -37,7 +37,8 @@ class EveryCommandHandledTest {
             new Command.ConfigurePtz(robosim.protocol.PtzModel.VCC4, 300), new Command.AimPtz(10, 5, 100),
             new Command.TrackColors(true), new Command.BindChannel(9, "#123456"),
             new Command.SetSonarCycle(40), new Command.SetMotors(true),
-            new Command.Draw("map", List.of(new Figure(Figure.DOTS, "", new double[] {1, 2}))));
+            new Command.Draw("map", List.of(new Figure(Figure.DOTS, "", new double[] {1, 2}))),
+            new Command.ReportMetric("cells", 3), new Command.EndRun("done"));
 
     @Test
     void theListHoldsEveryCommandRecordOfEveryGroup() {

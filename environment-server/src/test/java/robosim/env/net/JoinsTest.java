@@ -186,7 +186,8 @@ class JoinsTest {
 
     /** @return the report of a run of 9 steps without robots, timings or a find, but these comings and goings */
     private static RunReport report(List<Departure> departures, List<Join> joins) {
-        return new RunReport(9, 900, "done", List.of(), 0, null, 0, departures, joins, List.of());
+        return new RunReport(9, 900, "step limit 9 reached", RunEnding.STEP_LIMIT, List.of(), 0, null, 0, departures,
+                joins, List.of(), Map.of(), null);
     }
 
     @Test

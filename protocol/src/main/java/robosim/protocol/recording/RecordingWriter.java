@@ -189,6 +189,6 @@ public final class RecordingWriter implements SnapshotListener {
                     r.odoX(), r.odoY(), r.odoTh(), NONE, r.laserIncrement(), r.vel(), r.rotVel(), r.camera()));
         }
         return new Snapshot(snapshot.step(), snapshot.timeMs(), robots, snapshot.messages(), snapshot.said(),
-                snapshot.events(), snapshot.objects(), snapshot.drawings());
+                snapshot.events(), snapshot.objects(), snapshot.drawings(), snapshot.metrics(), snapshot.endRequest());
     }
 }

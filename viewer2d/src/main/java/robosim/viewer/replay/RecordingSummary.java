@@ -2,6 +2,7 @@ package robosim.viewer.replay;
 
 import java.io.IOException;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -33,15 +34,23 @@ import robosim.protocol.recording.RecordingReader;
  * @param endReason why the run ended, or {@code null} if the recording has no end record
  * @param problem   the damage that stopped the reading, or {@code null}
  * @param events    the robots that joined the run under way or went from it, in order
+ * @param metrics   the metrics the robots reported, the last value of each: robot to name to value,
+ *                  robots and names in the order they were first reported; empty for a recording
+ *                  made before robots reported them
+ * @param endRequest the robot's request that ended the run, or {@code null} if none did
  */
 public record RecordingSummary(String world, double width, double height, int stepMs, int obstacles, long snapshots,
                                long firstStep, long lastStep, long timeMs, long messages, long said,
                                List<RobotTotals> robots, boolean sensors, String endReason,
-                               RecordingException problem, List<Snapshot.Event> events) {
-    /** Copies the lists so the record stays immutable. */
+                               RecordingException problem, List<Snapshot.Event> events,
+                               Map<String, Map<String, Double>> metrics, Snapshot.EndRequest endRequest) {
+    /** Copies the lists and maps so the record stays immutable, and in order. */
     public RecordingSummary {
         robots = List.copyOf(robots);
         events = List.copyOf(events);
+        Map<String, Map<String, Double>> copy = new LinkedHashMap<>();
+        metrics.forEach((robot, own) -> copy.put(robot, Collections.unmodifiableMap(new LinkedHashMap<>(own))));
+        metrics = Collections.unmodifiableMap(copy);
     }
 
     /**
@@ -89,6 +98,8 @@ public record RecordingSummary(String world, double width, double height, int st
         long said = 0;
         RecordingException problem = null;
         List<Snapshot.Event> events = new ArrayList<>();
+        Map<String, Map<String, Double>> metrics = new LinkedHashMap<>();
+        Snapshot.EndRequest endRequest = null;
         try {
             Snapshot f;
             while ((f = reader.next()) != null) {
@@ -102,6 +113,12 @@ public record RecordingSummary(String world, double width, double height, int st
                 time = f.timeMs();
                 messages += f.messages().size();
                 said += f.said().size();
+                for (Snapshot.Metric m : f.metrics()) {
+                    metrics.computeIfAbsent(m.robot(), r -> new LinkedHashMap<>()).put(m.name(), m.value());
+                }
+                if (f.endRequest() != null && endRequest == null) {
+                    endRequest = f.endRequest();
+                }
                 for (RobotView r : f.robots()) {
                     add(tallies.computeIfAbsent(r.name(), n -> new Tally("?")), r);
                 }
@@ -115,7 +132,7 @@ public record RecordingSummary(String world, double width, double height, int st
                 t.last == null ? Double.NaN : t.last.th())));
         return new RecordingSummary(world.name(), world.width(), world.height(), world.stepMs(),
                 world.obstacles().size(), snapshots, first, last, time, messages, said, robots, reader.sensors(),
-                reader.endReason(), problem, events);
+                reader.endReason(), problem, events, metrics, endRequest);
     }
 
     private static void add(Tally t, RobotView r) {

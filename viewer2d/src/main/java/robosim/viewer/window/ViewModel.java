@@ -119,7 +119,10 @@ public final class ViewModel {
         changed();
     }
 
-    /** Keeps the snapshot's messages, speech, joins and departures, each as one line naming the step and who. */
+    /**
+     * Keeps the snapshot's messages, speech, joins and departures and a robot's request to end the
+     * run, each as one line naming the step and who.
+     */
     private void keepMessages(Snapshot f) {
         for (MessageDelivery m : f.messages()) {
             keep(String.format(Locale.ROOT, "step %d: %s to %s: %s %s", f.step(), m.from(),
@@ -132,6 +135,12 @@ public final class ViewModel {
         for (Snapshot.Event e : f.events()) {
             keep(String.format(Locale.ROOT, "step %d: robot %s %s%s", e.step(), e.robot(), e.what(),
                     e.reason().isEmpty() ? "" : ": " + e.reason()));
+        }
+        // metrics are many and for the results: only the request that ends the run is a line
+        Snapshot.EndRequest end = f.endRequest();
+        if (end != null) {
+            keep(String.format(Locale.ROOT, "step %d: robot %s ended the run: %s", end.step(), end.robot(),
+                    end.reason()));
         }
     }
 
