@@ -1,6 +1,7 @@
 package robosim.experiment;
 
 import java.util.ArrayList;
+import java.util.DoubleSummaryStatistics;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -43,12 +44,18 @@ public final class Metrics {
     public static final String DISTANCE = "distance";
     /** Collisions of all the robots. */
     public static final String COLLISIONS = "collisions";
+    /** Times a robot became stalled, all the robots'. */
+    public static final String STALLS = "stalls";
+    /** Messages the robots sent. */
+    public static final String MESSAGES_SENT = "messagesSent";
+    /** Copies of their messages lost on the way to a recipient (range, walls, the loss chance). */
+    public static final String MESSAGES_LOST = "messagesLost";
     /** Wall-clock time of the run, s: the one metric that is the machine's, not the simulation's. */
     public static final String WALL_TIME = "wallTime";
 
     /** The built-in metrics, in column order. */
     public static final List<String> BUILT_IN = List.of(STEPS, SIM_TIME, ENDING, FOUND, FOUND_STEP, FOUND_BY,
-            LOWER_BOUND, BOUND_RATIO, ROBOTS, DISTANCE, COLLISIONS, END_REASON, WALL_TIME);
+            LOWER_BOUND, BOUND_RATIO, ROBOTS, DISTANCE, COLLISIONS, STALLS, MESSAGES_SENT, MESSAGES_LOST, END_REASON, WALL_TIME);
 
     private Metrics() {
     }
@@ -66,7 +73,7 @@ public final class Metrics {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put(STEPS, report.steps());
         m.put(SIM_TIME, report.timeMs() / 1000.0);
-        m.put(ENDING, Endings.of(report));
+        m.put(ENDING, report.ending().wireName());
         boolean gold = world.gold() != null;
         m.put(FOUND, gold ? (report.find() == null ? 0 : 1) : null);
         m.put(FOUND_STEP, report.find() == null ? null : report.find().step());
@@ -77,15 +84,49 @@ public final class Metrics {
         m.put(ROBOTS, report.robots().size());
         double distance = 0;
         long collisions = 0;
+        long stalls = 0;
+        long sent = 0;
+        long lost = 0;
         for (RobotSummary r : report.robots()) {
             distance += r.distance();
             collisions += r.collisions();
+            stalls += r.stalls();
+            sent += r.messagesSent();
+            lost += r.messagesLost();
         }
         m.put(DISTANCE, Math.round(distance * 10) / 10.0);
         m.put(COLLISIONS, collisions);
+        m.put(STALLS, stalls);
+        m.put(MESSAGES_SENT, sent);
+        m.put(MESSAGES_LOST, lost);
         m.put(END_REASON, report.endReason());
+        reported(report, aggregates).forEach((name, value) -> {
+            // a program's metric never hides a built-in one: it is kept as program.NAME instead
+            m.put(BUILT_IN.contains(name) ? "program." + name : name, value);
+        });
         m.put(WALL_TIME, Math.round(wallTime * 1000) / 1000.0);
         return m;
+    }
+
+    /**
+     * The run's value of each metric the programs reported: the robots' values made one as the
+     * experiment says ({@code aggregate}), their mean unless told.
+     */
+    private static Map<String, Double> reported(RunReport report, Map<String, Aggregate> aggregates) {
+        Map<String, List<Double>> values = new LinkedHashMap<>();
+        report.metrics().values().forEach(robot -> robot.forEach((name, v) ->
+                values.computeIfAbsent(name, n -> new ArrayList<>()).add(v)));
+        Map<String, Double> out = new LinkedHashMap<>();
+        values.forEach((name, vs) -> {
+            DoubleSummaryStatistics s = vs.stream().mapToDouble(Double::doubleValue).summaryStatistics();
+            out.put(name, switch (aggregates.getOrDefault(name, Aggregate.MEAN)) {
+                case MEAN -> s.getAverage();
+                case SUM -> s.getSum();
+                case MIN -> s.getMin();
+                case MAX -> s.getMax();
+            });
+        });
+        return out;
     }
 
     /**
@@ -98,6 +139,11 @@ public final class Metrics {
             Map<String, Object> f = new LinkedHashMap<>();
             f.put(DISTANCE, Math.round(r.distance() * 10) / 10.0);
             f.put(COLLISIONS, r.collisions());
+            f.put(STALLS, r.stalls());
+            f.put(MESSAGES_SENT, r.messagesSent());
+            f.put(MESSAGES_LOST, r.messagesLost());
+            f.put("messagesReceived", r.messagesReceived());
+            f.putAll(report.metrics().getOrDefault(r.name(), Map.of()));
             out.add(new RunRecord.RobotFigures(r.name(), f));
         }
         return out;

@@ -20,6 +20,7 @@ import robosim.comms.CommsSettings;
 import robosim.env.core.Simulation;
 import robosim.env.net.Access;
 import robosim.env.net.EnvironmentServer;
+import robosim.env.net.RunEnding;
 import robosim.env.net.RunReport;
 import robosim.env.net.ServerOptions;
 import robosim.env.world.World;
@@ -305,7 +306,8 @@ public final class RunExecutor {
 
     private RunRecord failed(RunSpec run, String reason, long start) {
         Map<String, Object> metrics = new LinkedHashMap<>();
-        metrics.put(Metrics.WALL_TIME, (System.nanoTime() - start) / 1e9);
+        metrics.put(Metrics.ENDING, RunEnding.FAILED.wireName());
+        metrics.put(Metrics.WALL_TIME, Math.round((System.nanoTime() - start) / 1e6) / 1000.0);
         return new RunRecord(experiment.name(), fingerprint, run.index(), run.factors(), run.replicate(), run.seed(),
                 RunRecord.FAILED, reason, metrics, List.of(), host(), 0);
     }
@@ -317,7 +319,7 @@ public final class RunExecutor {
      */
     public RunRecord lost(RunSpec run, String reason) {
         return new RunRecord(experiment.name(), fingerprint, run.index(), run.factors(), run.replicate(), run.seed(),
-                RunRecord.FAILED, reason, Map.of(), List.of(), host(), 0);
+                RunRecord.FAILED, reason, Map.of(Metrics.ENDING, RunEnding.FAILED.wireName()), List.of(), host(), 0);
     }
 
     private static String describe(Throwable t) {

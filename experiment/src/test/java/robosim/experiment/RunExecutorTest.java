@@ -51,6 +51,27 @@ class RunExecutorTest {
     }
 
     @Test
+    void theProgramsMetricsAreMadeOneAsTheFileSaysAndAProgramMayEndTheRun() throws Exception {
+        Path f = dir.resolve("r.yaml");
+        Files.writeString(f, "world: {maze: {cells: 3}}\nprograms: [{class: " + Reporter.class.getName()
+                + ", count: 2}]\naggregate: {looks: sum}\nsteps: 5000\n", StandardCharsets.UTF_8);
+        Experiment e = ExperimentReader.read(f);
+        RunRecord r = new RunExecutor(e, "f", dir, getClass().getClassLoader(), null).execute(e.run(0), null);
+        assertTrue(r.ok(), r.failure());
+        assertEquals("robot-ended", r.metrics().get(Metrics.ENDING));
+        assertTrue(((String) r.metrics().get(Metrics.END_REASON)).startsWith("ended by robot r1 at step "),
+                (String) r.metrics().get(Metrics.END_REASON));
+        assertTrue(((String) r.metrics().get(Metrics.END_REASON)).endsWith(": looked 10 times"));
+        // r1 reported 10 and ended the run before r2 reached 20: the sum is 10 and r2's last count
+        double looks = (Double) r.metrics().get("looks");
+        double r2 = ((Number) r.robots().get(1).figures().get("looks")).doubleValue();
+        assertEquals(10 + r2, looks, 1e-9);
+        assertEquals(10.0, ((Number) r.robots().get(0).figures().get("looks")).doubleValue());
+        assertTrue(r2 >= 10 && r2 < 20, "r2 had looked " + r2 + " times when the run ended");
+        assertEquals(0L, ((Number) r.metrics().get(Metrics.MESSAGES_SENT)).longValue());
+    }
+
+    @Test
     void aProgramThatIsNoProgramFailsItsRunWithTheReason() throws Exception {
         Experiment e = experiment("  - {class: robosim.NoSuchProgram, count: 1}\n");
         RunRecord r = new RunExecutor(e, "f", dir, getClass().getClassLoader(), null).execute(e.run(0), null);

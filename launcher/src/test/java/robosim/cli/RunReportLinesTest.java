@@ -5,23 +5,26 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.Departure;
 import robosim.env.net.Join;
+import robosim.env.net.RunEnding;
 import robosim.env.net.RunReport;
 
 /** The Environment's end summary: a line per robot, which says how each robot's part ended. */
 class RunReportLinesTest {
     private static RobotSummary at(String name, double x) {
-        return new RobotSummary(name, x, 1000, 90, 1234, 1, false, x, 1000, 90);
+        return new RobotSummary(name, x, 1000, 90, 1234, 1, false, x, 1000, 90, 1, 0, 0, 0);
     }
 
     /** @return the report of a run of 40 steps (4 s) without timings or a find, every robot of it connected */
     private static RunReport report(String endReason, List<RobotSummary> robots, List<Departure> departures,
                                     List<Join> joins) {
-        return new RunReport(40, 4000, endReason, robots, 0, null, 0, departures, joins, List.of());
+        return new RunReport(40, 4000, endReason, RunEnding.STEP_LIMIT, robots, 0, null, 0, departures, joins, List.of(),
+                Map.of(), null);
     }
 
     @Test
@@ -74,8 +77,8 @@ class RunReportLinesTest {
 
     @Test
     void aRobotThatNeverConnectedToTheRunSaysSoRatherThanThatItRanToTheEnd() {
-        RunReport report = new RunReport(0, 0, "stopped by control client ctl", List.of(at("r1", 1000), at("r2", 2000)),
-                0, null, 0, List.of(), List.of(), List.of("r2"));
+        RunReport report = new RunReport(0, 0, "stopped by control client ctl", RunEnding.STOPPED,
+                List.of(at("r1", 1000), at("r2", 2000)), 0, null, 0, List.of(), List.of(), List.of("r2"), Map.of(), null);
 
         assertEquals("never connected to this run", EnvCommand.howItEnded(report, "r2"));
         assertEquals("ran to the end", EnvCommand.howItEnded(report, "r1"));

@@ -26,26 +26,4 @@ package robosim.env.core;
 public record RobotSummary(String name, double x, double y, double th, double distance, int collisions,
                            boolean stalled, double odoX, double odoY, double odoTh, int stalls, long messagesSent,
                            long messagesLost, long messagesReceived) {
-
-    /**
-     * A summary without the counts of stalls and messages, all 0, as summaries were made before
-     * the Environment counted them.
-     *
-     * @param name       the robot
-     * @param x          true x, mm
-     * @param y          true y, mm
-     * @param th         true heading, degrees
-     * @param distance   distance travelled, mm
-     * @param collisions collisions counted
-     * @param stalled    whether it is stalled now
-     * @param odoX       odometry x, mm
-     * @param odoY       odometry y, mm
-     * @param odoTh      odometry heading, degrees
-     * @deprecated kept while the launcher's tests make summaries this way; give the counts
-     */
-    @Deprecated(forRemoval = true)
-    public RobotSummary(String name, double x, double y, double th, double distance, int collisions,
-                        boolean stalled, double odoX, double odoY, double odoTh) {
-        this(name, x, y, th, distance, collisions, stalled, odoX, odoY, odoTh, 0, 0, 0, 0);
-    }
 }

@@ -55,30 +55,6 @@ public record RunReport(long steps, long timeMs, String endReason, RunEnding end
     }
 
     /**
-     * A report without metrics or an end request, whose ending is {@link RunEnding#STOPPED}: a
-     * report made by hand, as the launcher's tests make them to check how reports print.
-     *
-     * @param steps             steps simulated
-     * @param timeMs            simulated time, ms
-     * @param endReason         why it ended
-     * @param robots            every robot at the end
-     * @param wallNanos         wall-clock time the steps took
-     * @param find              the confirmed find of the world's gold, or null
-     * @param connectedNanoTime when every robot had connected, or 0
-     * @param departures        the robots that went before the end
-     * @param joins             the robots that joined after the run started
-     * @param absent            the robots that never connected to this run
-     * @deprecated kept while the launcher's tests make reports this way; give the ending, the
-     *             metrics and the end request
-     */
-    @Deprecated(forRemoval = true)
-    public RunReport(long steps, long timeMs, String endReason, List<RobotSummary> robots, long wallNanos, Find find,
-                     long connectedNanoTime, List<Departure> departures, List<Join> joins, List<String> absent) {
-        this(steps, timeMs, endReason, RunEnding.STOPPED, robots, wallNanos, find, connectedNanoTime, departures,
-                joins, absent, Map.of(), null);
-    }
-
-    /**
      * @param robot a robot's name
      * @return how it last went before the end of the run, or empty if it ran to the end (or came back
      *         after it went: a join takes part from a later step than the one its robot went at)
