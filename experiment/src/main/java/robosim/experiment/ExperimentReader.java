@@ -18,6 +18,7 @@ import robosim.experiment.YamlTree.Mapping;
 import robosim.experiment.YamlTree.Node;
 import robosim.experiment.YamlTree.Scalar;
 import robosim.experiment.YamlTree.Sequence;
+import robosim.protocol.Welcome;
 
 /**
  * Reads an experiment file (YAML; the format is in docs/EXPERIMENTS.md). Every rule it breaks is told
@@ -203,7 +204,17 @@ public final class ExperimentReader {
         Map<String, Template> properties = new LinkedHashMap<>();
         if (w.entries().containsKey("properties")) {
             Mapping p = mapping(w.entries().get("properties"), "world.properties");
-            p.entries().forEach((k, v) -> properties.put(k, template(v, "world property " + k)));
+            p.entries().forEach((k, v) -> {
+                if (!Welcome.PROPERTY_NAME.matcher(k).matches()) {
+                    throw new ExperimentFileException(file, p.keyLines().get(k), "'" + k + "' is a world property's"
+                            + " name: " + Welcome.PROPERTY_NAME_RULE);
+                }
+                properties.put(k, template(v, "world property " + k));
+            });
+            if (properties.size() > Welcome.MAX_PROPERTIES) {
+                throw new ExperimentFileException(file, p.line(), properties.size() + " world properties are given: a"
+                        + " world has at most " + Welcome.MAX_PROPERTIES);
+            }
         }
         if (hasFile) {
             return new WorldTemplate(template(w.entries().get("file"), "world.file"), null, null, null, null, properties);

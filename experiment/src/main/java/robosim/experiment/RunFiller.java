@@ -13,6 +13,7 @@ import robosim.experiment.RunSpec.FilePlan;
 import robosim.experiment.RunSpec.Link;
 import robosim.experiment.RunSpec.MazePlan;
 import robosim.experiment.RunSpec.ProgramPlan;
+import robosim.protocol.Welcome;
 
 /** Fills an experiment's values in for one run, checking each against its rule. */
 final class RunFiller {
@@ -52,7 +53,14 @@ final class RunFiller {
     private RunSpec.WorldPlan world(long seed) {
         WorldTemplate w = e.world();
         Map<String, String> properties = new LinkedHashMap<>();
-        w.properties().forEach((k, t) -> properties.put(k, text(t)));
+        w.properties().forEach((k, t) -> {
+            String v = text(t);
+            if (v.length() > Welcome.MAX_PROPERTY_VALUE) {
+                throw error(t, "world property " + k + " is " + v.length() + " characters: a value has at most "
+                        + Welcome.MAX_PROPERTY_VALUE);
+            }
+            properties.put(k, v);
+        });
         if (w.file() != null) {
             Path file = e.file().toAbsolutePath().getParent().resolve(text(w.file())).normalize();
             return new FilePlan(file, properties);

@@ -129,6 +129,9 @@ class ExperimentReaderTest {
         ExperimentFileException plot = error(GOOD + "plot:\n  x: speed\n");
         assertTrue(plot.getMessage().contains("plot.x is 'speed': it names one of the factors (team, loss)"),
                 plot.getMessage());
+        ExperimentFileException property = error(GOOD.replace("world:\n", "world:\n  properties: {2fast: x}\n"));
+        assertEquals(3, property.line());
+        assertTrue(property.getMessage().contains("'2fast' is a world property's name"), property.getMessage());
         ExperimentFileException empty = error("");
         assertTrue(empty.getMessage().contains("the file is empty"), empty.getMessage());
     }
