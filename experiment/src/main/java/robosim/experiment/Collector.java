@@ -41,7 +41,7 @@ public final class Collector {
      * @param out         the results folder
      * @return what was found and written
      * @throws IOException if a record cannot be read or a file written; or if the folder holds records of
-     *                     another experiment file
+     *                     other runs
      */
     public static Collected collect(Experiment experiment, String fingerprint, Path out) throws IOException {
         TreeMap<Integer, RunRecord> records = mine(experiment, fingerprint, out);
@@ -70,17 +70,17 @@ public final class Collector {
      * @param fingerprint its file's fingerprint
      * @param out         the results folder
      * @return its records, by index
-     * @throws IOException if one cannot be read, or one is of another experiment file or has an index
-     *                     the experiment does not have
+     * @throws IOException if one cannot be read, or one is of other runs or has an index the experiment
+     *                     does not have
      */
     public static TreeMap<Integer, RunRecord> mine(Experiment experiment, String fingerprint, Path out)
             throws IOException {
         TreeMap<Integer, RunRecord> records = RunRecords.readAll(out);
         for (RunRecord r : records.values()) {
             if (!r.fingerprint().equals(fingerprint) || r.index() >= experiment.runCount()) {
-                throw new IOException(out + " holds runs of another experiment file (run " + r.index() + " of "
-                        + r.experiment() + ", fingerprint " + r.fingerprint() + "; this file's is " + fingerprint
-                        + "): give a new --out-dir for a changed file, or remove the folder");
+                throw new IOException(out + " holds runs of another experiment, or of this file before its runs"
+                        + " changed (run " + r.index() + " of " + r.experiment() + ", fingerprint " + r.fingerprint()
+                        + "; this file's is " + fingerprint + "): give a new --out-dir, or remove the folder");
             }
         }
         return records;

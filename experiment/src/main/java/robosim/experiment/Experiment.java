@@ -27,12 +27,13 @@ import java.util.regex.Pattern;
  * @param metrics      the metrics to keep, or empty for all
  * @param aggregates   how the robots' values of a metric the programs report make the run's: by name
  * @param plotX        the factor the plots put along x
- * @param plotMetrics  the metrics to plot, or empty for every numeric metric kept
+ * @param plotMetrics  the plots, each the metrics it draws together (most draw one), or empty for a plot
+ *                     of each numeric metric kept
  */
 public record Experiment(Path file, String name, WorldTemplate world, List<ProgramTemplate> programs,
                          CommsTemplate comms, List<String> factorNames, List<Map<String, String>> combinations,
                          int replicates, long firstSeed, long steps, List<String> metrics,
-                         Map<String, Aggregate> aggregates, String plotX, List<String> plotMetrics) {
+                         Map<String, Aggregate> aggregates, String plotX, List<List<String>> plotMetrics) {
     /** A factor's or metric's name. */
     static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_]{0,63}");
     /** The most runs a sweep may have. */
@@ -49,7 +50,7 @@ public record Experiment(Path file, String name, WorldTemplate world, List<Progr
         combinations = List.copyOf(copies);
         metrics = List.copyOf(metrics);
         aggregates = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(aggregates));
-        plotMetrics = List.copyOf(plotMetrics);
+        plotMetrics = plotMetrics.stream().map(List::copyOf).toList();
     }
 
     /** How the robots' values of a reported metric make the run's one value. */

@@ -79,7 +79,7 @@ public final class ExperimentReader {
                 : List.of();
         Map<String, Aggregate> aggregates = aggregates(top);
         String plotX = factorNames.isEmpty() ? null : factorNames.iterator().next();
-        List<String> plotMetrics = List.of();
+        List<List<String>> plotMetrics = List.of();
         if (top.entries().containsKey("plot")) {
             Mapping plot = mapping(top.entries().get("plot"), "plot");
             keys(plot, List.of("x", "metrics"), "plot");
@@ -91,7 +91,7 @@ public final class ExperimentReader {
                 }
             }
             if (plot.entries().containsKey("metrics")) {
-                plotMetrics = names(plot.entries().get("metrics"), "plot.metrics");
+                plotMetrics = plots(plot.entries().get("metrics"));
             }
         }
         return new Experiment(file, name, world, programs, comms, List.copyOf(factorNames), combinations, replicates,
@@ -308,6 +308,26 @@ public final class ExperimentReader {
                 throw new ExperimentFileException(file, item.line(), what + " names " + n + " twice");
             }
             out.add(n);
+        }
+        return out;
+    }
+
+    /** {@code [foundStep, [steps, lowerBound]]}: a plot of each name, and of each list's names together. */
+    private List<List<String>> plots(Node node) {
+        if (!(node instanceof Sequence list)) {
+            throw new ExperimentFileException(file, node.line(), "plot.metrics is " + node.kind() + ": it is a list of"
+                    + " metric names, each a plot, or lists of names drawn together, e.g. [[foundStep, lowerBound], distance]");
+        }
+        List<List<String>> out = new ArrayList<>();
+        for (Node item : list.items()) {
+            List<String> together = item instanceof Sequence ? names(item, "plot.metrics") : List.of(scalar(item,
+                    "plot.metrics"));
+            if (together.isEmpty()) {
+                throw new ExperimentFileException(file, item.line(), "an empty list in plot.metrics: a plot draws at"
+                        + " least one metric");
+            }
+            together.forEach(n -> metricName(n, item.line(), "plot.metrics"));
+            out.add(together);
         }
         return out;
     }

@@ -20,8 +20,9 @@ import org.jfree.data.xy.YIntervalSeries;
 import org.jfree.data.xy.YIntervalSeriesCollection;
 
 /**
- * One PNG per metric: its mean against the main factor ({@code plot.x}), with the 95% confidence
- * interval as a bar, one line per combination of the other factors. Drawn with JFreeChart, headless.
+ * One PNG per plot ({@code plot.metrics}: a metric, or several drawn together): each metric's mean
+ * against the main factor ({@code plot.x}), with the 95% confidence interval as a bar, one line per
+ * combination of the other factors. Drawn with JFreeChart, headless.
  */
 public final class Plots {
     /** The plots' size, pixels. */
@@ -38,7 +39,7 @@ public final class Plots {
      * @param table      its results
      * @param summary    its summary
      * @param dir        the folder the PNG files go to
-     * @return the files written, by metric
+     * @return the files written, by plot: its metrics' names joined by '-'
      * @throws IOException if one cannot be written
      */
     public static Map<String, Path> write(Experiment experiment, ResultsTable table, List<Summary.Row> summary,
@@ -49,20 +50,22 @@ public final class Plots {
             return out;
         }
         Files.createDirectories(dir);
-        List<String> metrics = experiment.plotMetrics().isEmpty() ? table.numericMetrics() : experiment.plotMetrics();
-        for (String metric : metrics) {
-            List<Summary.Row> rows = summary.stream().filter(r -> r.metric().equals(metric) && r.n() > 0).toList();
+        List<List<String>> plots = experiment.plotMetrics().isEmpty()
+                ? table.numericMetrics().stream().map(List::of).toList() : experiment.plotMetrics();
+        for (List<String> metrics : plots) {
+            List<Summary.Row> rows = summary.stream().filter(r -> metrics.contains(r.metric()) && r.n() > 0).toList();
             if (rows.isEmpty()) {
                 continue;
             }
-            Path file = dir.resolve(metric + ".png");
-            ChartUtils.saveChartAsPNG(file.toFile(), chart(experiment, metric, rows), WIDTH, HEIGHT);
-            out.put(metric, file);
+            String name = String.join("-", metrics);
+            Path file = dir.resolve(name + ".png");
+            ChartUtils.saveChartAsPNG(file.toFile(), chart(experiment, metrics, rows), WIDTH, HEIGHT);
+            out.put(name, file);
         }
         return out;
     }
 
-    private static JFreeChart chart(Experiment experiment, String metric, List<Summary.Row> rows) {
+    private static JFreeChart chart(Experiment experiment, List<String> metrics, List<Summary.Row> rows) {
         String x = experiment.plotX();
         List<String> xs = new ArrayList<>();
         for (Map<String, String> c : experiment.combinations()) {
@@ -76,14 +79,15 @@ public final class Plots {
         for (Summary.Row r : rows) {
             Map<String, String> others = new LinkedHashMap<>(r.factors());
             others.remove(x);
-            String key = others.isEmpty() ? metric : RunFiller.describe(others);
+            String key = metrics.size() == 1 ? (others.isEmpty() ? r.metric() : RunFiller.describe(others))
+                    : others.isEmpty() ? r.metric() : r.metric() + ", " + RunFiller.describe(others);
             YIntervalSeries s = series.computeIfAbsent(key, k -> {
                 YIntervalSeries made = new YIntervalSeries(k);
                 data.addSeries(made);
                 return made;
             });
             double at = (numeric ? Double.parseDouble(r.factors().get(x)) : xs.indexOf(r.factors().get(x)))
-                    + dodge(series.size() - 1, seriesCount(rows, x), xs, numeric);
+                    + dodge(series.size() - 1, seriesCount(rows, x, metrics.size()), xs, numeric);
             double low = Double.isNaN(r.ciLow()) ? r.mean() : r.ciLow();
             double high = Double.isNaN(r.ciHigh()) ? r.mean() : r.ciHigh();
             s.add(at, r.mean(), low, high);
@@ -95,7 +99,8 @@ public final class Plots {
                 n.setStandardTickUnits(NumberAxis.createIntegerTickUnits());
             }
         }
-        NumberAxis yAxis = new NumberAxis(metric + " (mean, 95% CI)");
+        String what = String.join(", ", metrics);
+        NumberAxis yAxis = new NumberAxis(what + " (mean, 95% CI)");
         yAxis.setAutoRangeIncludesZero(true);
         XYErrorRenderer renderer = new XYErrorRenderer();
         renderer.setDefaultLinesVisible(true);
@@ -109,17 +114,18 @@ public final class Plots {
         plot.setBackgroundPaint(Color.WHITE);
         plot.setDomainGridlinePaint(new Color(0xdddddd));
         plot.setRangeGridlinePaint(new Color(0xdddddd));
-        JFreeChart chart = new JFreeChart(experiment.name() + ": " + metric + " by " + x, JFreeChart.DEFAULT_TITLE_FONT,
-                plot, series.size() > 1 || !series.containsKey(metric));
+        JFreeChart chart = new JFreeChart(experiment.name() + ": " + String.join(" and ", metrics) + " by " + x,
+                JFreeChart.DEFAULT_TITLE_FONT, plot, series.size() > 1 || !series.containsKey(metrics.get(0)));
         chart.setBackgroundPaint(Color.WHITE);
         return chart;
     }
 
     /** @return how many lines the plot has: combinations of the factors other than x */
-    private static int seriesCount(List<Summary.Row> rows, String x) {
+    private static int seriesCount(List<Summary.Row> rows, String x, int metrics) {
         return (int) rows.stream().map(r -> {
             Map<String, String> others = new LinkedHashMap<>(r.factors());
             others.remove(x);
+            others.put("", metrics > 1 ? r.metric() : "");
             return others;
         }).distinct().count();
     }

@@ -27,7 +27,8 @@ final class Report {
         s.append("- [summary.csv](summary.csv): per combination and metric, n, mean, sd and the 95% confidence"
                 + " interval of the mean\n");
         s.append("- `runs/`: each run's record, with every robot's figures\n\n");
-        List<String> shown = (e.plotMetrics().isEmpty() ? table.numericMetrics() : e.plotMetrics()).stream()
+        List<String> shown = (e.plotMetrics().isEmpty() ? table.numericMetrics()
+                : e.plotMetrics().stream().flatMap(List::stream).distinct().toList()).stream()
                 .filter(m -> !m.equals(Metrics.WALL_TIME) && !m.equals(Metrics.ROBOTS)).limit(TABLE_METRICS).toList();
         if (!shown.isEmpty() && !summary.isEmpty()) {
             s.append("## Summary\n\nMean [95% CI] (n) over the runs that ran to their end.\n\n|");
@@ -50,7 +51,7 @@ final class Report {
         }
         if (!plots.isEmpty()) {
             s.append("## Plots\n\n");
-            plots.forEach((m, p) -> s.append("![").append(m).append("](").append(out.relativize(p).toString()
+            plots.forEach((m, p) -> s.append("![").append(m.replace("-", " and ")).append("](").append(out.relativize(p).toString()
                     .replace('\\', '/')).append(")\n\n"));
         }
         if (failed > 0) {

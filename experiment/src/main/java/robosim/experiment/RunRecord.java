@@ -9,7 +9,7 @@ import java.util.Map;
  * run ends ({@link RunRecords}), whether it ran to its end or failed.
  *
  * @param experiment  the experiment's name
- * @param fingerprint the experiment file's fingerprint ({@link ExperimentFiles#fingerprint}): a
+ * @param fingerprint the fingerprint of the experiment's runs ({@link ExperimentFiles#fingerprint}): a
  *                    record is of this sweep only if it matches
  * @param index       the run's index
  * @param factors     its factors' values

@@ -137,6 +137,17 @@ class ExperimentReaderTest {
     }
 
     @Test
+    void theFingerprintIsOfTheRunsNotOfThePlotsTheNameOrTheComments() throws Exception {
+        String runs = ExperimentFiles.fingerprint(ExperimentReader.read(write(GOOD)));
+        assertEquals(runs, ExperimentFiles.fingerprint(ExperimentReader.read(write("# a comment\n"
+                + GOOD.replace("name: teams", "name: other") + "metrics: [steps]\nplot: {x: loss, metrics: [steps]}\n"))));
+        assertTrue(!runs.equals(ExperimentFiles.fingerprint(ExperimentReader.read(write(GOOD.replace("steps: 5000",
+                "steps: 5001"))))), "another step limit, other runs");
+        assertTrue(!runs.equals(ExperimentFiles.fingerprint(ExperimentReader.read(write(GOOD.replace("[0, 0.25]",
+                "[0, 0.5]"))))), "another factor value, other runs");
+    }
+
+    @Test
     void aWorldFileIsFoundBesideTheExperimentFile() throws Exception {
         Experiment e = ExperimentReader.read(write("""
                 world:

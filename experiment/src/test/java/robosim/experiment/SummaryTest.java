@@ -97,6 +97,6 @@ class SummaryTest {
         assertTrue(Files.readString(c.report()).contains("No record yet: 0-2"), Files.readString(c.report()));
         var x = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
                 () -> Collector.collect(e, "beef", dir));
-        assertTrue(x.getMessage().contains("holds runs of another experiment file"), x.getMessage());
+        assertTrue(x.getMessage().contains("holds runs of another experiment"), x.getMessage());
     }
 }

@@ -130,7 +130,7 @@ final class ExperimentCommand implements Callable<Integer> {
             err.println("robosim experiment: cannot read " + file + ": " + x.getMessage());
             return 2;
         }
-        String fingerprint = ExperimentFiles.fingerprint(file);
+        String fingerprint = ExperimentFiles.fingerprint(e);
         Path dir = (out != null ? out : Path.of("out", "experiments", e.name())).toAbsolutePath().normalize();
         TreeSet<Integer> recorded = record == null ? new TreeSet<>() : indices("--record-runs", record, e.runCount());
         if (list) {

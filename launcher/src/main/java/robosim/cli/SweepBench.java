@@ -45,7 +45,7 @@ final class SweepBench {
      */
     static List<Figures> run(Path file, Path out, int parallel, List<String> links) throws IOException {
         Experiment e = ExperimentReader.read(file);
-        String fingerprint = ExperimentFiles.fingerprint(file);
+        String fingerprint = ExperimentFiles.fingerprint(e);
         return links.stream().map(link -> {
             Path dir = out.resolve("sweep-" + e.name() + "-" + link + "-" + System.nanoTime());
             StringWriter said = new StringWriter();
