@@ -1,8 +1,6 @@
 package robosim.experiment;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
@@ -60,8 +58,7 @@ public final class Collector {
         Map<String, Path> plots = Plots.write(experiment, table, summary, out.resolve("plots"));
         int failed = (int) records.values().stream().filter(r -> !r.ok()).count();
         Path report = out.resolve("report.md");
-        Files.writeString(report, Report.markdown(experiment, fingerprint, table, summary, plots, missing, out),
-                StandardCharsets.UTF_8);
+        AtomicFiles.write(report, Report.markdown(experiment, fingerprint, table, summary, plots, missing, out));
         return new Collected(records.size(), failed, missing, results, summaryFile, plots, report);
     }
 

@@ -36,6 +36,8 @@ public record Experiment(Path file, String name, WorldTemplate world, List<Progr
                          Map<String, Aggregate> aggregates, String plotX, List<List<String>> plotMetrics) {
     /** A factor's or metric's name. */
     static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_]{0,63}");
+    /** An experiment's name: its folder's and its cluster job's. */
+    static final Pattern FILE_NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
     /** The most runs a sweep may have. */
     public static final int MAX_RUNS = 1_000_000;
 

@@ -9,7 +9,10 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.HashSet;
 import java.util.Set;
+import robosim.env.world.xml.WorldReader;
+import robosim.params.RobotParameterFiles;
 import robosim.experiment.Experiment.Aggregate;
 import robosim.experiment.Experiment.CommsTemplate;
 import robosim.experiment.Experiment.ProgramTemplate;
@@ -45,10 +48,39 @@ public final class ExperimentReader {
      */
     public static Experiment read(Path file) throws IOException {
         Experiment e = new ExperimentReader(file).experiment(YamlTree.read(file));
+        Set<Object> worlds = new HashSet<>();
         for (int i = 0; i < e.runCount(); i++) {
-            e.run(i);
+            RunSpec run = e.run(i);
+            if (worlds.add(run.world() instanceof RunSpec.MazePlan m ? m.robotFile()
+                    : ((RunSpec.FilePlan) run.world()).file())) {
+                checkWorld(e, run);
+            }
         }
         return e;
+    }
+
+    /** A world file must read, and a maze's robot parameter file must be found, before any run starts. */
+    private static void checkWorld(Experiment e, RunSpec run) throws IOException {
+        if (run.world() instanceof RunSpec.MazePlan m) {
+            try {
+                RobotParameterFiles.load(m.robotFile());
+            } catch (IllegalArgumentException x) {
+                throw new ExperimentFileException(e.file(), e.world().robotFile() == null ? 0 : e.world().robotFile().line(),
+                        "world.maze.robotFile: " + x.getMessage());
+            }
+            return;
+        }
+        Path world = ((RunSpec.FilePlan) run.world()).file();
+        if (!java.nio.file.Files.isRegularFile(world)) {
+            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file is " + world
+                    + ", which does not exist (a world file's path is relative to the experiment file)");
+        }
+        try {
+            WorldReader.read(world);
+        } catch (RuntimeException x) {
+            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file " + world
+                    + " breaks a rule: " + x.getMessage());
+        }
     }
 
     private Experiment experiment(Node root) {
@@ -59,9 +91,19 @@ public final class ExperimentReader {
         String fileName = file.getFileName().toString();
         String name = top.entries().containsKey("name") ? word(top, "name")
                 : fileName.replaceFirst("\\.(ya?ml)$", "");
+        if (!Experiment.FILE_NAME.matcher(name).matches()) {
+            throw new ExperimentFileException(file, top.entries().containsKey("name") ? top.keyLines().get("name") : 0,
+                    "'" + name + "' is the experiment's name" + (top.entries().containsKey("name") ? "" : " (the file's)")
+                    + ": it names its folder and its cluster job, so it is a letter or digit, then up to 63 letters,"
+                    + " digits, '.', '_' or '-'" + (top.entries().containsKey("name") ? "" : "; give name: in the file"));
+        }
         List<Map<String, String>> combinations = combinations(top);
         WorldTemplate world = world(mapping(top.entries().get("world"), "world"));
         List<ProgramTemplate> programs = programs(top.entries().get("programs"));
+        if (world.file() == null && programs.get(programs.size() - 1).count() == null) {
+            throw new ExperimentFileException(file, top.keyLines().get("programs"), "a program gives no count, but a"
+                    + " maze has the robots the programs ask for: give every program a count");
+        }
         CommsTemplate comms = top.entries().containsKey("comms") ? comms(mapping(top.entries().get("comms"), "comms")) : null;
         int replicates = (int) whole(top, "replicates", 1, 1, 100_000);
         long firstSeed = whole(top, "firstSeed", 1, 0, Long.MAX_VALUE / 2);
@@ -128,12 +170,15 @@ public final class ExperimentReader {
             List<Map<String, String>> out = new ArrayList<>();
             for (Node item : list.items()) {
                 Mapping c = mapping(item, "a case");
+                if (c.entries().isEmpty()) {
+                    throw new ExperimentFileException(file, c.line(), "an empty case: a case gives every factor a value");
+                }
                 Map<String, String> combination = new LinkedHashMap<>();
                 c.entries().forEach((name, v) -> {
                     factorName(name, c.keyLines().get(name));
                     combination.put(name, scalar(v, "factor " + name));
                 });
-                if (!factorNames.isEmpty() && !factorNames.equals(combination.keySet())) {
+                if (!out.isEmpty() && !factorNames.equals(combination.keySet())) {
                     throw new ExperimentFileException(file, c.line(), "this case gives " + combination.keySet()
                             + " but the first gave " + factorNames + ": every case gives the same factors");
                 }
@@ -170,6 +215,11 @@ public final class ExperimentReader {
         if (Template.BUILT_IN.contains(name)) {
             throw new ExperimentFileException(file, line, "'" + name + "' is a factor's name, but every run fills in ${"
                     + name + "} itself: call the factor something else");
+        }
+        if (ResultsTable.RUN_COLUMNS.contains(name) || ResultsTable.SUMMARY_COLUMNS.contains(name)
+                || Metrics.BUILT_IN.contains(name)) {
+            throw new ExperimentFileException(file, line, "'" + name + "' is a factor's name, but results.csv or"
+                    + " summary.csv has a column of that name: call the factor something else (team, not robots)");
         }
     }
 

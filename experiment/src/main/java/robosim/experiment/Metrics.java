@@ -53,6 +53,9 @@ public final class Metrics {
     /** Wall-clock time of the run, s: the one metric that is the machine's, not the simulation's. */
     public static final String WALL_TIME = "wallTime";
 
+    /** What a program's metric is called when its own name is another column's. */
+    public static final String PROGRAM_PREFIX = "program.";
+
     /** The built-in metrics, in column order. */
     public static final List<String> BUILT_IN = List.of(STEPS, SIM_TIME, ENDING, FOUND, FOUND_STEP, FOUND_BY,
             LOWER_BOUND, BOUND_RATIO, ROBOTS, DISTANCE, COLLISIONS, STALLS, MESSAGES_SENT, MESSAGES_LOST, END_REASON, WALL_TIME);
@@ -66,10 +69,11 @@ public final class Metrics {
      * @param lowerBound its maze's lower bound, or null
      * @param aggregates how the robots' reported values make the run's
      * @param wallTime   the run's wall-clock time, s
+     * @param factors    the experiment's factors, whose columns a reported metric must not take
      * @return the run's metrics, built-in first
      */
     static Map<String, Object> of(RunReport report, World world, Long lowerBound, Map<String, Aggregate> aggregates,
-                                  double wallTime) {
+                                  double wallTime, List<String> factors) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put(STEPS, report.steps());
         m.put(SIM_TIME, report.timeMs() / 1000.0);
@@ -101,8 +105,9 @@ public final class Metrics {
         m.put(MESSAGES_LOST, lost);
         m.put(END_REASON, report.endReason());
         reported(report, aggregates).forEach((name, value) -> {
-            // a program's metric never hides a built-in one: it is kept as program.NAME instead
-            m.put(BUILT_IN.contains(name) ? "program." + name : name, value);
+            // a program's metric never takes another column's name: it is kept as program.NAME instead
+            boolean taken = BUILT_IN.contains(name) || factors.contains(name) || ResultsTable.RUN_COLUMNS.contains(name);
+            m.put(taken ? PROGRAM_PREFIX + name : name, value);
         });
         m.put(WALL_TIME, Math.round(wallTime * 1000) / 1000.0);
         return m;

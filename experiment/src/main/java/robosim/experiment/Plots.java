@@ -59,7 +59,8 @@ public final class Plots {
             }
             String name = String.join("-", metrics);
             Path file = dir.resolve(name + ".png");
-            ChartUtils.saveChartAsPNG(file.toFile(), chart(experiment, metrics, rows), WIDTH, HEIGHT);
+            JFreeChart chart = chart(experiment, metrics, rows);
+            AtomicFiles.write(file, o -> ChartUtils.writeChartAsPNG(o, chart, WIDTH, HEIGHT));
             out.put(name, file);
         }
         return out;
@@ -87,7 +88,8 @@ public final class Plots {
                 return made;
             });
             double at = (numeric ? Double.parseDouble(r.factors().get(x)) : xs.indexOf(r.factors().get(x)))
-                    + dodge(series.size() - 1, seriesCount(rows, x, metrics.size()), xs, numeric);
+                    + dodge(new ArrayList<>(series.keySet()).indexOf(key), seriesCount(rows, x, metrics.size()), xs,
+                    numeric);
             double low = Double.isNaN(r.ciLow()) ? r.mean() : r.ciLow();
             double high = Double.isNaN(r.ciHigh()) ? r.mean() : r.ciHigh();
             s.add(at, r.mean(), low, high);

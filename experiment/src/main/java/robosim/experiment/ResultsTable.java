@@ -4,7 +4,9 @@ import com.fasterxml.jackson.databind.SequenceWriter;
 import com.fasterxml.jackson.dataformat.csv.CsvMapper;
 import com.fasterxml.jackson.dataformat.csv.CsvSchema;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.Writer;
+import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -21,6 +23,11 @@ import java.util.Set;
  * ({@link Summary}). Written through Jackson's CSV format, which quotes and escapes as RFC 4180 says.
  */
 public final class ResultsTable {
+    /** results.csv's columns besides the factors and the metrics. */
+    public static final List<String> RUN_COLUMNS = List.of("run", "replicate", "seed", "status", "failure");
+    /** summary.csv's columns besides the factors. */
+    public static final List<String> SUMMARY_COLUMNS = List.of("metric", "n", "missing", "mean", "sd", "ciLow",
+            "ciHigh", "failed");
     private static final CsvMapper CSV = new CsvMapper();
 
     private final Experiment experiment;
@@ -97,7 +104,7 @@ public final class ResultsTable {
      */
     public void writeResults(Path file) throws IOException {
         CsvSchema.Builder schema = CsvSchema.builder().setUseHeader(true);
-        List<String> header = new ArrayList<>(List.of("run", "replicate", "seed"));
+        List<String> header = new ArrayList<>(RUN_COLUMNS.subList(0, 3));
         header.addAll(experiment.factorNames());
         header.add("status");
         header.addAll(metrics);
@@ -130,7 +137,7 @@ public final class ResultsTable {
     public void writeSummary(Path file, List<Summary.Row> summary) throws IOException {
         CsvSchema.Builder schema = CsvSchema.builder().setUseHeader(true);
         List<String> header = new ArrayList<>(experiment.factorNames());
-        header.addAll(List.of("metric", "n", "mean", "sd", "ciLow", "ciHigh", "failed"));
+        header.addAll(SUMMARY_COLUMNS);
         header.forEach(schema::addColumn);
         List<List<String>> rows = new ArrayList<>();
         for (Summary.Row s : summary) {
@@ -138,30 +145,25 @@ public final class ResultsTable {
             for (String f : experiment.factorNames()) {
                 row.add(s.factors().get(f));
             }
-            row.addAll(List.of(s.metric(), Integer.toString(s.n()), number(s.mean()), number(s.sd()),
-                    number(s.ciLow()), number(s.ciHigh()), Integer.toString(s.failed())));
+            row.addAll(List.of(s.metric(), Integer.toString(s.n()), Integer.toString(s.missing()), number(s.mean()),
+                    number(s.sd()), number(s.ciLow()), number(s.ciHigh()), Integer.toString(s.failed())));
             rows.add(row);
         }
         write(file, schema.build(), rows);
     }
 
     private static void write(Path file, CsvSchema schema, List<List<String>> rows) throws IOException {
-        Files.createDirectories(file.toAbsolutePath().getParent());
-        Path tmp = Files.createTempFile(file.toAbsolutePath().getParent(), "." + file.getFileName(), ".tmp");
-        try {
-            try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8);
+        AtomicFiles.write(file, out -> {
+            try (Writer w = new OutputStreamWriter(out, StandardCharsets.UTF_8);
                  SequenceWriter s = CSV.writerFor(List.class).with(schema).writeValues(w)) {
                 for (List<String> row : rows) {
                     s.write(row);
                 }
             }
-            Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
+        });
     }
 
-    /** @return a value as a cell: numbers as Java writes them shortest, whole numbers without ".0" */
+    /** @return a value as a cell: numbers in full, plain (no exponent), whole numbers without ".0" */
     static String text(Object v) {
         if (v == null) {
             return "";
@@ -176,9 +178,9 @@ public final class ResultsTable {
         if (Double.isNaN(d)) {
             return "";
         }
-        if (d == Math.rint(d) && Math.abs(d) < 1e15) {
-            return Long.toString((long) d);
+        if (Double.isInfinite(d)) {
+            return d > 0 ? "Infinity" : "-Infinity";
         }
-        return String.format(Locale.ROOT, "%.6g", d).replaceFirst("(\\.\\d*?)0+(e|$)", "$1$2").replaceFirst("\\.(e|$)", "$1");
+        return BigDecimal.valueOf(d).stripTrailingZeros().toPlainString();
     }
 }

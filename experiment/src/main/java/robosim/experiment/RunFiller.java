@@ -19,6 +19,9 @@ import robosim.protocol.Welcome;
 final class RunFiller {
     /** The largest maze side, in cells. */
     static final int MAX_MAZE_CELLS = 200;
+    /** A number as people write it: digits, a point, an exponent; no hex, no 'f' or 'd'. */
+    private static final java.util.regex.Pattern DECIMAL =
+            java.util.regex.Pattern.compile("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
     /** The most robots one program line may start. */
     static final int MAX_ROBOTS = 10_000;
 
@@ -65,11 +68,19 @@ final class RunFiller {
             Path file = e.file().toAbsolutePath().getParent().resolve(text(w.file())).normalize();
             return new FilePlan(file, properties);
         }
-        int width = integer(w.cells().get(0), "world.maze.cells", 2, MAX_MAZE_CELLS);
+        int width = integer(w.cells().get(0), "world.maze.cells", 1, MAX_MAZE_CELLS);
         int height = integer(w.cells().get(w.cells().size() - 1), "world.maze.cells", 1, MAX_MAZE_CELLS);
+        if (width * height < 2) {
+            throw error(w.cells().get(0), "a maze of 1 cell is given: it has at least 2");
+        }
         int cellSize = w.cellSize() == null ? 1500 : integer(w.cellSize(), "world.maze.cellSize", 1000, 100_000);
         long mazeSeed = w.mazeSeed() == null ? seed : longValue(w.mazeSeed(), "world.maze.seed");
         String robotFile = w.robotFile() == null ? "p3dx" : text(w.robotFile());
+        // a path is beside the experiment file, as a world file is; a shipped name (p3dx) stays a name
+        Path beside = e.file().toAbsolutePath().getParent().resolve(robotFile).normalize();
+        if (java.nio.file.Files.isRegularFile(beside)) {
+            robotFile = beside.toString();
+        }
         return new MazePlan(width, height, cellSize, mazeSeed, robotFile, properties);
     }
 
@@ -147,9 +158,12 @@ final class RunFiller {
         String v = text(t);
         double n;
         try {
+            if (!DECIMAL.matcher(v.trim()).matches()) {
+                throw new NumberFormatException();
+            }
             n = Double.parseDouble(v.trim());
         } catch (NumberFormatException x) {
-            throw error(t, "'" + v + "' is given for " + what + ": it must be a number");
+            throw error(t, "'" + v + "' is given for " + what + ": it must be a number, such as 0.25");
         }
         if (!(n >= min && n <= max)) {
             throw error(t, v + " is given for " + what + ": it must be from " + fmt(min)

@@ -5,11 +5,9 @@ import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.IOException;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -19,8 +17,8 @@ import java.util.regex.Pattern;
 
 /**
  * The run records of a results folder, one JSON file per run in {@code DIR/runs/}, each written
- * whole or not at all (to a temporary file, then moved into place), so that a worker killed halfway
- * leaves no half record and a folder shared by many workers (a cluster's) never holds a torn one.
+ * whole or not at all ({@link AtomicFiles}), so that a worker killed halfway leaves no half record
+ * and a folder shared by many workers (a cluster's) never holds a torn one.
  */
 public final class RunRecords {
     private static final Pattern FILE = Pattern.compile("run-(\\d{6,})\\.json");
@@ -48,18 +46,24 @@ public final class RunRecords {
      * @throws IOException if it cannot be written
      */
     public static void write(Path out, RunRecord record) throws IOException {
-        Path target = file(out, record.index());
-        Files.createDirectories(target.getParent());
-        Path tmp = Files.createTempFile(target.getParent(), ".run-" + record.index() + "-", ".tmp");
+        AtomicFiles.write(file(out, record.index()), o -> JSON.writeValue(o, record));
+    }
+
+    /**
+     * @param out   the results folder
+     * @param index a run's index
+     * @return its record, or null if it has none
+     * @throws IOException if it cannot be read, naming the file
+     */
+    public static RunRecord read(Path out, int index) throws IOException {
+        Path f = file(out, index);
+        if (!Files.exists(f)) {
+            return null;
+        }
         try {
-            JSON.writeValue(tmp.toFile(), record);
-            try {
-                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-        } finally {
-            Files.deleteIfExists(tmp);
+            return JSON.readValue(f.toFile(), RunRecord.class);
+        } catch (JsonProcessingException e) {
+            throw new IOException(f + " is no run record: " + e.getOriginalMessage(), e);
         }
     }
 

@@ -82,6 +82,10 @@ final class YamlTree {
             }
             int[] count = {0};
             Node root = node(file, p, count);
+            if (p.nextToken() != null) {
+                throw new ExperimentFileException(file, line(p), "a second YAML document: an experiment file is one"
+                        + " document (leave out the '---')");
+            }
             return root;
         } catch (JsonProcessingException e) {
             int line = e.getLocation() == null ? 0 : e.getLocation().getLineNr();

@@ -129,6 +129,33 @@ class ExperimentReaderTest {
         ExperimentFileException plot = error(GOOD + "plot:\n  x: speed\n");
         assertTrue(plot.getMessage().contains("plot.x is 'speed': it names one of the factors (team, loss)"),
                 plot.getMessage());
+        ExperimentFileException name = error(GOOD.replace("name: teams", "name: \"x\\ntouch PWNED\""));
+        assertEquals(1, name.line());
+        assertTrue(name.getMessage().contains("it names its folder and its cluster job"), name.getMessage());
+        ExperimentFileException reserved = error(GOOD.replace("  team: [1, 4]", "  robots: [1, 4]")
+                .replace("${team}", "${robots}"));
+        assertTrue(reserved.getMessage().contains("results.csv or summary.csv has a column of that name"),
+                reserved.getMessage());
+        ExperimentFileException emptyCase = error(GOOD.replace("""
+                factors:
+                  team: [1, 4]
+                  loss: [0, 0.25]
+                """, """
+                cases:
+                  - {}
+                  - {team: 1, loss: 0}
+                """));
+        assertTrue(emptyCase.getMessage().contains("an empty case"), emptyCase.getMessage());
+        ExperimentFileException noCount = error(GOOD.replace("    count: ${team}\n", ""));
+        assertTrue(noCount.getMessage().contains("give every program a count"), noCount.getMessage());
+        ExperimentFileException floaty = error(GOOD.replace("latency: 2", "range: 0.25f"));
+        assertTrue(floaty.getMessage().contains("'0.25f' is given for comms.range: it must be a number"),
+                floaty.getMessage());
+        ExperimentFileException two = error(GOOD + "---\nname: again\n");
+        assertTrue(two.getMessage().contains("a second YAML document"), two.getMessage());
+        ExperimentFileException robotFile = error(GOOD.replace("cellSize: 1600", "cellSize: 1600\n    robotFile: p9x"));
+        assertEquals(6, robotFile.line());
+        assertTrue(robotFile.getMessage().contains("robot parameter file 'p9x' not found"), robotFile.getMessage());
         ExperimentFileException property = error(GOOD.replace("world:\n", "world:\n  properties: {2fast: x}\n"));
         assertEquals(3, property.line());
         assertTrue(property.getMessage().contains("'2fast' is a world property's name"), property.getMessage());
@@ -149,6 +176,19 @@ class ExperimentReaderTest {
 
     @Test
     void aWorldFileIsFoundBesideTheExperimentFile() throws Exception {
+        Path root = robosim.params.RobotParameterFiles.root();
+        Files.createDirectories(dir.resolve("worlds"));
+        Files.writeString(dir.resolve("worlds/arena.xml"), Files.readString(root.resolve(
+                "testLoadFiles/environment/small-maze.xml")).replace("../robots/p3dx.p",
+                root.resolve("testLoadFiles/robots/p3dx.p").toString()));
+        ExperimentFileException missing = error("""
+                world:
+                  file: worlds/none.xml
+                programs: [{class: a.B}]
+                steps: 100
+                """);
+        assertEquals(2, missing.line());
+        assertTrue(missing.getMessage().contains("none.xml, which does not exist"), missing.getMessage());
         Experiment e = ExperimentReader.read(write("""
                 world:
                   file: worlds/arena.xml

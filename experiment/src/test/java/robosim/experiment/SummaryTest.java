@@ -23,7 +23,7 @@ class SummaryTest {
 
     @Test
     void theIntervalIsStudentsTWithNMinusOneDegreesOfFreedom() {
-        Summary.Row r = Summary.row(Map.of("team", "2"), "steps", List.of(1.0, 2.0, 3.0), 1);
+        Summary.Row r = Summary.row(Map.of("team", "2"), "steps", List.of(1.0, 2.0, 3.0), 0, 1);
         assertEquals(3, r.n());
         assertEquals(2.0, r.mean(), 1e-12);
         assertEquals(1.0, r.sd(), 1e-12);
@@ -31,7 +31,7 @@ class SummaryTest {
         assertEquals(2 - 4.302652729911275 / Math.sqrt(3), r.ciLow(), 1e-9);
         assertEquals(2 + 4.302652729911275 / Math.sqrt(3), r.ciHigh(), 1e-9);
         assertEquals(1, r.failed());
-        Summary.Row one = Summary.row(Map.of(), "steps", List.of(7.0), 0);
+        Summary.Row one = Summary.row(Map.of(), "steps", List.of(7.0), 0, 0);
         assertEquals(7.0, one.mean());
         assertTrue(Double.isNaN(one.sd()) && Double.isNaN(one.ciLow()), "one run has no spread and no interval");
     }
@@ -76,9 +76,9 @@ class SummaryTest {
         Path s = dir.resolve("summary.csv");
         t.writeSummary(s, summary);
         List<String> lines = Files.readAllLines(s, StandardCharsets.UTF_8);
-        assertEquals("team,metric,n,mean,sd,ciLow,ciHigh,failed", lines.get(0));
-        assertEquals("1,steps,1,40,,,,1", lines.get(1));
-        assertEquals("2,steps,0,,,,,0", lines.get(4), "a combination with no runs yet");
+        assertEquals("team,metric,n,missing,mean,sd,ciLow,ciHigh,failed", lines.get(0));
+        assertEquals("1,steps,1,0,40,,,,1", lines.get(1));
+        assertEquals("2,steps,0,0,,,,,0", lines.get(4), "a combination with no runs yet");
     }
 
     @Test

@@ -1,0 +1,78 @@
+package robosim.experiment;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import robosim.env.world.World;
+import robosim.env.world.maze.GoldBound;
+import robosim.env.world.maze.Maze;
+import robosim.env.world.maze.MazeWorldWriter;
+import robosim.env.world.xml.WorldReader;
+import robosim.experiment.RunRobots.RunFailure;
+import robosim.experiment.RunSpec.FilePlan;
+import robosim.experiment.RunSpec.MazePlan;
+import robosim.experiment.RunSpec.ProgramPlan;
+import robosim.params.RobotParameterFiles;
+
+/** The world of a run: a generated maze (written under the results folder) or a world file. */
+final class RunWorlds {
+    private RunWorlds() {
+    }
+
+    /** A run's world, with its maze's lower bound (null for a world file or a maze without gold). */
+    record Made(World world, Long lowerBound) {
+    }
+
+    /**
+     * @param run the run
+     * @param out the results folder; mazes go to its {@code worlds/}
+     * @return the world, with the robots its programs ask for and the properties the run sets
+     * @throws IOException if a maze cannot be written or the world cannot be read
+     * @throws RunFailure  if the world has fewer robots than the programs ask for
+     */
+    static Made make(RunSpec run, Path out) throws IOException {
+        int wanted = 0;
+        boolean rest = false;
+        for (ProgramPlan p : run.programs()) {
+            if (p.count() < 0) {
+                rest = true;
+            } else {
+                wanted += p.count();
+            }
+        }
+        if (run.world() instanceof MazePlan m) {
+            Maze maze = Maze.generate(m.width(), m.height(), m.mazeSeed());
+            Path params = RobotParameterFiles.resolve(m.robotFile()).toAbsolutePath();
+            String xml = MazeWorldWriter.write(maze, String.format(Locale.ROOT, "maze-%dx%d-%d", m.width(), m.height(),
+                    m.mazeSeed()), m.cellSize(), wanted, params.toString().replace('\\', '/'));
+            // named by its text: runs at once that need the same maze with other robots never share a file
+            Path file = out.resolve("worlds").resolve(String.format(Locale.ROOT, "maze-%dx%d-%d-%s.xml", m.width(),
+                    m.height(), m.mazeSeed(), ExperimentFiles.fingerprint(xml)));
+            if (!Files.exists(file)) {
+                AtomicFiles.write(file, xml);
+            }
+            World world = properties(WorldReader.read(file), m.properties());
+            Long bound = world.gold() == null || wanted == 0 ? null : GoldBound.steps(maze, world, m.cellSize());
+            return new Made(world, bound);
+        }
+        FilePlan f = (FilePlan) run.world();
+        World world = WorldReader.read(f.file());
+        int named = world.robots().size();
+        if (wanted > named || (!rest && wanted == 0)) {
+            throw new RunFailure("world " + f.file() + " names " + named + " robot(s); the programs ask for " + wanted);
+        }
+        return new Made(properties(rest ? world : world.withFirstRobots(wanted), f.properties()), null);
+    }
+
+    private static World properties(World world, Map<String, String> set) {
+        if (set.isEmpty()) {
+            return world;
+        }
+        Map<String, String> all = new LinkedHashMap<>(world.properties());
+        all.putAll(set);
+        return world.withProperties(all);
+    }
+}
