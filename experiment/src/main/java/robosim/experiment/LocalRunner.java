@@ -2,32 +2,29 @@ package robosim.experiment;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 
 /**
  * Runs a sweep's runs on this machine, each in a worker JVM of its own ({@code robosim experiment
  * FILE --run INDEX}, the command a cluster's task runs too), several at once. A JVM per run keeps
- * runs apart (a program's static fields, its threads, the JIT's warm-up): a run's row does not depend
- * on the runs before it in the same JVM, so it is the same whatever the parallelism. A worker that
- * dies without writing its record gets a failed record with the reason and its log's last lines;
- * the others go on.
+ * runs apart (a program's static fields, its threads): a run's row does not depend on the runs
+ * before it in the same JVM, so it is the same whatever the parallelism. A worker that dies without
+ * writing its record gets a failed record with the reason and its log's last lines; the others go
+ * on. Stopped (Ctrl-C, or the JVM told to end), it starts no more workers and stops those running.
  */
 public final class LocalRunner {
-    /** How many of a dead worker's last log lines its failed record keeps. */
-    static final int LOG_TAIL = 5;
-
     /** Makes a worker's command line. */
     @FunctionalInterface
     public interface Workers {
@@ -38,14 +35,29 @@ public final class LocalRunner {
         List<String> command(int run);
     }
 
+    /**
+     * How long each run's worker JVM lived, s, and how long its steps took: the difference is what a run
+     * costs beyond its simulation.
+     *
+     * @param run               the run
+     * @param workerSeconds     its JVM's life, from start to exit
+     * @param simulationSeconds its steps, from the first to the end (0 if it failed)
+     */
+    public record Timing(int run, double workerSeconds, double simulationSeconds) {
+    }
+
     private final Experiment experiment;
     private final RunExecutor executor;
     private final Path out;
     private final Workers workers;
     private final int parallel;
     private final PrintWriter progress;
-    private final Map<Process, Integer> running = new ConcurrentHashMap<>();
+    /** The workers running, with their run and start; guarded by this. */
+    private final Map<Process, long[]> running = new LinkedHashMap<>();
     private final BlockingQueue<Process> ends = new LinkedBlockingQueue<>();
+    private final List<Timing> timings = new ArrayList<>();
+    /** Set once the sweep is being stopped: no worker starts after it; guarded by this. */
+    private boolean stopping;
 
     /**
      * @param experiment the experiment
@@ -75,26 +87,33 @@ public final class LocalRunner {
      */
     public int run(List<Integer> runs) throws IOException, InterruptedException {
         Deque<Integer> pending = new ArrayDeque<>(runs);
-        Thread stopWorkers = new Thread(this::destroyAll, "experiment-stop-workers");
+        Thread stopWorkers = new Thread(this::stopAll, "experiment-stop-workers");
         Runtime.getRuntime().addShutdownHook(stopWorkers);
         long start = System.nanoTime();
         int done = 0;
         int failed = 0;
         Files.createDirectories(out.resolve("logs"));
         try {
-            while (!pending.isEmpty() || !running.isEmpty()) {
-                while (running.size() < parallel && !pending.isEmpty()) {
-                    int index = pending.poll();
-                    Path log = log(index);
-                    Files.deleteIfExists(RunRecords.file(out, index));
-                    Process p = new ProcessBuilder(workers.command(index)).redirectErrorStream(true)
-                            .redirectOutput(log.toFile()).start();
-                    running.put(p, index);
-                    p.onExit().thenAccept(ends::add);
+            while (true) {
+                synchronized (this) {
+                    while (!stopping && running.size() < parallel && !pending.isEmpty()) {
+                        startWorker(pending.poll());
+                    }
+                    if (stopping || running.isEmpty()) {
+                        break;
+                    }
                 }
                 Process ended = ends.take();
-                int index = running.remove(ended);
+                long[] runAndStart;
+                synchronized (this) {
+                    runAndStart = running.remove(ended);
+                }
+                int index = (int) runAndStart[0];
                 RunRecord record = recordOf(index, ended.exitValue());
+                Timing t = new Timing(index, (System.nanoTime() - runAndStart[1]) / 1e9, record.simulationSeconds());
+                timings.add(t);
+                Files.writeString(timingFile(out), String.format(Locale.ROOT, "%d,%.3f,%.3f%n", t.run(),
+                        t.workerSeconds(), t.simulationSeconds()), StandardOpenOption.CREATE, StandardOpenOption.APPEND);
                 done++;
                 if (!record.ok()) {
                     failed++;
@@ -102,7 +121,7 @@ public final class LocalRunner {
                 tell(record, done, failed, runs.size(), start);
             }
         } finally {
-            destroyAll();
+            stopAll();
             try {
                 Runtime.getRuntime().removeShutdownHook(stopWorkers);
             } catch (IllegalStateException e) {
@@ -112,31 +131,41 @@ public final class LocalRunner {
         return failed;
     }
 
+    /**
+     * @param out a results folder
+     * @return where its local sweeps note each run's worker time and simulation time, a line per run
+     *         ({@code run,workerSeconds,simulationSeconds}), for the benchmark
+     */
+    public static Path timingFile(Path out) {
+        return out.resolve("logs").resolve("timing.csv");
+    }
+
+    /** @return each finished run's worker time and simulation time, in the order they ended */
+    public List<Timing> timings() {
+        return List.copyOf(timings);
+    }
+
+    private void startWorker(int index) throws IOException {
+        Files.deleteIfExists(RunRecords.file(out, index));
+        Process p = new ProcessBuilder(workers.command(index)).redirectErrorStream(true)
+                .redirectOutput(log(index).toFile()).start();
+        running.put(p, new long[] {index, System.nanoTime()});
+        p.onExit().thenAccept(ends::add);
+    }
+
     private RunRecord recordOf(int index, int exit) throws IOException {
-        Path file = RunRecords.file(out, index);
-        if (Files.exists(file)) {
-            RunRecord r = RunRecords.readAll(out).get(index);
-            if (r != null) {
-                return r;
-            }
+        RunRecord r = RunRecords.read(out, index);
+        if (r != null) {
+            return r;
         }
         RunRecord lost = executor.lost(experiment.run(index), "the run's JVM exited with code " + exit
-                + " and wrote no record; the end of its log (" + log(index) + "): " + tail(log(index)));
+                + " and wrote no record; the end of its log (" + log(index) + "): " + RunRobots.tail(log(index)));
         RunRecords.write(out, lost);
         return lost;
     }
 
     private Path log(int index) {
         return out.resolve("logs").resolve(String.format(Locale.ROOT, "run-%06d.log", index));
-    }
-
-    private static String tail(Path log) {
-        try {
-            List<String> lines = Files.readAllLines(log, StandardCharsets.UTF_8);
-            return String.join(" | ", lines.subList(Math.max(0, lines.size() - LOG_TAIL), lines.size()));
-        } catch (IOException e) {
-            return "(unreadable: " + e.getMessage() + ")";
-        }
     }
 
     private void tell(RunRecord r, int done, int failed, int total, long start) {
@@ -160,14 +189,21 @@ public final class LocalRunner {
                 : s >= 60 ? String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60) : s + "s";
     }
 
-    private void destroyAll() {
-        for (Process p : new ArrayList<>(running.keySet())) {
+    /** Starts no more workers, and stops those running (and the robot JVMs they started). */
+    private void stopAll() {
+        List<Process> left;
+        synchronized (this) {
+            stopping = true;
+            left = new ArrayList<>(running.keySet());
+        }
+        for (Process p : left) {
             p.descendants().forEach(ProcessHandle::destroy);
             p.destroy();
         }
-        for (Process p : new ArrayList<>(running.keySet())) {
+        for (Process p : left) {
             try {
                 if (!p.waitFor(5, TimeUnit.SECONDS)) {
+                    p.descendants().forEach(ProcessHandle::destroyForcibly);
                     p.destroyForcibly();
                 }
             } catch (InterruptedException e) {

@@ -92,15 +92,6 @@ public final class Slurm {
         Path dir = out.resolve("slurm");
         Files.createDirectories(dir);
         Path script = dir.resolve(experiment.name() + ".sbatch");
-        Path list = dir.resolve(experiment.name() + ".runs");
-        // the runs each task takes, one line per task: a resumed sweep's runs need not be a range
-        List<String> lines = new ArrayList<>();
-        for (int t = 0; t < tasks; t++) {
-            List<Integer> chunk = runs.subList(t * request.runsPerTask(),
-                    Math.min(runs.size(), (t + 1) * request.runsPerTask()));
-            lines.add(Report.ranges(chunk).replace(" ", ""));
-        }
-        Files.write(list, lines, StandardCharsets.UTF_8);
         StringBuilder s = new StringBuilder("#!/bin/bash\n");
         s.append("#SBATCH --job-name=robosim-").append(experiment.name()).append('\n');
         s.append("#SBATCH --array=0-").append(tasks - 1).append('\n');
@@ -118,15 +109,23 @@ public final class Slurm {
             s.append("#SBATCH --mem=").append(request.mem()).append('\n');
         }
         s.append(String.format(Locale.ROOT, "# Written by robosim experiment --slurm: %d runs of %s in %d task(s),"
-                + " each running the runs of its line of%n# %s, each run in a JVM of its own, into %s.%n"
+                + " each running%n# the runs its case below gives, each run in a JVM of its own, into %s.%n"
                 + "# Submit it with: sbatch %s%n# then build the results: bin/robosim experiment %s --out-dir %s --collect%n"
                 + "# ROBOSIM_JAVA, if set where you submit, names the java the nodes run instead of this one.%n",
-                runs.size(), experiment.file().toAbsolutePath().normalize(), tasks, list.toAbsolutePath(),
+                runs.size(), experiment.file().toAbsolutePath().normalize(), tasks,
                 out.toAbsolutePath(), script.toAbsolutePath(), experiment.file().toAbsolutePath().normalize(),
                 out.toAbsolutePath()));
         s.append("set -euo pipefail\n");
-        s.append("runs=\"$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" ").append(quote(list.toAbsolutePath().toString()))
-                .append(")\"\n");
+        // the runs are in the script, which sbatch copies when it is submitted: a later submission for
+        // the same folder cannot change what this job's tasks run
+        s.append("case \"$SLURM_ARRAY_TASK_ID\" in\n");
+        for (int t = 0; t < tasks; t++) {
+            List<Integer> chunk = runs.subList(t * request.runsPerTask(),
+                    Math.min(runs.size(), (t + 1) * request.runsPerTask()));
+            s.append("  ").append(t).append(") runs=").append(Report.ranges(chunk).replace(" ", "")).append(" ;;\n");
+        }
+        s.append("  *) echo \"task $SLURM_ARRAY_TASK_ID has no runs: the array is 0-").append(tasks - 1)
+                .append("\" >&2; exit 1 ;;\nesac\n");
         s.append("exec \"${ROBOSIM_JAVA:-").append(launcher.get(0).replace("\"", "")).append("}\"");
         for (String a : launcher.subList(1, launcher.size())) {
             s.append(' ').append(quote(a));
@@ -155,36 +154,39 @@ public final class Slurm {
 
     /**
      * @param job a job's id
-     * @return whether any of its tasks is still pending or running ({@code squeue -h -j JOB} lists it)
-     * @throws IOException if squeue cannot be run
+     * @return whether any of its tasks is still pending or running ({@code squeue -h -j JOB} lists it);
+     *         false once it has left the queue or been forgotten
+     * @throws IOException if squeue cannot be run or fails (the controller busy, say): ask again
      * @throws InterruptedException if interrupted
      */
     public static boolean queued(String job) throws IOException, InterruptedException {
         Process p = new ProcessBuilder("squeue", "-h", "-j", job, "-o", "%i").redirectErrorStream(true).start();
-        String said = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        // squeue's answer for one job is a few lines: it fits the pipe, so waiting first cannot block it
         if (!p.waitFor(30, TimeUnit.SECONDS)) {
             p.destroyForcibly();
             throw new IOException("squeue did not answer within 30 s");
         }
-        // an ended job is forgotten after a while: squeue then says its id is invalid
-        return p.exitValue() == 0 && !said.isEmpty();
+        String said = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        if (p.exitValue() == 0) {
+            return !said.isEmpty();
+        }
+        if (said.contains("Invalid job id")) {
+            // an ended job is forgotten after a while (MinJobAge)
+            return false;
+        }
+        throw new IOException("squeue exited with " + p.exitValue() + ": " + said);
     }
 
     /**
      * Submits a script with {@code sbatch --parsable}.
      *
      * @param script the script
-     * @param wait   whether sbatch itself waits for every task to end ({@code sbatch --wait})
      * @return the job's id
      * @throws IOException if sbatch cannot be run or refuses, with what it said
      * @throws InterruptedException if interrupted while waiting
      */
-    public static String submit(Path script, boolean wait) throws IOException, InterruptedException {
-        List<String> cmd = new ArrayList<>(List.of("sbatch", "--parsable"));
-        if (wait) {
-            cmd.add("--wait");
-        }
-        cmd.add(script.toAbsolutePath().toString());
+    public static String submit(Path script) throws IOException, InterruptedException {
+        List<String> cmd = List.of("sbatch", "--parsable", script.toAbsolutePath().toString());
         Process p;
         try {
             p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
@@ -198,7 +200,7 @@ public final class Slurm {
         if (id == null) {
             throw new IOException("sbatch refused " + script + " (exit " + exit + "): " + said);
         }
-        if (exit != 0 && !wait) {
+        if (exit != 0) {
             throw new IOException("sbatch exited with " + exit + " for job " + id + ": " + said);
         }
         return id;

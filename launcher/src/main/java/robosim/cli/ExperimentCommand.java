@@ -2,7 +2,6 @@ package robosim.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,6 +9,8 @@ import java.util.Locale;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -41,6 +42,9 @@ import robosim.params.RobotParameterFiles;
                 "On a SLURM cluster, --slurm submits the sweep as a job array instead and --collect builds the results"
                         + " once its tasks are done. The file's format is in docs/EXPERIMENTS.md."})
 final class ExperimentCommand implements Callable<Integer> {
+    /** A heap size as java's -Xmx takes it. */
+    private static final Pattern HEAP = Pattern.compile("(\\d{1,6})([kKmMgG])");
+
     @Spec
     CommandSpec spec;
 
@@ -116,10 +120,19 @@ final class ExperimentCommand implements Callable<Integer> {
     int runsPerTask;
 
     @Override
-    public Integer call() throws Exception {
-        PrintWriter o = spec.commandLine().getOut();
+    public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
         checkFlags();
+        try {
+            return sweep(spec.commandLine().getOut(), err);
+        } catch (IOException x) {
+            err.println("robosim experiment: " + x.getMessage());
+            err.flush();
+            return 1;
+        }
+    }
+
+    private int sweep(PrintWriter o, PrintWriter err) throws IOException, InterruptedException {
         Experiment e;
         try {
             e = ExperimentReader.read(file);
@@ -127,7 +140,7 @@ final class ExperimentCommand implements Callable<Integer> {
             err.println("robosim experiment: " + x.getMessage());
             return 2;
         } catch (IOException x) {
-            err.println("robosim experiment: cannot read " + file + ": " + x.getMessage());
+            err.println("robosim experiment: cannot read " + file + ": " + x);
             return 2;
         }
         String fingerprint = ExperimentFiles.fingerprint(e);
@@ -155,13 +168,7 @@ final class ExperimentCommand implements Callable<Integer> {
         if (collect) {
             return collect(e, fingerprint, dir, o, err);
         }
-        TreeMap<Integer, RunRecord> before;
-        try {
-            before = Collector.mine(e, fingerprint, dir);
-        } catch (IOException x) {
-            err.println("robosim experiment: " + x.getMessage());
-            return 1;
-        }
+        TreeMap<Integer, RunRecord> before = Collector.mine(e, fingerprint, dir);
         if (!before.isEmpty() && !resume) {
             err.println("robosim experiment: " + dir + " already holds " + before.size() + " run record(s) of this"
                     + " experiment: --resume goes on with them, or give another --out-dir");
@@ -180,9 +187,11 @@ final class ExperimentCommand implements Callable<Integer> {
                         - pending.size()) + " done before", dir);
         o.flush();
         if (slurm || slurmScript) {
-            return cluster(e, fingerprint, dir, pending, recorded, o, err);
+            boolean waited = new ExperimentCluster(e, dir, o, err).submit(slurmRequest(), launcher(),
+                    taskOptions(recorded), pending, slurmScript, await);
+            return waited ? collect(e, fingerprint, dir, o, err) : 0;
         }
-        int workers = parallel != null ? parallel : LocalRunner.defaultParallel(heapBytes());
+        int workers = Math.min(pending.size(), parallel != null ? parallel : LocalRunner.defaultParallel(heapBytes()));
         o.printf(Locale.ROOT, "Running %d at once, each in a JVM of its own (--heap %s)%n", workers, heap);
         o.flush();
         int failed = new LocalRunner(e, executor, dir, index -> workerCommand(dir, index, recorded), workers, err)
@@ -225,7 +234,7 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     private long heapBytes() {
-        var m = java.util.regex.Pattern.compile("(\\d{1,6})([kKmMgG])").matcher(heap);
+        Matcher m = HEAP.matcher(heap);
         if (!m.matches()) {
             throw new ParameterException(spec.commandLine(), "'" + heap + "' was supplied for --heap: it is a size such"
                     + " as 512m or 2g");
@@ -276,12 +285,6 @@ final class ExperimentCommand implements Callable<Integer> {
 
     private int runOnly(Experiment e, String fingerprint, Path dir, RunExecutor executor, TreeSet<Integer> indices,
                         TreeSet<Integer> recorded, PrintWriter o, PrintWriter err) throws IOException, InterruptedException {
-        try {
-            Collector.mine(e, fingerprint, dir);
-        } catch (IOException x) {
-            err.println("robosim experiment: " + x.getMessage());
-            return 1;
-        }
         if (indices.size() == 1) {
             int index = indices.first();
             Path recording = recorded.contains(index) ? dir.resolve("recordings")
@@ -292,20 +295,14 @@ final class ExperimentCommand implements Callable<Integer> {
             o.flush();
             return 0;
         }
-        int workers = parallel != null ? parallel : LocalRunner.defaultParallel(heapBytes());
+        int workers = Math.min(indices.size(), parallel != null ? parallel : LocalRunner.defaultParallel(heapBytes()));
         new LocalRunner(e, executor, dir, index -> workerCommand(dir, index, recorded), workers, err)
                 .run(List.copyOf(indices));
         return 0;
     }
 
     private int collect(Experiment e, String fingerprint, Path dir, PrintWriter o, PrintWriter err) throws IOException {
-        Collector.Collected c;
-        try {
-            c = Collector.collect(e, fingerprint, dir);
-        } catch (IOException x) {
-            err.println("robosim experiment: " + x.getMessage());
-            return 1;
-        }
+        Collector.Collected c = Collector.collect(e, fingerprint, dir);
         o.printf(Locale.ROOT, "Runs: %d of %d recorded, %d failed%s%n", c.done(), e.runCount(), c.failed(),
                 c.missing().isEmpty() ? "" : "; " + c.missing().size() + " have no record yet (--resume runs them)");
         o.println("Results: " + c.results());
@@ -316,74 +313,11 @@ final class ExperimentCommand implements Callable<Integer> {
         return c.missing().isEmpty() ? 0 : 1;
     }
 
-    private int cluster(Experiment e, String fingerprint, Path dir, List<Integer> pending, TreeSet<Integer> recordedRuns,
-                        PrintWriter o, PrintWriter err) throws IOException, InterruptedException {
-        Slurm.Request request;
+    private Slurm.Request slurmRequest() {
         try {
-            request = new Slurm.Request(partition, time, cpusPerTask, mem, runsPerTask);
+            return new Slurm.Request(partition, time, cpusPerTask, mem, runsPerTask);
         } catch (IllegalArgumentException x) {
             throw new ParameterException(spec.commandLine(), x.getMessage());
-        }
-        if (pending.isEmpty()) {
-            o.println("Every run has its record: nothing to submit");
-            return collect(e, fingerprint, dir, o, err);
-        }
-        Path robosim = RobotParameterFiles.root().resolve("bin").resolve("robosim").toAbsolutePath();
-        Path script;
-        try {
-            script = Slurm.writeScript(e, launcher(), dir, request, pending, taskOptions(recordedRuns));
-        } catch (IllegalArgumentException x) {
-            throw new ParameterException(spec.commandLine(), x.getMessage());
-        }
-        o.println("Job script: " + script);
-        if (slurmScript) {
-            o.println("Submit it with: sbatch " + script);
-            o.println("Then: " + robosim + " experiment " + file.toAbsolutePath().normalize() + " --out-dir " + dir + " --collect");
-            o.flush();
-            return 0;
-        }
-        o.flush();
-        String job;
-        try {
-            job = Slurm.submit(script, false);
-        } catch (IOException x) {
-            err.println("robosim experiment: " + x.getMessage());
-            return 1;
-        }
-        o.printf(Locale.ROOT, "Submitted job %s: %d task(s)%n", job, Slurm.tasks(pending.size(), runsPerTask));
-        if (!await) {
-            o.println("When its tasks are done: " + robosim + " experiment " + file.toAbsolutePath().normalize()
-                    + " --out-dir " + dir + " --collect");
-            o.flush();
-            return 0;
-        }
-        o.flush();
-        awaitJob(e, fingerprint, dir, job, pending, err);
-        return collect(e, fingerprint, dir, o, err);
-    }
-
-    /** Waits for a job's tasks to leave the queue, telling how many of its runs have their records as they come. */
-    private static void awaitJob(Experiment e, String fingerprint, Path dir, String job, List<Integer> pending,
-                                 PrintWriter err) throws IOException, InterruptedException {
-        long start = System.nanoTime();
-        int told = -1;
-        while (true) {
-            boolean queued = Slurm.queued(job);
-            TreeMap<Integer, RunRecord> records = Collector.mine(e, fingerprint, dir);
-            int done = (int) pending.stream().filter(records::containsKey).count();
-            int failed = (int) pending.stream().filter(i -> records.containsKey(i) && !records.get(i).ok()).count();
-            if (done != told) {
-                double elapsed = (System.nanoTime() - start) / 1e9;
-                err.printf(Locale.ROOT, "job %s: %d/%d runs recorded, %d failed; %s, ETA %s%n", job, done,
-                        pending.size(), failed, LocalRunner.duration(elapsed),
-                        done == 0 ? "?" : LocalRunner.duration(elapsed / done * (pending.size() - done)));
-                err.flush();
-                told = done;
-            }
-            if (!queued) {
-                return;
-            }
-            Thread.sleep(1000);
         }
     }
 
@@ -403,7 +337,7 @@ final class ExperimentCommand implements Callable<Integer> {
     }
 
     /** @return the command that starts this launcher in a new JVM as this one runs: java, heap, classpath, class */
-    private List<String> launcher() {
+    List<String> launcher() {
         return List.of(RobotProcesses.javaBinary(), "-Xmx" + heap, "-Djava.awt.headless=true",
                 "-Drobosim.root=" + RobotParameterFiles.root(), "-cp", System.getProperty("java.class.path"),
                 Main.class.getName());
