@@ -2,6 +2,7 @@ package robosim.experiment;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -47,11 +48,11 @@ public record Experiment(Path file, String name, WorldTemplate world, List<Progr
         factorNames = List.copyOf(factorNames);
         List<Map<String, String>> copies = new ArrayList<>();
         for (Map<String, String> c : combinations) {
-            copies.add(java.util.Collections.unmodifiableMap(new LinkedHashMap<>(c)));
+            copies.add(Collections.unmodifiableMap(new LinkedHashMap<>(c)));
         }
         combinations = List.copyOf(copies);
         metrics = List.copyOf(metrics);
-        aggregates = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(aggregates));
+        aggregates = Collections.unmodifiableMap(new LinkedHashMap<>(aggregates));
         plotMetrics = plotMetrics.stream().map(List::copyOf).toList();
     }
 

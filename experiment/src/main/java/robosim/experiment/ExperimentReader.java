@@ -2,17 +2,17 @@ package robosim.experiment;
 
 import com.fasterxml.jackson.core.JsonToken;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.HashSet;
 import java.util.Set;
 import robosim.env.world.xml.WorldReader;
-import robosim.params.RobotParameterFiles;
 import robosim.experiment.Experiment.Aggregate;
 import robosim.experiment.Experiment.CommsTemplate;
 import robosim.experiment.Experiment.ProgramTemplate;
@@ -21,6 +21,7 @@ import robosim.experiment.YamlTree.Mapping;
 import robosim.experiment.YamlTree.Node;
 import robosim.experiment.YamlTree.Scalar;
 import robosim.experiment.YamlTree.Sequence;
+import robosim.params.RobotParameterFiles;
 import robosim.protocol.Welcome;
 
 /**
@@ -71,7 +72,7 @@ public final class ExperimentReader {
             return;
         }
         Path world = ((RunSpec.FilePlan) run.world()).file();
-        if (!java.nio.file.Files.isRegularFile(world)) {
+        if (!Files.isRegularFile(world)) {
             throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file is " + world
                     + ", which does not exist (a world file's path is relative to the experiment file)");
         }

@@ -1,11 +1,13 @@
 package robosim.experiment;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.regex.Pattern;
 import robosim.experiment.Experiment.ProgramTemplate;
 import robosim.experiment.Experiment.WorldTemplate;
 import robosim.experiment.RunSpec.CommsPlan;
@@ -20,8 +22,8 @@ final class RunFiller {
     /** The largest maze side, in cells. */
     static final int MAX_MAZE_CELLS = 200;
     /** A number as people write it: digits, a point, an exponent; no hex, no 'f' or 'd'. */
-    private static final java.util.regex.Pattern DECIMAL =
-            java.util.regex.Pattern.compile("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
+    private static final Pattern DECIMAL =
+            Pattern.compile("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
     /** The most robots one program line may start. */
     static final int MAX_ROBOTS = 10_000;
 
@@ -78,7 +80,7 @@ final class RunFiller {
         String robotFile = w.robotFile() == null ? "p3dx" : text(w.robotFile());
         // a path is beside the experiment file, as a world file is; a shipped name (p3dx) stays a name
         Path beside = e.file().toAbsolutePath().getParent().resolve(robotFile).normalize();
-        if (java.nio.file.Files.isRegularFile(beside)) {
+        if (Files.isRegularFile(beside)) {
             robotFile = beside.toString();
         }
         return new MazePlan(width, height, cellSize, mazeSeed, robotFile, properties);

@@ -1,5 +1,6 @@
 package robosim.experiment;
 
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -34,8 +35,8 @@ public record RunRecord(String experiment, String fingerprint, int index, Map<St
 
     /** Copies the collections. */
     public RunRecord {
-        factors = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(factors));
-        metrics = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(metrics));
+        factors = Collections.unmodifiableMap(new LinkedHashMap<>(factors));
+        metrics = Collections.unmodifiableMap(new LinkedHashMap<>(metrics));
         robots = List.copyOf(robots);
     }
 
@@ -53,7 +54,7 @@ public record RunRecord(String experiment, String fingerprint, int index, Map<St
     public record RobotFigures(String name, Map<String, Object> figures) {
         /** Copies the map. */
         public RobotFigures {
-            figures = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(figures));
+            figures = Collections.unmodifiableMap(new LinkedHashMap<>(figures));
         }
     }
 }

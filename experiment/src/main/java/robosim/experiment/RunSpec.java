@@ -1,6 +1,8 @@
 package robosim.experiment;
 
 import java.nio.file.Path;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -23,7 +25,7 @@ public record RunSpec(int index, Map<String, String> factors, int replicate, lon
                       List<ProgramPlan> programs, CommsPlan comms, long steps) {
     /** Copies the collections. */
     public RunSpec {
-        factors = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(factors));
+        factors = Collections.unmodifiableMap(new LinkedHashMap<>(factors));
         programs = List.copyOf(programs);
     }
 

@@ -1,5 +1,7 @@
 package robosim.experiment;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
@@ -19,8 +21,8 @@ record Template(String text, int line) {
     static final Set<String> BUILT_IN = Set.of("seed", "replicate", "run");
 
     /** @return the names it uses, in order */
-    java.util.List<String> names() {
-        java.util.List<String> names = new java.util.ArrayList<>();
+    List<String> names() {
+        List<String> names = new ArrayList<>();
         Matcher m = PLACEHOLDER.matcher(text);
         while (m.find()) {
             names.add(m.group(1));

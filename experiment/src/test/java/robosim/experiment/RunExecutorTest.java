@@ -90,6 +90,20 @@ class RunExecutorTest {
                 r.failure());
     }
 
+    @Test
+    void aRobotJvmThatFailsFailsItsRunAsAThreadWould() throws Exception {
+        Experiment e = experiment("  - {class: robosim.examples.goldfinder.GoldFinder, count: 1, link: jvm}\n");
+        // a stand-in for robosim robot: a JVM that says why it fails and exits with 1 at once
+        RobotJvms failing = (cls, robot, port, secret, log, args) -> new ProcessBuilder("sh", "-c",
+                "echo robot " + robot + " could not load its program; exit 1").redirectErrorStream(true)
+                .redirectOutput(log.toFile()).start();
+        RunRecord r = new RunExecutor(e, "f", dir, getClass().getClassLoader(), failing).execute(e.run(0), null);
+        assertEquals(RunRecord.FAILED, r.status());
+        assertTrue(r.failure().startsWith("robot r1's JVM exited with code 1; the end of its log ("), r.failure());
+        // stopped at once, not after the 60 s the Environment waits for a robot to connect
+        assertTrue(r.failure().contains("robot r1 could not load its program; the run was stopped"), r.failure());
+    }
+
     /** A program that fails before its robot connects. */
     public static final class Thrower {
         private Thrower() {

@@ -3,6 +3,7 @@ package robosim.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -11,27 +12,29 @@ import picocli.CommandLine;
 import robosim.experiment.Experiment;
 import robosim.experiment.ExperimentFiles;
 import robosim.experiment.ExperimentReader;
+import robosim.experiment.LocalRunner;
 import robosim.experiment.RunRecord;
 import robosim.experiment.RunRecords;
 
 /**
  * {@code robosim bench --sweep FILE}: a sweep's throughput on this machine, runs per minute, with its
  * robots on the in-process link and then in JVMs of their own, and the time each run costs beyond its
- * simulation (its JVM's start, the world, the connections, the programs' ends): the sweep's slots
- * ({@code --parallel} × its wall time) less the runs' own simulating, per run.
+ * simulation (its JVM's start, the world, the connections, the programs' ends): each run's worker JVM's
+ * life less its steps' time, as the sweep noted them ({@link LocalRunner#timingFile}).
  */
 final class SweepBench {
     private SweepBench() {
     }
 
     /** What one sweep took. */
-    record Figures(String link, int runs, int failed, int parallel, double wallSeconds, double simulatingSeconds) {
+    record Figures(String link, int runs, int failed, int parallel, double wallSeconds, double workerSeconds,
+                   double simulatingSeconds) {
         double runsPerMinute() {
             return runs * 60 / wallSeconds;
         }
 
         double overheadPerRun() {
-            return (parallel * wallSeconds - simulatingSeconds) / runs;
+            return (workerSeconds - simulatingSeconds) / runs;
         }
     }
 
@@ -59,13 +62,19 @@ final class SweepBench {
             try {
                 TreeMap<Integer, RunRecord> records = RunRecords.readAll(dir);
                 int failed = (int) records.values().stream().filter(r -> !r.ok()).count();
-                double simulating = records.values().stream().mapToDouble(RunRecord::simulationSeconds).sum();
+                double simulating = 0;
+                double workers = 0;
+                for (String line : Files.readAllLines(LocalRunner.timingFile(dir))) {
+                    String[] cells = line.split(",");
+                    workers += Double.parseDouble(cells[1]);
+                    simulating += Double.parseDouble(cells[2]);
+                }
                 if (records.size() != e.runCount() || !records.values().stream().allMatch(r -> r.fingerprint()
                         .equals(fingerprint))) {
                     throw new IllegalStateException("the sweep left " + records.size() + " of " + e.runCount()
                             + " records: " + said);
                 }
-                return new Figures(link, records.size(), failed, parallel, wall, simulating);
+                return new Figures(link, records.size(), failed, parallel, wall, workers, simulating);
             } catch (IOException x) {
                 throw new IllegalStateException(x);
             }
@@ -75,9 +84,10 @@ final class SweepBench {
     static void print(PrintWriter o, Path file, List<Figures> figures) {
         for (Figures f : figures) {
             o.printf(Locale.ROOT, "sweep %s, links %s: %d runs (%d failed), %d at once, in %.1f s: %.1f runs per minute;"
-                            + " per run %.2f s simulating, %.2f s beyond it (JVM start, world, connections, programs' end)%n",
+                            + " per run %.2f s in its JVM, %.2f s of it simulating, %.2f s beyond (JVM start, world,"
+                            + " connections, programs' end)%n",
                     file.getFileName(), f.link(), f.runs(), f.failed(), f.parallel(), f.wallSeconds(), f.runsPerMinute(),
-                    f.simulatingSeconds() / f.runs(), f.overheadPerRun());
+                    f.workerSeconds() / f.runs(), f.simulatingSeconds() / f.runs(), f.overheadPerRun());
         }
         o.flush();
     }
