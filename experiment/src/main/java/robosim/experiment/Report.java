@@ -1,12 +1,16 @@
 package robosim.experiment;
 
 import java.nio.file.Path;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
 /** The short {@code report.md} of a results folder: what ran, the summary, the plots, the failures. */
 final class Report {
+    /** The failed runs the report lists, at most. */
+    static final int FAILED_SHOWN = 50;
     /** The metrics the report's table shows, at most. */
     static final int TABLE_METRICS = 6;
 
@@ -56,16 +60,32 @@ final class Report {
         }
         if (failed > 0) {
             s.append("## Failed runs\n\n");
-            table.records().stream().filter(r -> !r.ok()).limit(50).forEach(r -> s.append("- run ").append(r.index())
-                    .append(r.factors().isEmpty() ? "" : " (" + RunFiller.describe(r.factors()) + ")")
+            table.records().stream().filter(r -> !r.ok()).limit(FAILED_SHOWN).forEach(r -> s.append("- run ")
+                    .append(r.index()).append(r.factors().isEmpty() ? "" : " (" + RunFiller.describe(r.factors()) + ")")
                     .append(", seed ").append(r.seed()).append(": ").append(r.failure()).append('\n'));
+            if (failed > FAILED_SHOWN) {
+                s.append("- and ").append(failed - FAILED_SHOWN).append(" more: results.csv has every one\n");
+            }
             s.append('\n');
+        }
+        List<String> unknown = unknownNames(e, table);
+        if (!unknown.isEmpty()) {
+            s.append("## Names no run gave\n\n`metrics` or `plot.metrics` name ").append(String.join(", ", unknown))
+                    .append(", which no run reported: a typing error, or a metric its programs never reported.\n\n");
         }
         if (!missing.isEmpty()) {
             s.append("## Missing runs\n\nNo record yet: ").append(ranges(missing))
                     .append(". `robosim experiment FILE --out-dir DIR --resume` runs them.\n");
         }
         return s.toString();
+    }
+
+    /** @return the metrics the file names to keep or plot that no record has */
+    static List<String> unknownNames(Experiment e, ResultsTable table) {
+        Set<String> named = new LinkedHashSet<>(e.metrics());
+        e.plotMetrics().forEach(named::addAll);
+        named.removeIf(n -> table.records().stream().anyMatch(r -> r.metrics().containsKey(n)));
+        return table.records().isEmpty() ? List.of() : List.copyOf(named);
     }
 
     private static String cell(Summary.Row r) {

@@ -93,6 +93,7 @@ class SummaryTest {
         assertEquals(9, ((Number) back.metrics().get("steps")).intValue());
         assertEquals(Map.of("team", "2"), back.factors());
         Collector.Collected c = Collector.collect(e, "f00d", dir);
+        assertTrue(Files.readString(c.report()).contains("## Names no run gave") == false, "no names were asked for");
         assertEquals(List.of(0, 1, 2), c.missing());
         assertTrue(Files.readString(c.report()).contains("No record yet: 0-2"), Files.readString(c.report()));
         var x = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
