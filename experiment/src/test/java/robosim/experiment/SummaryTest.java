@@ -93,9 +93,14 @@ class SummaryTest {
         assertEquals(9, ((Number) back.metrics().get("steps")).intValue());
         assertEquals(Map.of("team", "2"), back.factors());
         Collector.Collected c = Collector.collect(e, "f00d", dir);
-        assertTrue(Files.readString(c.report()).contains("## Names no run gave") == false, "no names were asked for");
         assertEquals(List.of(0, 1, 2), c.missing());
         assertTrue(Files.readString(c.report()).contains("No record yet: 0-2"), Files.readString(c.report()));
+        Path typo = dir.resolve("typo.yaml");
+        Files.writeString(typo, Files.readString(dir.resolve("e.yaml")) + "metrics: [steps, stpes]\n");
+        Experiment withTypo = ExperimentReader.read(typo);
+        String report = Files.readString(Collector.collect(withTypo, "f00d", dir).report());
+        assertTrue(report.contains("## Names no run gave\n\n`metrics` or `plot.metrics` name stpes, which no run"
+                + " reported"), report);
         var x = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
                 () -> Collector.collect(e, "beef", dir));
         assertTrue(x.getMessage().contains("holds runs of another experiment"), x.getMessage());
