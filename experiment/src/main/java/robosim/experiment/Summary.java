@@ -29,9 +29,9 @@ public final class Summary {
      * @param missing the runs that ran to their end without a value for it (the gold not found, so no
      *                {@code foundStep}): the mean is of the others, which may not be all of a kind
      * @param mean    their mean
-     * @param sd      their sample standard deviation (NaN if n < 2)
-     * @param ciLow   the interval's low end (NaN if n < 2)
-     * @param ciHigh  its high end (NaN if n < 2)
+     * @param sd      their sample standard deviation (NaN if n is under 2)
+     * @param ciLow   the interval's low end (NaN if n is under 2)
+     * @param ciHigh  its high end (NaN if n is under 2)
      * @param failed  the combination's runs that failed
      */
     public record Row(Map<String, String> factors, String metric, int n, int missing, double mean, double sd,
