@@ -112,9 +112,12 @@ final class RunRobots {
         });
     }
 
-    /** The run starts: a failure from now on stops it. */
+    /** The run starts: a failure from now on stops it, and one that came before stops it at once. */
     synchronized void arm() {
         armed = true;
+        if (!failures.isEmpty()) {
+            runner.interrupt();
+        }
     }
 
     /** The run is over: no interrupt comes after this, and none that came before it is left pending. */
