@@ -50,6 +50,12 @@ public final class Plots {
             return out;
         }
         Files.createDirectories(dir);
+        // the plots of an earlier collection go: the file's plots may have changed since
+        try (var old = Files.newDirectoryStream(dir, "*.png")) {
+            for (Path p : old) {
+                Files.delete(p);
+            }
+        }
         List<List<String>> plots = experiment.plotMetrics().isEmpty()
                 ? table.numericMetrics().stream().map(List::of).toList() : experiment.plotMetrics();
         for (List<String> metrics : plots) {
