@@ -1,7 +1,5 @@
 package robosim.examples.goldfinder;
 
-import static robosim.examples.goldfinder.MazeKnowledge.NONE;
-
 import java.util.SplittableRandom;
 import robosim.aria.ArHeatSensor;
 import robosim.aria.ArRobot;
@@ -109,9 +107,7 @@ public class Gold extends ArRobot {
             return;
         }
         phases.step();
-        if (team.heartbeatDue()) {
-            team.tellWhereIAm(phases.underWay());
-        }
+        team.tellIfChanged();
         drawings.update();
     }
 
@@ -121,7 +117,7 @@ public class Gold extends ArRobot {
         long foundStep = getStep();
         stop();
         reportFound("gold");
-        team.tell(NONE, NONE, true);
+        team.tell(true);
         say("found the gold at step " + foundStep);
         phases.end();
     }
@@ -146,12 +142,12 @@ public class Gold extends ArRobot {
     /** Makes the robot's parts, which share its map and its course, starting in the cell it stands in. */
     private void makeParts(double cellSize, SplittableRandom random, ArHeatSensor heatSensor) {
         Course course = new Course((int) Math.floor(getX() / cellSize), (int) Math.floor(getY() / cellSize));
-        Survey survey = new Survey(this, laser, cellSize, map, course);
+        Survey survey = new Survey(this, laser, cellSize, heatSensor.getMaxRange(), map, course);
         team = new TeamTalk(this, map, survey.ownCells(), course);
         heat = new HeatGuide(this, heatSensor, cellSize, map, course);
-        Wayfinder way = new Wayfinder(this, rank, map, course, heat, team, random);
-        Driving driving = new Driving(this, laser, cellSize, course);
-        phases = new SearchPhases(survey, way, driving, team, course, random);
+        Wayfinder way = new Wayfinder(this, rank, map, course, heat, random);
+        Driving driving = new Driving(this, laser);
+        phases = new SearchPhases(this, cellSize, survey, way, driving, map, course, random);
         drawings = new TeamDrawings(this, rank, cellSize, map, survey.ownCells(), course);
     }
 
