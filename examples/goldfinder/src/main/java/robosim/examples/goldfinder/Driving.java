@@ -19,16 +19,22 @@ import robosim.aria.ArSick;
 final class Driving {
     /** The fastest the robot drives, mm/s. */
     static final double TOP_SPEED = 1200;
-    /** The fastest it takes a bend of half a cell's radius, mm/s. */
-    static final double BEND_SPEED = 650;
+    /** The fastest it takes a bend of half a cell's radius, mm/s (it cuts the bend a little). */
+    static final double BEND_SPEED = 900;
     /** The deceleration its speed profile plans with, mm/s². */
     static final double BRAKING = 250;
+    /** How far ahead on the track it steers for, mm: the way it drives in this many seconds... */
+    private static final double LOOK_SECONDS = 1.0;
+    /** ...but at least this far, mm. */
+    private static final double LOOK_LEAST = 350;
     /** A standing robot facing further than this from the track turns in place first, degrees. */
     private static final double TURN_FIRST = 20;
     /** Echoes nearer the track ahead than this are in the way, mm: walls are at least 650 mm from it. */
     private static final double IN_THE_WAY = 450;
     /** The room it leaves before something in the way, beyond its front, mm. */
     private static final double CLEARANCE = 150;
+    /** How far a robot backs off what it touches, mm. */
+    private static final double BACK_OFF = 250;
     /** The longest a robot backs off an obstacle, steps. */
     private static final int BACK_STEPS = 30;
 
@@ -79,7 +85,7 @@ final class Driving {
         double ahead = Math.max(0, Math.abs(v) * dt);
         double speed = Math.min(TOP_SPEED, Math.sqrt(2 * BRAKING * Math.max(0, room - ahead)));
         speed = Math.min(speed, Math.sqrt(BEND_SPEED * BEND_SPEED + 2 * BRAKING * Math.max(0, track.toBend() - ahead)));
-        double look = Math.min(Math.max(350, 0.6 * Math.abs(v)), 900);
+        double look = Math.min(Math.max(LOOK_LEAST, LOOK_SECONDS * Math.abs(v)), TOP_SPEED * LOOK_SECONDS);
         double[] p = track.pointAhead(look);
         double dx = p[0] - robot.getX();
         double dy = p[1] - robot.getY();
@@ -155,12 +161,48 @@ final class Driving {
         return robot.isStalled();
     }
 
-    /** Stops and backs off a little, straight back. */
+    /**
+     * Stops and backs off a little from what it touches: back when the nearest echo (laser or
+     * sonar) lies ahead of its centre, forward when it lies behind.
+     */
     void backOff() {
         turning = false;
         robot.stop();
-        robot.move(-200);
+        robot.move(nearestEchoAhead() ? -BACK_OFF : BACK_OFF);
         backSince = robot.getStep();
+    }
+
+    /** @return whether the nearest echo, of the laser or a sonar, lies ahead of the robot's centre */
+    private boolean nearestEchoAhead() {
+        double th = Math.toRadians(robot.getTh());
+        double ux = Math.cos(th);
+        double uy = Math.sin(th);
+        double best = Double.POSITIVE_INFINITY;
+        double along = 1;
+        int[] scan = laser.getRawScan();
+        double increment = scan.length > 1 ? 180.0 / (scan.length - 1) : 1;
+        double lx = robot.getParameters().laserX();
+        for (int i = 0; i < scan.length; i++) {
+            double a = Math.toRadians(i * increment - 90);
+            double fx = lx + scan[i] * Math.cos(a);
+            double fy = scan[i] * Math.sin(a);
+            double d = Math.hypot(fx, fy);
+            if (d < best) {
+                best = d;
+                along = fx;
+            }
+        }
+        for (int i = 0; i < robot.getNumSonar(); i++) {
+            var r = robot.getSonarReading(i);
+            double fx = (r.getX() - robot.getX()) * ux + (r.getY() - robot.getY()) * uy;
+            double fy = -(r.getX() - robot.getX()) * uy + (r.getY() - robot.getY()) * ux;
+            double d = Math.hypot(fx, fy);
+            if (r.getRange() > 0 && d < best) {
+                best = d;
+                along = fx;
+            }
+        }
+        return along > 0;
     }
 
     /** @return whether backing off is over: done, blocked again, or taking too long */

@@ -169,12 +169,11 @@ final class Track {
 
     /** @return the direction of the track where the robot is on it, degrees (0 east, 90 north) */
     double headingHere() {
-        double[] a = pointAhead(0);
-        double[] b = pointAhead(50);
-        if (Math.hypot(b[0] - a[0], b[1] - a[1]) < 1) {
-            Piece p = pieces.get(0);
-            return Math.toDegrees(Math.atan2(p.y1() - p.y0(), p.x1() - p.x0()));
+        Piece p = pieces.get(0);
+        if (p.arc()) {
+            double a = p.a0() + Math.signum(p.sweep()) * (progress / radius + Math.PI / 2);
+            return Math.toDegrees(a);
         }
-        return Math.toDegrees(Math.atan2(b[1] - a[1], b[0] - a[0]));
+        return Math.toDegrees(Math.atan2(p.y1() - p.y0(), p.x1() - p.x0()));
     }
 }
