@@ -34,6 +34,8 @@ final class TeamTalk {
     /** Which old cell the next report repeats, counted round the old ones. */
     private int repeatFrom;
     private long lastTold = Long.MIN_VALUE / 2;
+    /** The step at which it tells its last change once more, so one lost message does not lose it. */
+    private long repeatAt = -1;
     /** What its last report said of the robot itself. */
     private List<Long> lastSaid = List.of();
 
@@ -114,11 +116,17 @@ final class TeamTalk {
 
     /**
      * Tells the team where the robot is, what it holds and what it plans, when any of it has changed
-     * since its last report, or when it has said nothing for {@value #HEARTBEAT} steps.
+     * since its last report (and once more at the next step, so that a lost message does not keep
+     * a change from a teammate until the next heartbeat), or when it has said nothing for {@value
+     * #HEARTBEAT} steps.
      */
     void tellIfChanged() {
-        if (!said().equals(lastSaid) || robot.getStep() - lastTold >= HEARTBEAT) {
+        boolean changed = !said().equals(lastSaid);
+        if (changed || robot.getStep() - lastTold >= HEARTBEAT || robot.getStep() == repeatAt) {
             tell(false);
+            if (changed) {
+                repeatAt = robot.getStep() + 1;
+            }
         }
     }
 
