@@ -257,6 +257,23 @@ final class MazeKnowledge {
         return null;
     }
 
+    /**
+     * Whether a teammate holds a cell against a robot coming into it from cell {@code from}: it
+     * has committed to the cell, or it stands there, unless it is leaving it by another side than
+     * towards {@code from} (then the robot may follow it in, its laser keeping the distance).
+     */
+    boolean heldAgainst(long cell, long from) {
+        for (Mate m : mates.values()) {
+            if (m.route().contains(cell)) {
+                return true;
+            }
+            if (key(m.x(), m.y()) == cell && !(m.moving() && m.route().get(0) != from)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** @return the cells teammates stand in or drive into */
     Set<Long> held() {
         Set<Long> out = new TreeSet<>();

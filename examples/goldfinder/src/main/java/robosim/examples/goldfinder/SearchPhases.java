@@ -118,6 +118,9 @@ final class SearchPhases {
         }
         if (driving.follow(track())) {
             course.stand();
+            if (nearCentre()) {
+                survey.senseHereStanding(); // the sides the laser cannot see from here: beside it, behind it
+            }
         }
         blockedFor = driving.blocked() && Math.abs(robot.getVel()) < 20 ? blockedFor + 1 : 0;
         if (blockedFor > BLOCKED_STEPS) {
@@ -168,7 +171,7 @@ final class SearchPhases {
             return false; // too late to take the bend as an arc: stop at the centre and turn there
         }
         long next = neighbour(course.last(), side);
-        if (map.holder(MazeKnowledge.keyX(next), MazeKnowledge.keyY(next)) != null) {
+        if (map.heldAgainst(next, course.last())) {
             return false; // a teammate holds it: stop, and wait standing
         }
         course.commit(next);
@@ -208,6 +211,12 @@ final class SearchPhases {
         course.commit(neighbour(course.here(), side));
         course.stopWaiting();
         return true;
+    }
+
+    /** @return whether the robot stands within a fifth of a cell of its cell's centre */
+    private boolean nearCentre() {
+        return Math.hypot(robot.getX() - (course.x() + 0.5) * cellSize, robot.getY() - (course.y() + 0.5) * cellSize)
+                < cellSize / 5;
     }
 
     /** How far the robot is past the side of its cell it came in by, mm. */

@@ -58,17 +58,24 @@ final class Survey {
 
     /**
      * Senses the walls of the cell the robot stands in at its centre, facing along a grid axis,
-     * with its laser and rear sonars ({@link WallSensing#openSides}), unless somebody has already.
+     * unless somebody has already: the sides not yet known with its laser and rear sonars ({@link
+     * WallSensing#openSides}), which read the sides beside and behind it too.
      */
     void senseHereStanding() {
-        if (map.isSensed(course.x(), course.y())) {
+        int x = course.x();
+        int y = course.y();
+        if (map.isSensed(x, y)) {
             return;
         }
-        int open = WallSensing.openSides(robot, laser, cellSize);
+        int standing = WallSensing.openSides(robot, laser, cellSize);
+        int open = 0;
         for (int d = 0; d < 4; d++) {
-            sides.put(sideKey(course.x(), course.y(), d), (open & (1 << d)) != 0);
+            int known = known(x, y, d);
+            boolean isOpen = known == WallSensing.UNSEEN ? (standing & (1 << d)) != 0 : known == WallSensing.OPEN;
+            sides.put(sideKey(x, y, d), isOpen);
+            open |= isOpen ? 1 << d : 0;
         }
-        add(course.x(), course.y(), open);
+        add(x, y, open);
     }
 
     /** The robot came into its cell through side {@code entry} of it: that side is open. */

@@ -8,12 +8,13 @@ import java.util.SplittableRandom;
 import robosim.aria.ArRobot;
 
 /**
- * The rules by which a Gold robot, standing at a cell's centre, chooses its way: the side to leave
- * by (towards the gold's heat, else along the way to the frontier {@link TeamPlan} gives it), how
- * many cells to drive straight, and how it keeps out of its teammates' way: it waits for a cell a
- * teammate holds (and after a while tries another way out), and steps aside for a teammate that
- * waits for its cell. {@link SearchPhases} asks; the answers are sides of the cell, 0 to 3, or -1
- * for none.
+ * The rules by which a Gold robot chooses its way, a cell at a time: the side to leave its last
+ * committed cell by (along the way to the gold's cell once the heat places it, else to the
+ * frontier {@link TeamPlan} gives it), and how it keeps out of its teammates' way: it does not
+ * come into a cell a teammate holds against it, waits for one (and after a while tries another way
+ * out), steps aside for a teammate that waits for its cell, and gives up committed cells a
+ * teammate has taken first. {@link SearchPhases} asks; the answers are sides of a cell, 0 to 3, or
+ * -1 for none.
  */
 final class Wayfinder {
     /** Steps a robot waits for a cell before it tries another way out. */
@@ -61,7 +62,8 @@ final class Wayfinder {
      * Plans from the last cell the robot has committed to (the frontier to claim or follow, or the
      * gold's cell when the heat places it in a cell known to be reachable) and picks the side of
      * that cell to leave by: the first step towards the target. A robot that follows a teammate's
-     * claim does not enter the frontier itself.
+     * claim does not enter the frontier itself. While that cell is a frontier nobody has sensed yet,
+     * no side is known to lead anywhere: there is none, and the plan stays as it was.
      *
      * @return the side, or -1 for none
      */
@@ -69,10 +71,13 @@ final class Wayfinder {
         long from = course.last();
         int x = MazeKnowledge.keyX(from);
         int y = MazeKnowledge.keyY(from);
+        if (!map.isSensed(x, y)) {
+            return -1; // it drives into a frontier: no way on is known until it is sensed; the plan stands
+        }
         TeamPlan.Plan plan = TeamPlan.plan(map, rank, x, y, order, robot.getStep());
         long goldCell = heat.goldCell();
-        if (goldCell >= 0 && goldCell != from && map.reach(x, y, order, Set.of()).containsKey(goldCell)) {
-            plan = new TeamPlan.Plan(goldCell, true); // the heat places the gold in a cell known to be reachable
+        if (goldCell >= 0 && goldCell != from) {
+            plan = towardsGold(x, y, goldCell, plan);
         }
         course.plan(plan);
         if (plan.target() < 0) {
@@ -84,6 +89,35 @@ final class Wayfinder {
             return -1; // following: the frontier itself is the claimant's to enter
         }
         return d;
+    }
+
+    /**
+     * The heat places the gold in a cell: head there if a way is known, else for the frontier
+     * nearest it (by columns and rows, then by way), else keep the plan.
+     */
+    private TeamPlan.Plan towardsGold(int x, int y, long goldCell, TeamPlan.Plan plan) {
+        Map<Long, MazeKnowledge.Reach> reach = map.reach(x, y, order, Set.of());
+        if (reach.containsKey(goldCell)) {
+            return new TeamPlan.Plan(goldCell, true);
+        }
+        long best = -1;
+        int bestApart = Integer.MAX_VALUE;
+        int bestCells = Integer.MAX_VALUE;
+        for (Map.Entry<Long, MazeKnowledge.Reach> e : reach.entrySet()) {
+            long f = e.getKey();
+            if (map.isSensed(MazeKnowledge.keyX(f), MazeKnowledge.keyY(f))) {
+                continue;
+            }
+            int apart = Math.abs(MazeKnowledge.keyX(f) - MazeKnowledge.keyX(goldCell))
+                    + Math.abs(MazeKnowledge.keyY(f) - MazeKnowledge.keyY(goldCell));
+            int cells = e.getValue().cells();
+            if (apart < bestApart || (apart == bestApart && cells < bestCells)) {
+                best = f;
+                bestApart = apart;
+                bestCells = cells;
+            }
+        }
+        return best < 0 ? plan : new TeamPlan.Plan(best, true);
     }
 
     /** @return a teammate that waits to enter this robot's cell, or null */
@@ -151,7 +185,8 @@ final class Wayfinder {
 
     /** @return whether a teammate stands in the cell across {@code side} of the robot's, or has committed to it */
     boolean heldByTeammate(int side) {
-        return map.holder(course.x() + Directions.dx(side), course.y() + Directions.dy(side)) != null;
+        return map.heldAgainst(MazeKnowledge.key(course.x() + Directions.dx(side), course.y() + Directions.dy(side)),
+                course.here());
     }
 
     /**

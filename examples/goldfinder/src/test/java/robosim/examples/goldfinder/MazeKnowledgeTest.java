@@ -103,6 +103,19 @@ class MazeKnowledgeTest {
     }
 
     @Test
+    void aCellIsHeldAgainstARobotUnlessTheMateInItIsLeavingTheOtherWay() {
+        long from = MazeKnowledge.key(0, 1);
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(MazeKnowledge.key(2, 1)), 5, 5, 0));
+        assertFalse(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 leaves (1, 1) eastwards: follow it in");
+        assertTrue(map.heldAgainst(MazeKnowledge.key(2, 1), from), "r2 has committed to (2, 1)");
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(from), 5, 5, 1));
+        assertTrue(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 comes towards the robot");
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2));
+        assertTrue(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 stands in (1, 1)");
+        assertFalse(map.heldAgainst(MazeKnowledge.key(3, 3), from));
+    }
+
+    @Test
     void aMatesNewReportReplacesItsOldOne() {
         map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(MazeKnowledge.key(2, 1)), MazeKnowledge.NONE,
                 MazeKnowledge.NONE, 3));
