@@ -1,5 +1,7 @@
 package robosim.examples.goldfinder;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.SplittableRandom;
 import robosim.aria.ArRobot;
 
@@ -16,7 +18,9 @@ import robosim.aria.ArRobot;
  *       {@link Track} ({@link Driving}). Where it cannot go on (back the way it came, a cell a
  *       teammate holds, nothing left to do) it stops at a cell's centre, and standing there decides
  *       as a standing robot does: wait, step aside for a teammate that waits for its cell, or turn
- *       and go;</li>
+ *       and go. Held back a while by a teammate on its track (its laser saw it; the messages had
+ *       not told), it gives up the cells it had committed to, and the higher number of the two steps
+ *       off the other's way;</li>
  *   <li>{@link Phase#BACK BACK}: something stopped it (a collision): back off a little, then decide
  *       standing;</li>
  *   <li>{@link Phase#DONE DONE}: the gold is found; stand still.</li>
@@ -46,6 +50,7 @@ final class SearchPhases {
     private final MazeKnowledge map;
     private final Course course;
     private final SplittableRandom random;
+    private final int rank;
     private Phase phase = Phase.DRIVE;
     /** Steps to wait before deciding again. */
     private int pause;
@@ -73,6 +78,7 @@ final class SearchPhases {
         this.map = map;
         this.course = course;
         this.random = random;
+        this.rank = Gold.rankOf(robot.getName());
     }
 
     /** Does the current phase's part of one step. */
@@ -124,10 +130,19 @@ final class SearchPhases {
         }
         blockedFor = driving.blocked() && Math.abs(robot.getVel()) < 20 ? blockedFor + 1 : 0;
         if (blockedFor > BLOCKED_STEPS) {
-            // a teammate stands in the way: stop holding the cells beyond it, and think again
+            // a teammate stands in the way: stop holding the cells beyond it; the higher number of the
+            // two steps off the other's way, the other thinks again
             blockedFor = 0;
+            List<Long> meant = new ArrayList<>(course.ahead());
             driving.halt();
             course.stand();
+            String blocker = way.blocker(meant);
+            if (blocker != null && Gold.rankOf(blocker) < rank) {
+                int aside = way.sideAside(blocker);
+                if (aside >= 0 && leaveBy(aside)) {
+                    return;
+                }
+            }
             pause = 5 + random.nextInt(10);
         }
     }

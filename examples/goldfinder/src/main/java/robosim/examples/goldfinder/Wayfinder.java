@@ -120,6 +120,21 @@ final class Wayfinder {
         return best < 0 ? plan : new TeamPlan.Plan(best, true);
     }
 
+    /**
+     * @param meant the cells ahead the robot meant to drive through
+     * @return the first teammate, by name, that stands in the robot's cell or one of those, or null
+     */
+    String blocker(List<Long> meant) {
+        for (String name : map.mates()) {
+            MazeKnowledge.Mate m = map.mate(name);
+            long at = MazeKnowledge.key(m.x(), m.y());
+            if (at == course.here() || meant.contains(at)) {
+                return name;
+            }
+        }
+        return null;
+    }
+
     /** @return a teammate that waits to enter this robot's cell, or null */
     String waitedForBy() {
         long here = course.here();
