@@ -82,6 +82,7 @@ final class Driving {
         }
         double room = clearWay(track, toStop);
         blocked = room < toStop;
+        // the speed asked for holds for a step: what it covers in that step is already spent
         double ahead = Math.max(0, Math.abs(v) * dt);
         double speed = Math.min(TOP_SPEED, Math.sqrt(2 * BRAKING * Math.max(0, room - ahead)));
         speed = Math.min(speed, Math.sqrt(BEND_SPEED * BEND_SPEED + 2 * BRAKING * Math.max(0, track.toBend() - ahead)));
@@ -95,9 +96,10 @@ final class Driving {
             alpha = Math.toRadians(error);
             dist = Math.max(dist, 100);
         }
-        speed *= Math.max(0, Math.cos(alpha));
+        speed *= Math.max(0, Math.cos(alpha)); // facing away from the point, slow down while turning to it
         double curvature = 2 * Math.sin(alpha) / dist;
         robot.setVel(speed);
+        // the arc to the point at the speed it has, or at 100 mm/s while it starts, so that it turns from rest
         robot.setRotVel(Math.toDegrees(curvature * Math.max(Math.abs(v), 100)));
         return false;
     }
