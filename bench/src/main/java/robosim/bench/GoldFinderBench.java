@@ -57,7 +57,8 @@ public final class GoldFinderBench {
 
     /**
      * @param teams     team sizes to compare
-     * @param mazes     mazes (seeds 1..mazes)
+     * @param firstMaze the first maze's seed, at least 1
+     * @param mazes     mazes (seeds firstMaze .. firstMaze + mazes - 1)
      * @param size      cells across and up
      * @param maxSteps  the step limit of a run
      * @param dir       where the mazes are written
@@ -68,7 +69,7 @@ public final class GoldFinderBench {
      * @throws IOException          if a maze cannot be written
      * @throws InterruptedException if interrupted
      */
-    public static List<Result> run(List<Integer> teams, int mazes, int size, long maxSteps, Path dir, Path robotFile,
+    public static List<Result> run(List<Integer> teams, int firstMaze, int mazes, int size, long maxSteps, Path dir, Path robotFile,
                                    double loss, int latency) throws IOException, InterruptedException {
         Files.createDirectories(dir);
         int most = teams.stream().mapToInt(Integer::intValue).max().orElse(1);
@@ -76,15 +77,16 @@ public final class GoldFinderBench {
         for (int t = 0; t < teams.size(); t++) {
             out[t] = new Result(teams.get(t), new long[mazes], new long[mazes]);
         }
-        for (int seed = 1; seed <= mazes; seed++) {
+        for (int m = 0; m < mazes; m++) {
+            int seed = firstMaze + m;
             Path file = dir.resolve("maze-" + size + "-" + seed + ".xml");
             Maze maze = Maze.generate(size, size, seed);
             Files.writeString(file, MazeWorldWriter.write(maze, "maze-" + seed, CELL_SIZE,
                     most, robotFile.toAbsolutePath().toString()), StandardCharsets.UTF_8);
             World world = WorldReader.read(file);
             for (int t = 0; t < teams.size(); t++) {
-                out[t].bounds()[seed - 1] = GoldBound.steps(maze, world.withFirstRobots(teams.get(t)), CELL_SIZE);
-                out[t].steps()[seed - 1] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps, loss, latency);
+                out[t].bounds()[m] = GoldBound.steps(maze, world.withFirstRobots(teams.get(t)), CELL_SIZE);
+                out[t].steps()[m] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps, loss, latency);
             }
         }
         return List.of(out);

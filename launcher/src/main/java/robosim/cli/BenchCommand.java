@@ -135,6 +135,11 @@ final class BenchCommand implements Callable<Integer> {
             description = "for --sweep: the links to measure, in-process and jvm; default ${DEFAULT-VALUE}")
     List<String> sweepLinks;
 
+    @Option(names = "--first-maze", defaultValue = "1", paramLabel = "SEED",
+            description = "for --goldfinder: the first maze's seed; the mazes are seeds SEED to SEED + --mazes - 1"
+                    + " (a maze never tuned on is a fresh one); default ${DEFAULT-VALUE}")
+    int firstMaze;
+
     @Option(names = "--floors", description = "instead: what a step cannot go below here, measured without RoboSim:"
             + " a hand-off between two threads (platform, and virtual where the JDK has them) and a loopback TCP round trip")
     boolean floors;
@@ -312,6 +317,8 @@ final class BenchCommand implements Callable<Integer> {
                 ServerOptions.requireAtLeast("--maze-size", mazeSize, 2);
                 ServerOptions.requireAtLeast("--message-latency", latency, 1);
                 ServerOptions.requireAtLeast("--step-limit", stepLimit, 1);
+                ServerOptions.requireAtLeast("--first-maze", firstMaze, 1);
+                ServerOptions.requireAtLeast("--mazes", mazes, 1);
                 for (int t : teams) {
                     ServerOptions.requireAtLeast("--teams", t, 1);
                 }
@@ -321,7 +328,7 @@ final class BenchCommand implements Callable<Integer> {
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
-            GoldFinderBench.print(o, GoldFinderBench.run(teams, mazes, mazeSize, stepLimit, out.resolve("mazes"), p3dx,
+            GoldFinderBench.print(o, GoldFinderBench.run(teams, firstMaze, mazes, mazeSize, stepLimit, out.resolve("mazes"), p3dx,
                     loss, latency), stepLimit);
             return 0;
         }

@@ -1,21 +1,25 @@
 package robosim.examples.goldfinder;
 
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
 /**
- * Where a Gold robot is in the maze and where it is going: the cell it stands in, the straight run
- * of cells it drives (a side of its cell and how many cells), the frontier it has claimed or
- * follows, and the cell it waits to enter while a teammate holds it. The search changes it; the
- * team messages and the drawings report it.
+ * Where a Gold robot is in the maze and where it is going: the cell it stands in, the side it
+ * came in by, the cells ahead it has committed to drive through (it holds them: no teammate may
+ * enter them), the frontier it has claimed or follows, and the cell it waits to enter while a
+ * teammate holds it. The search changes it; the track, the team messages and the drawings read it.
  *
- * <p>The robot counts its cell itself, from the cells it drove: it starts in the cell under its
- * starting pose and moves on by whole cells.
+ * <p>The robot counts its cell itself, from its odometry: it starts in the cell under its starting
+ * pose, and the cell it is in is the one under its pose.
  */
 final class Course {
     private int x;
     private int y;
-    /** The side of the cell the run leaves by, or -1 before the first run. */
-    private int dir = -1;
-    /** How many cells the run crosses. */
-    private int cells = 1;
+    /** The side of its cell the robot came in by, or -1 while it stands (it turns in place before it leaves). */
+    private int entry = -1;
+    /** The cells ahead it has committed to, in the order it drives through them. */
+    private final List<Long> ahead = new ArrayList<>();
     private TeamPlan.Plan plan = TeamPlan.Plan.NONE;
     /** The key of the cell it waits to enter, or -1. */
     private long want = -1;
@@ -46,46 +50,68 @@ final class Course {
         return MazeKnowledge.key(x, y);
     }
 
-    /** @return the side the run leaves by, or -1 before the first run */
-    int dir() {
-        return dir;
+    /** @return the side of its cell it came in by, or -1 while it stands */
+    int entry() {
+        return entry;
     }
 
-    /** @return how many cells the run crosses */
-    int cells() {
-        return cells;
+    /** @return the cells ahead it has committed to, nearest first (read only) */
+    List<Long> ahead() {
+        return Collections.unmodifiableList(ahead);
     }
 
-    /** @return the column of the cell {@code k} cells along the run */
-    int aheadX(int k) {
-        return x + k * Directions.dx(dir);
+    /** @return the last cell it has committed to: where it stops unless it commits more */
+    long last() {
+        return ahead.isEmpty() ? here() : ahead.get(ahead.size() - 1);
     }
 
-    /** @return the row of the cell {@code k} cells along the run */
-    int aheadY(int k) {
-        return y + k * Directions.dy(dir);
+    /** @return the side by which it comes into its last committed cell, or -1 if that is the cell it stands in */
+    int lastEntry() {
+        if (ahead.isEmpty()) {
+            return entry;
+        }
+        long before = ahead.size() == 1 ? here() : ahead.get(ahead.size() - 2);
+        return Track.sideTowards(last(), before);
+    }
+
+    /** Commits to a cell next to the last committed one: the robot will drive into it. */
+    void commit(long cell) {
+        Track.sideTowards(last(), cell);
+        ahead.add(cell);
+    }
+
+    /** Gives up the committed cells from the {@code k}-th ahead (0: the nearest) on. */
+    void cutFrom(int k) {
+        ahead.subList(k, ahead.size()).clear();
     }
 
     /**
-     * Sets out on a new run.
+     * The robot is now in cell (cx, cy), by its pose. Coming into the next committed cell moves the
+     * course on; coming into any other cell (pushed, or backing off) drops the committed cells.
      *
-     * @param side  the side of this cell it leaves by
-     * @param count how many cells it crosses
+     * @return whether its cell changed
      */
-    void run(int side, int count) {
-        dir = side;
-        cells = count;
+    boolean moveTo(int cx, int cy) {
+        if (cx == x && cy == y) {
+            return false;
+        }
+        long cell = MazeKnowledge.key(cx, cy);
+        boolean next = !ahead.isEmpty() && ahead.get(0) == cell;
+        entry = next ? Track.sideTowards(cell, here()) : -1;
+        if (next) {
+            ahead.remove(0);
+        } else {
+            ahead.clear();
+        }
+        x = cx;
+        y = cy;
+        return true;
     }
 
-    /** Cuts the run short to at most {@code clear} cells (0: it cannot go at all). */
-    void shortenTo(int clear) {
-        cells = Math.min(cells, clear);
-    }
-
-    /** Moves the robot's cell {@code k} cells along the run: it has driven them. */
-    void advance(int k) {
-        x += k * Directions.dx(dir);
-        y += k * Directions.dy(dir);
+    /** The robot stands (it has stopped): it turns in place before it leaves, and has committed to nothing. */
+    void stand() {
+        entry = -1;
+        ahead.clear();
     }
 
     /** @return the frontier claimed or followed */

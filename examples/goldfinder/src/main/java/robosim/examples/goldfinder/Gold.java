@@ -1,7 +1,5 @@
 package robosim.examples.goldfinder;
 
-import static robosim.examples.goldfinder.MazeKnowledge.NONE;
-
 import java.util.SplittableRandom;
 import robosim.aria.ArHeatSensor;
 import robosim.aria.ArRobot;
@@ -12,23 +10,28 @@ import robosim.aria.ArUtil;
  * A Pioneer that searches a grid maze for gold by its sensors alone, with its team. Start reading
  * here: this class is the robot's loop, and each part of what it does has a class of its own.
  *
- * <p>It explores cell by cell. Standing at a cell's centre it senses which sides are open, with its
- * laser and rear sonars ({@link Survey}, {@link WallSensing}), and keeps what it and its teammates
- * sensed ({@link MazeKnowledge}, the map it believes). It claims the nearest frontier, a cell
- * nobody has sensed, that no nearer teammate has claimed ({@link TeamPlan}), and drives there a run
- * of cells at a time ({@link Wayfinder} chooses the run, {@link Driving} drives it, {@link
- * SearchPhases} takes it through deciding, turning and driving). Every few steps it tells its team
- * ({@link TeamTalk}, by {@link MazeMessage}) where it is, where it drives, what it claimed and
- * which walls it sensed, so the team divides the maze: each branch taken by one robot is removed
- * from everyone's search. Claims that are not repeated lapse, so lost messages and a teammate that
- * fails leave no branch unexplored. Viewers can show what it believes ({@link TeamDrawings}).
+ * <p>It senses as it drives: every step its laser reads the sides of the cells around it ({@link
+ * Survey}, {@link WallSensing}), and it keeps what it and its teammates sensed ({@link
+ * MazeKnowledge}, the map it believes). It claims the nearest frontier, a cell nobody has sensed,
+ * that no nearer teammate has claimed ({@link TeamPlan}), and drives there without stopping from
+ * cell to cell, taking each bend as an arc ({@link Track}, {@link Driving}); it commits to the
+ * next cell of its way only when it must, so what it has just sensed and heard still chooses the
+ * way ({@link Wayfinder}, {@link SearchPhases}). It tells its team ({@link TeamTalk}, by {@link
+ * MazeMessage}) where it is, the cells ahead it has committed to, what it claimed and which walls
+ * it sensed, whenever that changes and every few steps, so the team divides the maze: each branch
+ * taken by one robot is removed from everyone's search. Claims that are not repeated lapse, so
+ * lost messages and a teammate that fails leave no branch unexplored. Viewers can show what it
+ * believes ({@link TeamDrawings}).
  *
- * <p>A robot never drives into a cell a teammate stands in or drives into. It steps aside for a
- * teammate that waits for its cell when it has nothing better to do, or when both wait for each
- * other and it has the higher number; it steps off the teammate's way to its target.
+ * <p>A robot never drives into a cell a teammate has committed to, nor into one a teammate stands
+ * in unless that teammate is leaving it the other way (then it follows, and its laser keeps the
+ * distance). Where it must wait it stops at a cell's centre; it steps aside for a teammate that
+ * waits for its cell when it has nothing better to do, or when both wait for each other and it
+ * has the higher number; it steps off the teammate's way to its target.
  *
- * <p>A heat sensor with a 360° view guides it ({@link HeatGuide}): when the gold's heat is sensed
- * through an open side, that side is taken first. The robot has found the gold when its heat
+ * <p>A heat sensor with a 360° view guides it at the end ({@link HeatGuide}): walls block heat, so
+ * once it feels the gold the gold is in sight, and it heads for the gold's cell (or, if no way
+ * there is known yet, for the frontier nearest it). The robot has found the gold when its heat
  * sensor places the gold within {@value #FOUND_DISTANCE} mm; it reports the find to the
  * Environment and broadcasts it, and every teammate that hears it stops.
  */
@@ -109,9 +112,7 @@ public class Gold extends ArRobot {
             return;
         }
         phases.step();
-        if (team.heartbeatDue()) {
-            team.tellWhereIAm(phases.underWay());
-        }
+        team.tellIfChanged();
         drawings.update();
     }
 
@@ -121,7 +122,7 @@ public class Gold extends ArRobot {
         long foundStep = getStep();
         stop();
         reportFound("gold");
-        team.tell(NONE, NONE, true);
+        team.tell(true);
         say("found the gold at step " + foundStep);
         phases.end();
     }
@@ -146,12 +147,12 @@ public class Gold extends ArRobot {
     /** Makes the robot's parts, which share its map and its course, starting in the cell it stands in. */
     private void makeParts(double cellSize, SplittableRandom random, ArHeatSensor heatSensor) {
         Course course = new Course((int) Math.floor(getX() / cellSize), (int) Math.floor(getY() / cellSize));
-        Survey survey = new Survey(this, laser, cellSize, map, course);
+        Survey survey = new Survey(this, laser, cellSize, heatSensor.getMaxRange(), map, course);
         team = new TeamTalk(this, map, survey.ownCells(), course);
-        heat = new HeatGuide(this, heatSensor, cellSize, map, course);
-        Wayfinder way = new Wayfinder(this, rank, map, course, heat, team, random);
-        Driving driving = new Driving(this, laser, cellSize, course);
-        phases = new SearchPhases(survey, way, driving, team, course, random);
+        heat = new HeatGuide(this, heatSensor, cellSize);
+        Wayfinder way = new Wayfinder(this, rank, map, course, heat, random);
+        Driving driving = new Driving(this, laser);
+        phases = new SearchPhases(this, cellSize, survey, way, driving, map, course, random);
         drawings = new TeamDrawings(this, rank, cellSize, map, survey.ownCells(), course);
     }
 

@@ -5,30 +5,25 @@ import robosim.aria.ArRobot;
 
 /**
  * What a Gold robot's heat sensor (a 360° view, three cells' reach) tells it of the gold, which
- * glows with heat: whether the gold is near enough to count as found, the cell it places the gold
- * in, and the side of the robot's cell that faces the heat. Heat passes through walls, so the
- * sensor says where the gold is, not how to get there.
+ * glows with heat: whether the gold is near enough to count as found, and the cell it places the
+ * gold in. Walls block heat, so the sensor feels the gold only in its line of sight: by then the
+ * robot is a few cells from it (on the benchmark's mazes, some 20 to 50 steps before the find),
+ * and telling the team where the heat comes from would gain them nothing.
  */
 final class HeatGuide {
     private final ArRobot robot;
     private final ArHeatSensor heat;
     private final double cellSize;
-    private final MazeKnowledge map;
-    private final Course course;
 
     /**
      * @param robot    the robot
      * @param heat     its heat sensor, attached
      * @param cellSize the maze's cell size, mm
-     * @param map      its map
-     * @param course   where it stands
      */
-    HeatGuide(ArRobot robot, ArHeatSensor heat, double cellSize, MazeKnowledge map, Course course) {
+    HeatGuide(ArRobot robot, ArHeatSensor heat, double cellSize) {
         this.robot = robot;
         this.heat = heat;
         this.cellSize = cellSize;
-        this.map = map;
-        this.course = course;
     }
 
     /** @return whether the sensor places the gold within {@code distance} mm */
@@ -37,8 +32,7 @@ final class HeatGuide {
     }
 
     /**
-     * The cell where the heat sensor places the gold, or -1 while it senses no heat. (A robot can
-     * know a cell from afar, read with its laser: the heat brings it there.)
+     * The cell where the heat sensor places the gold, or -1 while it senses no heat.
      *
      * @return the cell's key, or -1
      */
@@ -50,22 +44,5 @@ final class HeatGuide {
         double gx = robot.getX() + heat.getDistance() * Math.cos(bearing);
         double gy = robot.getY() + heat.getDistance() * Math.sin(bearing);
         return MazeKnowledge.key((int) Math.floor(gx / cellSize), (int) Math.floor(gy / cellSize));
-    }
-
-    /**
-     * The side towards the gold's heat, if the heat is sensed through an open side onto a cell
-     * nobody has sensed; else -1. (Heat passes through walls: a known cell towards it may lead
-     * nowhere near the gold.)
-     *
-     * @return the side, 0 to 3, or -1
-     */
-    int sideTowardsHeat() {
-        if (!heat.senses()) {
-            return -1;
-        }
-        int d = Math.floorMod((int) Math.round((robot.getTh() + heat.getBearing()) / 90), 4);
-        int x = course.x();
-        int y = course.y();
-        return map.open(x, y, d) && !map.isSensed(x + Directions.dx(d), y + Directions.dy(d)) ? d : -1;
     }
 }

@@ -26,53 +26,46 @@ final class MazeKnowledge {
      *
      * @param x      its cell's column
      * @param y      its cell's row
-     * @param nextX  the column of the cell it is driving into, or {@link #NONE}
-     * @param nextY  the row of that cell
+     * @param route  the keys of the cells ahead it has committed to drive through, nearest first
      * @param claimX the column of the frontier it has claimed, or {@link #NONE}
      * @param claimY the row of that frontier
      * @param heard  the step at which this robot heard the report
      * @param want   the key of the cell it waits to enter, or -1
      * @param target the key of the frontier it claimed or follows, or -1
      */
-    record Mate(int x, int y, int nextX, int nextY, int claimX, int claimY, long heard, long want, long target) {
+    record Mate(int x, int y, List<Long> route, int claimX, int claimY, long heard, long want, long target) {
+        /** Keeps a copy of the route. */
+        Mate {
+            route = List.copyOf(route);
+        }
+
         /** A teammate that waits for no cell and heads for its claim, if any. */
-        Mate(int x, int y, int nextX, int nextY, int claimX, int claimY, long heard) {
-            this(x, y, nextX, nextY, claimX, claimY, heard, -1, claimX == NONE ? -1 : key(claimX, claimY));
+        Mate(int x, int y, List<Long> route, int claimX, int claimY, long heard) {
+            this(x, y, route, claimX, claimY, heard, -1, claimX == NONE ? -1 : key(claimX, claimY));
         }
 
         /** A teammate that stands in a cell and has claimed nothing. */
         Mate(int x, int y, long heard) {
-            this(x, y, NONE, NONE, NONE, NONE, heard);
+            this(x, y, List.of(), NONE, NONE, heard);
         }
 
         boolean moving() {
-            return nextX != NONE;
+            return !route.isEmpty();
         }
 
         boolean claims() {
             return claimX != NONE;
         }
 
-        /**
-         * The cells it holds: the one it stands in and, while it drives, every cell on its way to the
-         * one it drives to (a robot drives straight).
-         */
+        /** The cells it holds: the one it stands in and every cell ahead it has committed to. */
         List<Long> cells() {
             List<Long> out = new ArrayList<>();
             out.add(key(x, y));
-            if (moving()) {
-                int dx = Integer.signum(nextX - x);
-                int dy = Integer.signum(nextY - y);
-                int steps = dx != 0 && dy != 0 ? 1 : Math.abs(nextX - x) + Math.abs(nextY - y);
-                for (int k = 1; k < steps; k++) {
-                    out.add(key(x + k * dx, y + k * dy));
-                }
-                out.add(key(nextX, nextY));
-            }
+            out.addAll(route);
             return out;
         }
 
-        /** Whether it stands in, or drives into or through, the cell. */
+        /** Whether it stands in, or has committed to drive through, the cell. */
         boolean holds(int cx, int cy) {
             return cells().contains(key(cx, cy));
         }
@@ -262,6 +255,23 @@ final class MazeKnowledge {
             }
         }
         return null;
+    }
+
+    /**
+     * Whether a teammate holds a cell against a robot coming into it from cell {@code from}: it
+     * has committed to the cell, or it stands there, unless it is leaving it by another side than
+     * towards {@code from} (then the robot may follow it in, its laser keeping the distance).
+     */
+    boolean heldAgainst(long cell, long from) {
+        for (Mate m : mates.values()) {
+            if (m.route().contains(cell)) {
+                return true;
+            }
+            if (key(m.x(), m.y()) == cell && !(m.moving() && m.route().get(0) != from)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** @return the cells teammates stand in or drive into */

@@ -86,7 +86,7 @@ final class TeamPlan {
     private static boolean entered(MazeKnowledge map, long f) {
         for (String name : map.mates()) {
             MazeKnowledge.Mate m = map.mate(name);
-            if (m.moving() && MazeKnowledge.key(m.nextX(), m.nextY()) == f) {
+            if (m.route().contains(f)) {
                 return true;
             }
         }

@@ -11,10 +11,10 @@ import robosim.hw.RobotMessage;
  * What a Gold robot tells its team and what it hears from it, as {@link MazeMessage}s broadcast
  * through the Environment.
  *
- * <p>Told: where it is and where it drives, the frontier it claimed or follows, the cell it waits
- * for, whether it found the gold, and some of the cells it sensed: the newest ones, then old ones
- * in turn, so a lost message costs time, never knowledge. It tells at every decision and, while
- * nothing changes, every {@value #HEARTBEAT} steps.
+ * <p>Told: where it is and the cells ahead it holds, the frontier it claimed or follows, the cell it
+ * waits for, whether it found the gold, and some of the cells it sensed: the newest ones, then old
+ * ones in turn, so a lost message costs time, never knowledge. It tells whenever what it says of
+ * itself changes and, while nothing changes, every {@value #HEARTBEAT} steps.
  *
  * <p>Heard: every teammate's cells join the robot's map, and what each says of itself is kept; a
  * teammate not heard for a while is taken to stand where it last was, its move and claim lapsed.
@@ -34,6 +34,10 @@ final class TeamTalk {
     /** Which old cell the next report repeats, counted round the old ones. */
     private int repeatFrom;
     private long lastTold = Long.MIN_VALUE / 2;
+    /** The step at which it tells its last change once more, so one lost message does not lose it. */
+    private long repeatAt = -1;
+    /** What its last report said of the robot itself. */
+    private List<Long> lastSaid = List.of();
 
     /**
      * @param robot    the robot that talks
@@ -84,7 +88,11 @@ final class TeamTalk {
             }
         }
         if (!mm.robot().equals(robot.getName())) {
-            map.mate(mm.robot(), new MazeKnowledge.Mate(mm.x(), mm.y(), mm.nextX(), mm.nextY(),
+            List<Long> route = new ArrayList<>();
+            for (int i = 0; i < mm.route().length; i += 2) {
+                route.add(MazeKnowledge.key(mm.route()[i], mm.route()[i + 1]));
+            }
+            map.mate(mm.robot(), new MazeKnowledge.Mate(mm.x(), mm.y(), route,
                     mm.claim() ? mm.targetX() : NONE, mm.claim() ? mm.targetY() : NONE, robot.getStep(),
                     mm.wantX() == NONE ? -1 : MazeKnowledge.key(mm.wantX(), mm.wantY()),
                     mm.targetX() == NONE ? -1 : MazeKnowledge.key(mm.targetX(), mm.targetY())));
@@ -106,41 +114,54 @@ final class TeamTalk {
         }
     }
 
-    /** @return whether {@value #HEARTBEAT} steps have passed since the robot last told its team anything */
-    boolean heartbeatDue() {
-        return robot.getStep() - lastTold >= HEARTBEAT;
-    }
-
     /**
-     * Repeats where the robot is and, while it is under way, the cell it drives to.
-     *
-     * @param underWay whether it is about to drive or driving (not deciding or backing off)
+     * Tells the team where the robot is, what it holds and what it plans, when any of it has changed
+     * since its last report (and once more at the next step, so that a lost message does not keep
+     * a change from a teammate until the next heartbeat), or when it has said nothing for {@value
+     * #HEARTBEAT} steps.
      */
-    void tellWhereIAm(boolean underWay) {
-        if (underWay && course.dir() >= 0) {
-            tell(course.aheadX(course.cells()), course.aheadY(course.cells()), false);
-        } else {
-            tell(NONE, NONE, false);
+    void tellIfChanged() {
+        boolean changed = !said().equals(lastSaid);
+        if (changed || robot.getStep() - lastTold >= HEARTBEAT || robot.getStep() == repeatAt) {
+            tell(false);
+            if (changed) {
+                repeatAt = robot.getStep() + 1;
+            }
         }
     }
 
+    /** What a report would say of the robot itself, to see whether it changed. */
+    private List<Long> said() {
+        List<Long> out = new ArrayList<>(course.ahead());
+        out.add(course.here());
+        out.add(course.plan().target());
+        out.add(course.plan().claim() ? 1L : 0L);
+        out.add(course.want());
+        return out;
+    }
+
     /**
-     * Broadcasts one report: where the robot is, the cell it drives into, its plan and wait from
+     * Broadcasts one report: where the robot is, the cells ahead it holds, its plan and wait from
      * its {@link Course}, and up to {@value #CELLS_PER_REPORT} of its own cells.
      *
-     * @param nextX the column of the cell it drives into, or {@link MazeKnowledge#NONE}
-     * @param nextY the row of that cell
-     * @param gold  whether it has found the gold
+     * @param gold whether it has found the gold
      */
-    void tell(int nextX, int nextY, boolean gold) {
+    void tell(boolean gold) {
         TeamPlan.Plan plan = course.plan();
         long want = course.want();
         long t = plan.target();
-        robot.broadcast(new MazeMessage(robot.getName(), course.x(), course.y(), nextX, nextY,
+        List<Long> ahead = course.ahead();
+        int[] route = new int[2 * Math.min(ahead.size(), MazeMessage.MOST_AHEAD)];
+        for (int i = 0; i < route.length / 2; i++) {
+            route[2 * i] = MazeKnowledge.keyX(ahead.get(i));
+            route[2 * i + 1] = MazeKnowledge.keyY(ahead.get(i));
+        }
+        robot.broadcast(new MazeMessage(robot.getName(), course.x(), course.y(), route,
                 t < 0 ? NONE : plan.x(), t < 0 ? NONE : plan.y(), plan.claim(),
                 want < 0 ? NONE : MazeKnowledge.keyX(want), want < 0 ? NONE : MazeKnowledge.keyY(want),
                 cellsToRepeat(), gold));
         lastTold = robot.getStep();
+        lastSaid = said();
     }
 
     /**

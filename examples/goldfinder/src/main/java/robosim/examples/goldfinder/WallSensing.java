@@ -1,16 +1,17 @@
 package robosim.examples.goldfinder;
 
-import java.util.Arrays;
 import robosim.aria.ArMath;
 import robosim.aria.ArRobot;
 import robosim.aria.ArSick;
 
 /**
- * Tells which sides of the cell a robot stands in are open, from its range sensors alone: the
- * laser for the sides ahead and to the left and right, the rear sonars for the side behind. A side
- * is open when the nearest echo that way lies farther than {@value #OPEN_FRACTION} of a cell from
- * the robot's centre: a wall on the cell's edge echoes from half a cell, anything beyond an open
- * side (a far wall, a teammate standing in the next cell) from farther than that.
+ * Tells which sides of the maze's cells are open, from a robot's range sensors alone. Standing at
+ * its starting cell's centre ({@link #openSides}) it reads the sides ahead and to the left and
+ * right with its laser and the side behind with its rear sonars: a side is open when the nearest
+ * echo that way lies farther than {@value #OPEN_FRACTION} of a cell from the robot's centre (a
+ * wall on the cell's edge echoes from half a cell, anything beyond an open side, a far wall or a
+ * teammate standing in the next cell, from farther than that). Anywhere else, driving or standing,
+ * it reads any side in its laser's view ({@link #side}).
  */
 final class WallSensing {
     static final double OPEN_FRACTION = 0.6;
@@ -45,66 +46,76 @@ final class WallSensing {
         return open;
     }
 
-    /**
-     * The farthest cell ahead that {@link #cellsAhead} reads: two cells, so that every cell a Gold
-     * robot reads from afar lies within its heat sensor's reach (three cells), and a cell holding
-     * the gold is never known without the gold being sensed.
-     */
-    static final int MOST_AHEAD = 2;
+    /** What the laser says of a side of a cell: it saw no way to tell. */
+    static final int UNSEEN = -1;
+    /** What the laser says of a side of a cell: a wall. */
+    static final int CLOSED = 0;
+    /** What the laser says of a side of a cell: open, a beam went through. */
+    static final int OPEN = 1;
+    /** Where along a side its beams are aimed, as fractions of its length: clear of the corners' posts. */
+    private static final double[] AIMS = {0.3, 0.5, 0.7};
+    /** The shallowest a beam may meet a side's line and still judge it, as the sine of the angle. */
+    private static final double SHALLOWEST = 0.3;
+    /** The farthest side the laser judges, mm. */
+    private static final double FARTHEST = 5000;
 
     /**
-     * Reads the cells straight ahead of a robot standing at a cell's centre and facing along a grid
-     * axis, from its laser alone: the beam straight ahead tells how far the corridor runs, and for
-     * each cell the beams aimed at the middles of its side walls tell whether those sides are open
-     * (an open side lets the beam on into the next cell, at least a quarter of a cell farther). It
-     * stops at the first cell whose far side is closed, after {@value #MOST_AHEAD} cells, or where
-     * something nearer than a wall (a teammate) hides what lies beyond.
+     * Reads one side of a cell with the laser, from wherever the robot is: three beams aimed at marks
+     * along the side, clear of its ends. A beam that goes on past the side's line (and the
+     * thickness of a wall on it) proves the side open; the side is closed when at least two of the
+     * marks are in view and every beam aimed at one ends on a wall's face on the line. Anything else
+     * (the side out of view, met too shallow, too far, or something nearer in the way, such as a
+     * teammate) leaves it unseen. A teammate standing in a doorway cannot close it: the marks lie
+     * 450 mm apart, farther than a Pioneer is wide or long, so it covers at most one.
      *
-     * @param robot    a robot standing still at a cell centre, facing along a grid axis
-     * @param laser    its laser, switched on
+     * @param robot    the robot, anywhere
+     * @param scan     its laser's scan, 180° from its right, taken at its pose
      * @param cellSize mm
-     * @return the open sides of the cells ahead, nearest first (as {@link #openSides}); possibly none
+     * @param x        the cell's column
+     * @param y        its row
+     * @param side     0 east, 1 north, 2 west, 3 south
+     * @return {@link #OPEN}, {@link #CLOSED} or {@link #UNSEEN}
      */
-    static int[] cellsAhead(ArRobot robot, ArSick laser, double cellSize) {
-        int[] scan = laser.getRawScan();
+    static int side(ArRobot robot, int[] scan, double cellSize, int x, int y, int side) {
         if (scan.length < 3) {
-            return new int[0];
+            return UNSEEN;
         }
         double increment = 180.0 / (scan.length - 1);
-        double laserX = robot.getParameters().laserX();
-        int d = Math.floorMod((int) Math.round(robot.getTh() / 90), 4);
-        double off = ArMath.fixAngle(robot.getTh() - d * 90);
-        double ahead = reach(scan, increment, laserX, -off);
-        double side = cellSize / 2 - WALL_HALF;
-        int[] out = new int[MOST_AHEAD];
-        int cells = 0;
-        for (int j = 1; j <= MOST_AHEAD; j++) {
-            if (ahead < (j + 0.5) * cellSize - cellSize / 4) {
-                break; // something stands in this cell or before it
+        double th = robot.getTh();
+        double lx = robot.getX() + robot.getParameters().laserX() * Math.cos(Math.toRadians(th));
+        double ly = robot.getY() + robot.getParameters().laserX() * Math.sin(Math.toRadians(th));
+        boolean vertical = side % 2 == 0;
+        double line = vertical ? (x + (side == 0 ? 1 : 0)) * cellSize : (y + (side == 1 ? 1 : 0)) * cellSize;
+        double from = (vertical ? y : x) * cellSize;
+        int walls = 0;
+        int seen = 0;
+        for (double aim : AIMS) {
+            double ax = vertical ? line : from + aim * cellSize;
+            double ay = vertical ? from + aim * cellSize : line;
+            double bearing = ArMath.fixAngle(Math.toDegrees(Math.atan2(ay - ly, ax - lx)) - th);
+            if (Math.abs(bearing) > 90) {
+                continue;
             }
-            int open = 1 << ((d + 2) % 4);
-            if (ahead > (j + 0.5) * cellSize + cellSize / 4) {
-                open |= 1 << d;
+            int i = (int) Math.round((bearing + 90) / increment);
+            double beam = Math.toRadians(th + i * increment - 90);
+            double across = vertical ? Math.cos(beam) : Math.sin(beam);
+            double along = vertical ? Math.sin(beam) : Math.cos(beam);
+            double t = ((vertical ? line - lx : line - ly)) / across;
+            double where = ((vertical ? ly : lx) + t * along - from) / cellSize;
+            if (Math.abs(across) < SHALLOWEST || t < 100 || t > FARTHEST || where < 0.15 || where > 0.85) {
+                continue;
             }
-            double wall = Math.hypot(j * cellSize, side);
-            double angle = Math.toDegrees(Math.atan2(side, j * cellSize));
-            double left = reach(scan, increment, laserX, angle - off);
-            double right = reach(scan, increment, laserX, -angle - off);
-            if (left < wall - cellSize / 8 || right < wall - cellSize / 8) {
-                break; // a side wall is hidden: this cell cannot be read from here
+            // a wall on the line is 100 mm thick: centred on it inside the maze, just inside it on the boundary
+            double thick = 2 * WALL_HALF / Math.abs(across);
+            if (scan[i] > t + thick / 2 + 100) {
+                return OPEN;
             }
-            if (left > wall + cellSize / 4) {
-                open |= 1 << ((d + 1) % 4);
-            }
-            if (right > wall + cellSize / 4) {
-                open |= 1 << ((d + 3) % 4);
-            }
-            out[cells++] = open;
-            if ((open & (1 << d)) == 0) {
-                break;
+            seen++;
+            if (scan[i] >= t - thick - 40 && scan[i] <= t - thick / 2 + 40) {
+                walls++;
             }
         }
-        return Arrays.copyOf(out, cells);
+        return seen >= 2 && walls == seen ? CLOSED : UNSEEN;
     }
 
     /** Half a maze wall's thickness, mm: walls are 100 mm thick, centred on the grid lines. */

@@ -1,7 +1,5 @@
 package robosim.examples.goldfinder;
 
-import static robosim.examples.goldfinder.MazeKnowledge.NONE;
-
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -10,25 +8,23 @@ import java.util.SplittableRandom;
 import robosim.aria.ArRobot;
 
 /**
- * The rules by which a Gold robot, standing at a cell's centre, chooses its way: the side to leave
- * by (towards the gold's heat, else along the way to the frontier {@link TeamPlan} gives it), how
- * many cells to drive straight, and how it keeps out of its teammates' way: it waits for a cell a
- * teammate holds (and after a while tries another way out), and steps aside for a teammate that
- * waits for its cell. {@link SearchPhases} asks; the answers are sides of the cell, 0 to 3, or -1
- * for none.
+ * The rules by which a Gold robot chooses its way, a cell at a time: the side to leave its last
+ * committed cell by (along the way to the gold's cell once the heat places it, else to the
+ * frontier {@link TeamPlan} gives it), and how it keeps out of its teammates' way: it does not
+ * come into a cell a teammate holds against it, waits for one (and after a while tries another way
+ * out), steps aside for a teammate that waits for its cell, and gives up committed cells a
+ * teammate has taken first. {@link SearchPhases} asks; the answers are sides of a cell, 0 to 3, or
+ * -1 for none.
  */
 final class Wayfinder {
     /** Steps a robot waits for a cell before it tries another way out. */
     private static final int PATIENCE = 60;
-    /** The most cells a robot drives in one move. */
-    static final int LONGEST_RUN = 8;
 
     private final ArRobot robot;
     private final int rank;
     private final MazeKnowledge map;
     private final Course course;
     private final HeatGuide heat;
-    private final TeamTalk team;
     private final SplittableRandom random;
 
     /**
@@ -37,82 +33,106 @@ final class Wayfinder {
      * @param map    what it knows
      * @param course where it is and goes; the plan and the wait are set here
      * @param heat   its heat sensor's hints
-     * @param team   its team messages, told when it starts waiting
      * @param random the robot's seeded tie-breaks
      */
-    Wayfinder(ArRobot robot, int rank, MazeKnowledge map, Course course, HeatGuide heat, TeamTalk team,
-              SplittableRandom random) {
+    Wayfinder(ArRobot robot, int rank, MazeKnowledge map, Course course, HeatGuide heat, SplittableRandom random) {
         this.robot = robot;
         this.rank = rank;
         this.map = map;
         this.course = course;
         this.heat = heat;
-        this.team = team;
         this.random = random;
     }
 
-    /** @return the four sides, starting at a seeded one, so teammates fan out differently */
-    int[] order() {
+    /** The robot's direction order, for ways of equal length: drawn again in each cell it comes into. */
+    private int[] order = {0, 1, 2, 3};
+
+    /** Draws a new direction order, starting at a seeded side, so teammates fan out differently. */
+    void newOrder() {
         int first = random.nextInt(4);
-        return new int[] {first, (first + 1) % 4, (first + 2) % 4, (first + 3) % 4};
+        order = new int[] {first, (first + 1) % 4, (first + 2) % 4, (first + 3) % 4};
+    }
+
+    /** @return the robot's direction order, for ways of equal length */
+    int[] order() {
+        return order.clone();
     }
 
     /**
-     * Plans (the frontier to claim or follow, or the gold's cell when the heat places it in a cell
-     * known to be reachable) and picks the side to leave by: towards the heat, else the first step
-     * towards the target. A robot that follows a teammate's claim does not enter the frontier itself.
+     * Plans from the last cell the robot has committed to (the frontier to claim or follow, or the
+     * gold's cell when the heat places it in a cell known to be reachable) and picks the side of
+     * that cell to leave by: the first step towards the target. A robot that follows a teammate's
+     * claim does not enter the frontier itself. While that cell is a frontier nobody has sensed yet,
+     * no side is known to lead anywhere: there is none, and the plan stays as it was.
      *
-     * @param order the side order, for ways of equal length
      * @return the side, or -1 for none
      */
-    int chooseSide(int[] order) {
-        int x = course.x();
-        int y = course.y();
+    int chooseSide() {
+        long from = course.last();
+        int x = MazeKnowledge.keyX(from);
+        int y = MazeKnowledge.keyY(from);
+        if (!map.isSensed(x, y)) {
+            return -1; // it drives into a frontier: no way on is known until it is sensed; the plan stands
+        }
         TeamPlan.Plan plan = TeamPlan.plan(map, rank, x, y, order, robot.getStep());
         long goldCell = heat.goldCell();
-        if (goldCell >= 0 && goldCell != course.here() && map.reach(x, y, order, Set.of()).containsKey(goldCell)) {
-            plan = new TeamPlan.Plan(goldCell, true); // the heat places the gold in a cell known to be reachable
+        if (goldCell >= 0 && goldCell != from) {
+            plan = towardsGold(x, y, goldCell, plan);
         }
         course.plan(plan);
-        int d = goldCell >= 0 && plan.target() == goldCell ? -1 : heat.sideTowardsHeat();
-        if (d < 0 && plan.target() >= 0) {
-            d = TeamPlan.firstStep(map, x, y, plan.target(), order);
-            if (d >= 0 && !plan.claim()
-                    && MazeKnowledge.key(x + Directions.dx(d), y + Directions.dy(d)) == plan.target()) {
-                d = -1; // following: the frontier itself is the claimant's to enter
-            }
+        if (plan.target() < 0) {
+            return -1;
+        }
+        int d = TeamPlan.firstStep(map, x, y, plan.target(), order);
+        if (d >= 0 && !plan.claim()
+                && MazeKnowledge.key(x + Directions.dx(d), y + Directions.dy(d)) == plan.target()) {
+            return -1; // following: the frontier itself is the claimant's to enter
         }
         return d;
     }
 
     /**
-     * How many cells to drive straight across {@code side} in one move, without stopping: on along
-     * the way to the target while it keeps that direction through cells already sensed that no
-     * teammate holds, up to {@value #LONGEST_RUN}; a cell nobody has sensed ends the run (it must be
-     * sensed from its centre).
+     * The heat places the gold in a cell: head there if a way is known, else for the frontier
+     * nearest it (by columns and rows, then by way), else keep the plan.
      */
-    int runLength(int side, int[] order) {
-        long target = course.plan().target();
-        if (target < 0 || heat.sideTowardsHeat() >= 0) {
-            return 1;
+    private TeamPlan.Plan towardsGold(int x, int y, long goldCell, TeamPlan.Plan plan) {
+        Map<Long, MazeKnowledge.Reach> reach = map.reach(x, y, order, Set.of());
+        if (reach.containsKey(goldCell)) {
+            return new TeamPlan.Plan(goldCell, true);
         }
-        int x = course.x();
-        int y = course.y();
-        List<Long> path = map.path(x, y, MazeKnowledge.keyX(target), MazeKnowledge.keyY(target), order, map.held());
-        int cells = 1;
-        while (cells < path.size() && cells < LONGEST_RUN) {
-            long here = path.get(cells - 1);
-            long next = path.get(cells);
-            if (!map.isSensed(MazeKnowledge.keyX(here), MazeKnowledge.keyY(here))
-                    || MazeKnowledge.keyX(next) - MazeKnowledge.keyX(here) != Directions.dx(side)
-                    || MazeKnowledge.keyY(next) - MazeKnowledge.keyY(here) != Directions.dy(side)
-                    || (!course.plan().claim() && next == target)) {
-                break;
+        long best = -1;
+        int bestApart = Integer.MAX_VALUE;
+        int bestCells = Integer.MAX_VALUE;
+        for (Map.Entry<Long, MazeKnowledge.Reach> e : reach.entrySet()) {
+            long f = e.getKey();
+            if (map.isSensed(MazeKnowledge.keyX(f), MazeKnowledge.keyY(f))) {
+                continue;
             }
-            cells++;
+            int apart = Math.abs(MazeKnowledge.keyX(f) - MazeKnowledge.keyX(goldCell))
+                    + Math.abs(MazeKnowledge.keyY(f) - MazeKnowledge.keyY(goldCell));
+            int cells = e.getValue().cells();
+            if (apart < bestApart || (apart == bestApart && cells < bestCells)) {
+                best = f;
+                bestApart = apart;
+                bestCells = cells;
+            }
         }
-        return path.isEmpty() || path.get(0) != MazeKnowledge.key(x + Directions.dx(side), y + Directions.dy(side))
-                ? 1 : cells;
+        return best < 0 ? plan : new TeamPlan.Plan(best, true);
+    }
+
+    /**
+     * @param meant the cells ahead the robot meant to drive through
+     * @return the first teammate, by name, that stands in the robot's cell or one of those, or null
+     */
+    String blocker(List<Long> meant) {
+        for (String name : map.mates()) {
+            MazeKnowledge.Mate m = map.mate(name);
+            long at = MazeKnowledge.key(m.x(), m.y());
+            if (at == course.here() || meant.contains(at)) {
+                return name;
+            }
+        }
+        return null;
     }
 
     /** @return a teammate that waits to enter this robot's cell, or null */
@@ -162,7 +182,7 @@ final class Wayfinder {
                     new int[] {0, 1, 2, 3}, Set.of()));
         }
         Set<Long> held = map.held();
-        Map<Long, MazeKnowledge.Reach> reach = map.reach(course.x(), course.y(), order(), held);
+        Map<Long, MazeKnowledge.Reach> reach = map.reach(course.x(), course.y(), order, held);
         long best = -1;
         int bestCells = Integer.MAX_VALUE;
         for (Map.Entry<Long, MazeKnowledge.Reach> e : reach.entrySet()) {
@@ -178,9 +198,10 @@ final class Wayfinder {
         return best < 0 ? -1 : reach.get(best).first();
     }
 
-    /** @return whether a teammate stands in or drives into the cell across {@code side} */
+    /** @return whether a teammate stands in the cell across {@code side} of the robot's, or has committed to it */
     boolean heldByTeammate(int side) {
-        return map.holder(course.x() + Directions.dx(side), course.y() + Directions.dy(side)) != null;
+        return map.heldAgainst(MazeKnowledge.key(course.x() + Directions.dx(side), course.y() + Directions.dy(side)),
+                course.here());
     }
 
     /**
@@ -194,12 +215,11 @@ final class Wayfinder {
         long k = MazeKnowledge.key(course.x() + Directions.dx(side), course.y() + Directions.dy(side));
         if (course.want() != k) {
             course.startWaiting(k);
-            team.tell(NONE, NONE, false);
         }
         course.waitOneStep();
         if (course.waited() >= PATIENCE * (1 + rank % 3)) {
             // stuck: any free open side other than the one wanted, then think again
-            for (int s : order()) {
+            for (int s : order) {
                 int sx = course.x() + Directions.dx(s);
                 int sy = course.y() + Directions.dy(s);
                 if (s != side && map.open(course.x(), course.y(), s) && map.isSensed(sx, sy)
@@ -212,22 +232,22 @@ final class Wayfinder {
         return -1;
     }
 
-    /** @return whether a teammate stands in a cell of the run, or drives into one and goes before this robot */
-    boolean runContested() {
-        boolean contested = false;
-        for (int k = 1; k <= course.cells(); k++) {
-            contested |= contested(course.aheadX(k), course.aheadY(k));
-        }
-        return contested;
-    }
-
-    private boolean contested(int x, int y) {
-        for (String name : map.mates()) {
-            MazeKnowledge.Mate m = map.mate(name);
-            if ((m.x() == x && m.y() == y) || (m.nextX() == x && m.nextY() == y && Gold.rankOf(name) < rank)) {
-                return true;
+    /**
+     * @return the index in the robot's committed cells of the first one that a teammate stands in,
+     *         or has committed to and goes before this robot (a lower number), or -1
+     */
+    int firstContested() {
+        List<Long> ahead = course.ahead();
+        for (int k = 0; k < ahead.size(); k++) {
+            int x = MazeKnowledge.keyX(ahead.get(k));
+            int y = MazeKnowledge.keyY(ahead.get(k));
+            for (String name : map.mates()) {
+                MazeKnowledge.Mate m = map.mate(name);
+                if ((m.x() == x && m.y() == y) || (m.route().contains(ahead.get(k)) && Gold.rankOf(name) < rank)) {
+                    return k;
+                }
             }
         }
-        return false;
+        return -1;
     }
 }

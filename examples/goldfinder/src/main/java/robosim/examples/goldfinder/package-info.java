@@ -6,16 +6,17 @@
  * <ul>
  *   <li>{@code TeamTalk}: the team messages ({@link robosim.examples.goldfinder.MazeMessage}), what
  *       a robot tells and what it hears;</li>
- *   <li>{@code SearchPhases}: the search's phases, a state machine: decide, announce, turn, drive,
- *       back off, done;</li>
- *   <li>{@code Survey} and {@code WallSensing}: what a robot senses of the cells with its laser and
- *       sonars;</li>
+ *   <li>{@code SearchPhases}: the search a step at a time: note the cell it is in, sense, commit to
+ *       the next cell when it must, drive; back off; done;</li>
+ *   <li>{@code Survey} and {@code WallSensing}: what a robot senses of the cells with its laser,
+ *       driving or standing, and its sonars at the start;</li>
  *   <li>{@code MazeKnowledge}: the map of cells it believes, and where its teammates are and go;</li>
- *   <li>{@code Wayfinder} and {@code TeamPlan}: the frontier it claims, the side it leaves by, how
- *       far it drives, and how it gives way to teammates;</li>
+ *   <li>{@code Wayfinder} and {@code TeamPlan}: the frontier it claims, the side it leaves a cell
+ *       by, and how it gives way to teammates;</li>
  *   <li>{@code HeatGuide}: what its heat sensor says of the gold;</li>
- *   <li>{@code Driving}: the motion primitives: turn to a side, drive a run of cells, back off;</li>
- *   <li>{@code Course}: where it is and where it goes;</li>
+ *   <li>{@code Track} and {@code Driving}: the line through its committed cells, bends taken as
+ *       arcs, and how it drives it (steering, speed, stopping short of a teammate, backing off);</li>
+ *   <li>{@code Course}: where it is, the cells it has committed to, and where it goes;</li>
  *   <li>{@code TeamDrawings}: the drawing of what it believes, for viewers;</li>
  *   <li>{@code Directions}: the numbering of a cell's four sides.</li>
  * </ul>

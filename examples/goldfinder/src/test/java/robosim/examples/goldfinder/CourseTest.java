@@ -1,12 +1,16 @@
 package robosim.examples.goldfinder;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** Where a Gold robot is and goes: its cell moves on by the cells of its run, and its wait is counted. */
+/** Where a Gold robot is and goes: its cell moves on through the cells it committed to, and its wait is counted. */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class CourseTest {
     private static final int EAST = 0;
@@ -24,29 +28,47 @@ class CourseTest {
     }
 
     @Test
-    void aRunCountsItsCellsFromTheRobotsCellAndMovesItOnWhenDriven() {
+    void comingIntoTheNextCommittedCellMovesTheCourseOnAndNotesTheSideItCameInBy() {
         Course c = new Course(2, 3);
-        c.run(NORTH, 3);
-        assertEquals(2, c.aheadX(3));
-        assertEquals(6, c.aheadY(3));
-        c.advance(2);
-        assertEquals(MazeKnowledge.key(2, 5), c.here());
-        c.run(WEST, 1);
-        c.advance(c.cells());
-        assertEquals(1, c.x());
-        assertEquals(5, c.y());
+        assertEquals(-1, c.entry(), "it starts standing");
+        c.commit(MazeKnowledge.key(2, 4));
+        c.commit(MazeKnowledge.key(1, 4));
+        assertEquals(MazeKnowledge.key(1, 4), c.last());
+        assertEquals(EAST, c.lastEntry(), "it comes into (1, 4) from the east");
+        assertTrue(c.moveTo(2, 4));
+        assertEquals(SOUTH, c.entry());
+        assertEquals(List.of(MazeKnowledge.key(1, 4)), c.ahead());
+        assertFalse(c.moveTo(2, 4), "the same cell again changes nothing");
     }
 
     @Test
-    void aRunIsCutShortToTheCellsSeenClearNeverLengthened() {
+    void comingIntoACellNotCommittedToDropsTheCommittedOnesAndStands() {
         Course c = new Course(0, 0);
-        c.run(EAST, 4);
-        c.shortenTo(6);
-        assertEquals(4, c.cells());
-        c.shortenTo(2);
-        assertEquals(2, c.cells());
-        c.shortenTo(0);
-        assertEquals(0, c.cells());
+        c.commit(MazeKnowledge.key(1, 0));
+        c.moveTo(0, 1);
+        assertEquals(List.of(), c.ahead());
+        assertEquals(-1, c.entry());
+    }
+
+    @Test
+    void committedCellsCanBeGivenUpFromAnyOfThemOnAndAStandingRobotHoldsNone() {
+        Course c = new Course(0, 0);
+        c.commit(MazeKnowledge.key(1, 0));
+        c.commit(MazeKnowledge.key(2, 0));
+        c.commit(MazeKnowledge.key(3, 0));
+        c.cutFrom(1);
+        assertEquals(List.of(MazeKnowledge.key(1, 0)), c.ahead());
+        c.moveTo(1, 0);
+        c.stand();
+        assertEquals(List.of(), c.ahead());
+        assertEquals(-1, c.entry());
+    }
+
+    @Test
+    void onlyANeighbourOfTheLastCommittedCellCanBeCommitted() {
+        Course c = new Course(0, 0);
+        assertThrows(IllegalArgumentException.class, () -> c.commit(MazeKnowledge.key(2, 0)));
+        assertThrows(IllegalArgumentException.class, () -> c.commit(MazeKnowledge.key(1, 1)));
     }
 
     @Test

@@ -93,17 +93,32 @@ class MazeKnowledgeTest {
     // ---- teammates ----
 
     @Test
-    void aMateHoldsTheCellItStandsInAndTheOneItDrivesInto() {
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1, 5, 5, 0));
+    void aMateHoldsTheCellItStandsInAndTheCellsAheadItHasCommittedTo() {
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(MazeKnowledge.key(2, 1), MazeKnowledge.key(2, 2)), 5, 5, 0));
         assertEquals("r2", map.holder(1, 1));
         assertEquals("r2", map.holder(2, 1));
+        assertEquals("r2", map.holder(2, 2));
         assertNull(map.holder(5, 5), "a claimed frontier is not held");
-        assertEquals(Set.of(MazeKnowledge.key(1, 1), MazeKnowledge.key(2, 1)), map.held());
+        assertEquals(Set.of(MazeKnowledge.key(1, 1), MazeKnowledge.key(2, 1), MazeKnowledge.key(2, 2)), map.held());
+    }
+
+    @Test
+    void aCellIsHeldAgainstARobotUnlessTheMateInItIsLeavingTheOtherWay() {
+        long from = MazeKnowledge.key(0, 1);
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(MazeKnowledge.key(2, 1)), 5, 5, 0));
+        assertFalse(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 leaves (1, 1) eastwards: follow it in");
+        assertTrue(map.heldAgainst(MazeKnowledge.key(2, 1), from), "r2 has committed to (2, 1)");
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(from), 5, 5, 1));
+        assertTrue(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 comes towards the robot");
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2));
+        assertTrue(map.heldAgainst(MazeKnowledge.key(1, 1), from), "r2 stands in (1, 1)");
+        assertFalse(map.heldAgainst(MazeKnowledge.key(3, 3), from));
     }
 
     @Test
     void aMatesNewReportReplacesItsOldOne() {
-        map.mate("r2", new MazeKnowledge.Mate(1, 1, 2, 1, MazeKnowledge.NONE, MazeKnowledge.NONE, 3));
+        map.mate("r2", new MazeKnowledge.Mate(1, 1, List.of(MazeKnowledge.key(2, 1)), MazeKnowledge.NONE,
+                MazeKnowledge.NONE, 3));
         map.mate("r2", new MazeKnowledge.Mate(2, 1, 7));
         assertNull(map.holder(1, 1), "r2 has left (1, 1)");
         assertEquals("r2", map.holder(2, 1));

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static robosim.examples.goldfinder.MazeKnowledge.NONE;
 import static robosim.examples.goldfinder.MazeKnowledge.key;
 
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -37,7 +38,7 @@ class TeamPlanTest {
 
     /** What a robot hears when a teammate tells it where it is and what it claimed. */
     private static MazeKnowledge.Mate claiming(int x, int y, long claim, long heard) {
-        return new MazeKnowledge.Mate(x, y, NONE, NONE, MazeKnowledge.keyX(claim), MazeKnowledge.keyY(claim), heard);
+        return new MazeKnowledge.Mate(x, y, List.of(), MazeKnowledge.keyX(claim), MazeKnowledge.keyY(claim), heard);
     }
 
     @Test
@@ -91,9 +92,9 @@ class TeamPlanTest {
     }
 
     @Test
-    void aFrontierATeammateDrivesIntoIsNotClaimed() {
+    void aFrontierATeammateHasCommittedToIsNotClaimed() {
         MazeKnowledge map = junction();
-        map.mate("r1", new MazeKnowledge.Mate(1, 0, 2, 0, NONE, NONE, 5));
+        map.mate("r1", new MazeKnowledge.Mate(1, 0, List.of(key(2, 0)), NONE, NONE, 5));
         TeamPlan.Plan p = TeamPlan.plan(map, 2, 0, 0, EAST_FIRST, 6);
         assertEquals(new TeamPlan.Plan(key(1, 1), true), p);
     }

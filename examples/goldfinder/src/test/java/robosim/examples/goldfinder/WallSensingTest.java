@@ -1,6 +1,5 @@
 package robosim.examples.goldfinder;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Arrays;
@@ -17,8 +16,9 @@ import robosim.protocol.SonarUnit;
 
 /**
  * Which sides of its cell a Pioneer standing at the cell's centre reads as open, from given laser
- * and rear sonar ranges: a side is open when the echo that way lies farther than 0.6 of a cell
- * from the robot's centre.
+ * and rear sonar ranges (a side is open when the echo that way lies farther than 0.6 of a cell
+ * from the robot's centre), and what its laser tells of any side in view from anywhere, from the
+ * scans it would read of walls given as boxes.
  */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class WallSensingTest {
@@ -49,6 +49,12 @@ class WallSensingTest {
         StandingPioneer(RobotParameters parameters) {
             super("r1", "127.0.0.1", 5000, parameters);
             addRangeDevice(laser);
+        }
+
+        /** One cycle at (x, y), facing {@code th}, with a laser scan and no sonar. */
+        void at(double x, double y, double th, int[] laser) {
+            responded(new RobotSensorResponse(RobotStates.of(1, 100, x, y, th, 0, 0, 0, 0, false, new int[0], 0,
+                    laser, null)));
         }
 
         /** One cycle standing at the centre of cell (0, 0) of a 1500 mm maze, facing {@code th}. */
@@ -181,52 +187,106 @@ class WallSensingTest {
         assertEquals(E | N | S, WallSensing.openSides(robot, robot.laser, 1500));
     }
 
-    // ---- the cells ahead ----
-
-    private static int[] cellsAhead(double th, int[] laser) {
-        StandingPioneer robot = new StandingPioneer(p3dx(P3DX_SONARS));
-        robot.reads(th, laser, sonar(750, 495, 495));
-        return WallSensing.cellsAhead(robot, robot.laser, 1500);
-    }
+    // ---- any side in view, from anywhere ----
 
     /**
-     * A 1° scan facing along a 1500 mm corridor. The side walls of the cell j ahead face the
-     * robot's centre line 700 mm away; the beams aimed at their middles leave at ±25° (j = 1) and
-     * ±13° (j = 2) and meet a wall 1655 and 3080 mm from the centre (the laser sits 18 mm ahead);
-     * {@code ahead} is the straight beam's echo.
+     * A corridor along row 0 of a 1500 mm maze, cells (0, 0) to (2, 0): the boundary walls along its
+     * south side and its west end (100 mm thick, just inside the world), an inner wall (100 mm thick, centred on
+     * y = 1500) along its north side but for cell (2, 0), which opens north onto a room closed at
+     * y = 3000, and an inner wall closing its east end at x = 4500.
      */
-    private static int[] corridor(int ahead, int... indexRange) {
-        int[] s = scan(5000, 90, ahead, 115, 1639, 65, 1639, 103, 3062, 77, 3062);
-        for (int k = 0; k < indexRange.length; k += 2) {
-            s[indexRange[k]] = indexRange[k + 1];
+    private static final double[][] CORRIDOR = {
+            {0, 0, 4500, 100}, {0, 0, 100, 3000}, {-50, 1450, 3050, 1550}, {4450, -50, 4550, 3050}, {-50, 2950, 4550, 3050}};
+
+    /** The 1° scan a laser 18 mm ahead of (x, y), facing {@code th}, reads of the boxes {x0, y0, x1, y1}. */
+    private static int[] cast(double x, double y, double th, double[]... boxes) {
+        int[] s = new int[181];
+        double lx = x + LASER_X * Math.cos(Math.toRadians(th));
+        double ly = y + LASER_X * Math.sin(Math.toRadians(th));
+        for (int i = 0; i < s.length; i++) {
+            double a = Math.toRadians(th + i - 90);
+            double dx = Math.cos(a);
+            double dy = Math.sin(a);
+            double best = 8000;
+            for (double[] b : boxes) {
+                double t0 = 0;
+                double t1 = best;
+                double[] lo = {b[0] - lx, b[1] - ly};
+                double[] hi = {b[2] - lx, b[3] - ly};
+                double[] d = {dx, dy};
+                for (int k = 0; k < 2 && t0 <= t1; k++) {
+                    if (Math.abs(d[k]) < 1e-12) {
+                        t0 = lo[k] <= 0 && hi[k] >= 0 ? t0 : Double.POSITIVE_INFINITY;
+                    } else {
+                        t0 = Math.max(t0, Math.min(lo[k] / d[k], hi[k] / d[k]));
+                        t1 = Math.min(t1, Math.max(lo[k] / d[k], hi[k] / d[k]));
+                    }
+                }
+                if (t0 <= t1) {
+                    best = Math.min(best, t0);
+                }
+            }
+            s[i] = (int) Math.round(best);
         }
         return s;
     }
 
-    @Test
-    void aCorridorStraightAheadIsReadTwoCellsDeep() {
-        // the straight beam runs on past the second cell: both cells open ahead and behind, closed at the sides
-        assertArrayEquals(new int[] {E | W, E | W}, cellsAhead(0, corridor(7000)));
+    private static double[][] with(double[][] boxes, double[] more) {
+        double[][] out = Arrays.copyOf(boxes, boxes.length + 1);
+        out[boxes.length] = more;
+        return out;
+    }
+
+    /** What a robot at (x, y) facing {@code th} reads of side {@code d} of cell (cx, cy), among the boxes. */
+    private static int side(double x, double y, double th, double[][] boxes, int cx, int cy, int d) {
+        StandingPioneer robot = new StandingPioneer(p3dx(P3DX_SONARS));
+        robot.at(x, y, th, cast(x, y, th, boxes));
+        return WallSensing.side(robot, robot.laser.getRawScan(), 1500, cx, cy, d);
     }
 
     @Test
-    void aSideOpeningAndAnEndWallAreRead() {
-        // the first cell opens north (its beam runs on into the next row); the second ends the corridor
-        assertArrayEquals(new int[] {E | W | N, W}, cellsAhead(0, corridor(3732, 115, 2500)));
-        assertArrayEquals(new int[] {W | S}, cellsAhead(0, corridor(2232, 65, 2500)),
-                "the first cell ends the corridor, so nothing beyond it is read");
+    void drivingAlongACorridorTheLaserReadsTheWallsAndOpeningsAhead() {
+        assertEquals(WallSensing.CLOSED, side(1000, 750, 0, CORRIDOR, 1, 0, 1), "the inner wall north of (1, 0)");
+        assertEquals(WallSensing.OPEN, side(2250, 750, 0, CORRIDOR, 2, 0, 1), "(2, 0) opens north");
+        assertEquals(WallSensing.OPEN, side(1000, 750, 0, CORRIDOR, 1, 0, 0), "(1, 0) opens east onto (2, 0)");
+        assertEquals(WallSensing.CLOSED, side(1000, 750, 0, CORRIDOR, 2, 0, 0), "the end wall");
     }
 
     @Test
-    void facingNorthTheCellsAheadAreReadInTheMazesDirections() {
-        // facing north, left is west and right is east
-        assertArrayEquals(new int[] {N | S | W, N | S}, cellsAhead(90, corridor(7000, 115, 2500)));
+    void theBoundaryWallJustInsideTheWorldReadsClosed() {
+        assertEquals(WallSensing.CLOSED, side(1000, 750, 0, CORRIDOR, 1, 0, 3));
+        assertEquals(WallSensing.CLOSED, side(2250, 750, 0, CORRIDOR, 2, 0, 3));
     }
 
     @Test
-    void somethingNearerThanAWallHidesWhatLiesBeyond() {
-        assertArrayEquals(new int[0], cellsAhead(0, corridor(900)), "a teammate in the next cell");
-        assertArrayEquals(new int[] {E | W}, cellsAhead(0, corridor(7000, 103, 1500)),
-                "a teammate hides the second cell's north wall");
+    void aSideBesideTheRobotIsReadOnlyWhenTwoOfItsMarksAreInView() {
+        assertEquals(WallSensing.UNSEEN, side(2250, 750, 0, CORRIDOR, 1, 0, 1), "one mark ahead of the laser");
+        assertEquals(WallSensing.CLOSED, side(1900, 750, 0, CORRIDOR, 1, 0, 1), "two marks ahead of the laser");
+    }
+
+    @Test
+    void aSideBehindTheLaserIsUnseen() {
+        assertEquals(WallSensing.UNSEEN, side(1000, 750, 0, CORRIDOR, 0, 0, 2));
+        assertEquals(WallSensing.CLOSED, side(1000, 750, 180, CORRIDOR, 0, 0, 2), "facing it, it is read");
+    }
+
+    @Test
+    void aTeammateStandingInADoorwayNeverClosesIt() {
+        double[][] across = with(CORRIDOR, new double[] {3550, 1300, 3950, 1700});
+        assertEquals(WallSensing.UNSEEN, side(2250, 750, 0, across, 2, 0, 1), "in the middle it hides the side");
+        double[][] aside = with(CORRIDOR, new double[] {3900, 1300, 4300, 1700});
+        assertEquals(WallSensing.OPEN, side(2250, 750, 0, aside, 2, 0, 1), "to one side a beam goes past it");
+    }
+
+    @Test
+    void somethingNearerThanASideHidesIt() {
+        double[][] mate = with(CORRIDOR, new double[] {2100, 550, 2500, 950});
+        assertEquals(WallSensing.UNSEEN, side(1000, 750, 0, mate, 2, 0, 0), "a teammate in (1, 0) hides the end wall");
+    }
+
+    @Test
+    void aSideMetTooShallowIsUnseen() {
+        // from the west end of the corridor the beams aimed at the boundary wall south of (2, 0) meet it at about 14°
+        assertEquals(WallSensing.UNSEEN, side(300, 750, 0, CORRIDOR, 2, 0, 3));
     }
 }
