@@ -6,8 +6,9 @@ import robosim.env.world.World;
 import robosim.protocol.RobotParameters;
 
 /**
- * The fewest steps in which a team could find a maze's gold if it knew the maze: the yardstick a
- * searching team is measured against.
+ * The steps a team that knew a maze would take to find its gold, stopping to turn in place at each
+ * corner: the yardstick a searching team is measured against. Robots that take bends as arcs can
+ * beat it, so it is not a true lower bound.
  */
 public final class GoldBound {
     /** East, north, west, south, as {@link Maze#open} numbers them. */
@@ -19,8 +20,7 @@ public final class GoldBound {
     /**
      * The shortest path from the nearest robot's cell to the gold's, driven at the robot's top speed
      * and accelerations, straight along each corridor, turning in place at each corner, and ending
-     * where the gold is {@value Simulation#GOLD_FOUND_DISTANCE} mm away (a find counts there). Robots
-     * that sense their way can do no better.
+     * where the gold is {@value Simulation#GOLD_FOUND_DISTANCE} mm away (a find counts there).
      *
      * @param maze     the maze
      * @param world    its world, with the team's robots and the gold
