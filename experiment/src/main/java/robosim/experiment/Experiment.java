@@ -112,19 +112,6 @@ public record Experiment(Path file, String name, WorldTemplate world, List<Progr
     }
 
     /**
-     * @return every run of the sweep, in index order
-     * @throws ExperimentFileException if a value the factors fill in breaks its rule, naming the line
-     *                                 and the combination
-     */
-    public List<RunSpec> runs() {
-        List<RunSpec> runs = new ArrayList<>(runCount());
-        for (int i = 0; i < runCount(); i++) {
-            runs.add(run(i));
-        }
-        return runs;
-    }
-
-    /**
      * @param index the run's index, from 0
      * @return the run
      * @throws IndexOutOfBoundsException if there is no such run

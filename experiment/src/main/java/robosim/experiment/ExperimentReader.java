@@ -2,7 +2,6 @@ package robosim.experiment;
 
 import com.fasterxml.jackson.core.JsonToken;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -12,7 +11,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import robosim.env.world.xml.WorldReader;
 import robosim.experiment.Experiment.Aggregate;
 import robosim.experiment.Experiment.CommsTemplate;
 import robosim.experiment.Experiment.ProgramTemplate;
@@ -21,7 +19,6 @@ import robosim.experiment.YamlTree.Mapping;
 import robosim.experiment.YamlTree.Node;
 import robosim.experiment.YamlTree.Scalar;
 import robosim.experiment.YamlTree.Sequence;
-import robosim.params.RobotParameterFiles;
 import robosim.protocol.Welcome;
 
 /**
@@ -36,9 +33,11 @@ public final class ExperimentReader {
 
     private final Path file;
     private final Set<String> factorNames = new LinkedHashSet<>();
+    private final YamlShapes shapes;
 
     private ExperimentReader(Path file) {
         this.file = file;
+        this.shapes = new YamlShapes(file);
     }
 
     /**
@@ -54,41 +53,17 @@ public final class ExperimentReader {
             RunSpec run = e.run(i);
             if (worlds.add(run.world() instanceof RunSpec.MazePlan m ? m.robotFile()
                     : ((RunSpec.FilePlan) run.world()).file())) {
-                checkWorld(e, run);
+                RunWorlds.check(e, run);
             }
         }
         return e;
     }
 
-    /** A world file must read, and a maze's robot parameter file must be found, before any run starts. */
-    private static void checkWorld(Experiment e, RunSpec run) throws IOException {
-        if (run.world() instanceof RunSpec.MazePlan m) {
-            try {
-                RobotParameterFiles.load(m.robotFile());
-            } catch (IllegalArgumentException x) {
-                throw new ExperimentFileException(e.file(), e.world().robotFile() == null ? 0 : e.world().robotFile().line(),
-                        "world.maze.robotFile: " + x.getMessage());
-            }
-            return;
-        }
-        Path world = ((RunSpec.FilePlan) run.world()).file();
-        if (!Files.isRegularFile(world)) {
-            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file is " + world
-                    + ", which does not exist (a world file's path is relative to the experiment file)");
-        }
-        try {
-            WorldReader.read(world);
-        } catch (RuntimeException x) {
-            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file " + world
-                    + " breaks a rule: " + x.getMessage());
-        }
-    }
-
     private Experiment experiment(Node root) {
-        Mapping top = mapping(root, "the file");
-        keys(top, TOP, "the file");
-        require(top, "world", "the file");
-        require(top, "programs", "the file");
+        Mapping top = shapes.mapping(root, "the file");
+        shapes.keys(top, TOP, "the file");
+        shapes.require(top, "world", "the file");
+        shapes.require(top, "programs", "the file");
         String fileName = file.getFileName().toString();
         String name = top.entries().containsKey("name") ? word(top, "name")
                 : fileName.replaceFirst("\\.(ya?ml)$", "");
@@ -99,16 +74,16 @@ public final class ExperimentReader {
                     + " digits, '.', '_' or '-'" + (top.entries().containsKey("name") ? "" : "; give name: in the file"));
         }
         List<Map<String, String>> combinations = combinations(top);
-        WorldTemplate world = world(mapping(top.entries().get("world"), "world"));
+        WorldTemplate world = world(shapes.mapping(top.entries().get("world"), "world"));
         List<ProgramTemplate> programs = programs(top.entries().get("programs"));
         if (world.file() == null && programs.get(programs.size() - 1).count() == null) {
             throw new ExperimentFileException(file, top.keyLines().get("programs"), "a program gives no count, but a"
                     + " maze has the robots the programs ask for: give every program a count");
         }
-        CommsTemplate comms = top.entries().containsKey("comms") ? comms(mapping(top.entries().get("comms"), "comms")) : null;
-        int replicates = (int) whole(top, "replicates", 1, 1, 100_000);
-        long firstSeed = whole(top, "firstSeed", 1, 0, Long.MAX_VALUE / 2);
-        long steps = whole(top, "steps", 0, 1, Long.MAX_VALUE);
+        CommsTemplate comms = top.entries().containsKey("comms") ? comms(shapes.mapping(top.entries().get("comms"), "comms")) : null;
+        int replicates = (int) shapes.whole(top, "replicates", 1, 1, 100_000);
+        long firstSeed = shapes.whole(top, "firstSeed", 1, 0, Long.MAX_VALUE / 2);
+        long steps = shapes.whole(top, "steps", 0, 1, Long.MAX_VALUE);
         if (!top.entries().containsKey("steps")) {
             throw new ExperimentFileException(file, top.line(), "steps is missing: give each run's step limit, e.g."
                     + " steps: 20000, so that a run that never ends of itself ends");
@@ -124,8 +99,8 @@ public final class ExperimentReader {
         String plotX = factorNames.isEmpty() ? null : factorNames.iterator().next();
         List<List<String>> plotMetrics = List.of();
         if (top.entries().containsKey("plot")) {
-            Mapping plot = mapping(top.entries().get("plot"), "plot");
-            keys(plot, List.of("x", "metrics"), "plot");
+            Mapping plot = shapes.mapping(top.entries().get("plot"), "plot");
+            shapes.keys(plot, List.of("x", "metrics"), "plot");
             if (plot.entries().containsKey("x")) {
                 plotX = word(plot, "x");
                 if (!factorNames.contains(plotX)) {
@@ -149,7 +124,7 @@ public final class ExperimentReader {
                     + " factors for every combination of their values, or cases for the combinations you list");
         }
         if (grid) {
-            Mapping factors = mapping(top.entries().get("factors"), "factors");
+            Mapping factors = shapes.mapping(top.entries().get("factors"), "factors");
             List<String> names = new ArrayList<>();
             List<List<String>> values = new ArrayList<>();
             factors.entries().forEach((name, node) -> {
@@ -170,14 +145,14 @@ public final class ExperimentReader {
             }
             List<Map<String, String>> out = new ArrayList<>();
             for (Node item : list.items()) {
-                Mapping c = mapping(item, "a case");
+                Mapping c = shapes.mapping(item, "a case");
                 if (c.entries().isEmpty()) {
                     throw new ExperimentFileException(file, c.line(), "an empty case: a case gives every factor a value");
                 }
                 Map<String, String> combination = new LinkedHashMap<>();
                 c.entries().forEach((name, v) -> {
                     factorName(name, c.keyLines().get(name));
-                    combination.put(name, scalar(v, "factor " + name));
+                    combination.put(name, shapes.scalar(v, "factor " + name));
                 });
                 if (!out.isEmpty() && !factorNames.equals(combination.keySet())) {
                     throw new ExperimentFileException(file, c.line(), "this case gives " + combination.keySet()
@@ -231,7 +206,7 @@ public final class ExperimentReader {
             }
             List<String> out = new ArrayList<>();
             for (Node item : list.items()) {
-                String v = scalar(item, "factor " + name);
+                String v = shapes.scalar(item, "factor " + name);
                 if (out.contains(v)) {
                     throw new ExperimentFileException(file, item.line(), "factor " + name + " gives '" + v
                             + "' twice: each value is given once");
@@ -240,11 +215,11 @@ public final class ExperimentReader {
             }
             return out;
         }
-        return List.of(scalar(node, "factor " + name));
+        return List.of(shapes.scalar(node, "factor " + name));
     }
 
     private WorldTemplate world(Mapping w) {
-        keys(w, List.of("file", "maze", "properties"), "world");
+        shapes.keys(w, List.of("file", "maze", "properties"), "world");
         boolean hasFile = w.entries().containsKey("file");
         boolean hasMaze = w.entries().containsKey("maze");
         if (hasFile == hasMaze) {
@@ -254,7 +229,7 @@ public final class ExperimentReader {
         }
         Map<String, Template> properties = new LinkedHashMap<>();
         if (w.entries().containsKey("properties")) {
-            Mapping p = mapping(w.entries().get("properties"), "world.properties");
+            Mapping p = shapes.mapping(w.entries().get("properties"), "world.properties");
             p.entries().forEach((k, v) -> {
                 if (!Welcome.PROPERTY_NAME.matcher(k).matches()) {
                     throw new ExperimentFileException(file, p.keyLines().get(k), "'" + k + "' is a world property's"
@@ -270,9 +245,9 @@ public final class ExperimentReader {
         if (hasFile) {
             return new WorldTemplate(template(w.entries().get("file"), "world.file"), null, null, null, null, properties);
         }
-        Mapping m = mapping(w.entries().get("maze"), "world.maze");
-        keys(m, List.of("cells", "cellSize", "seed", "robotFile"), "world.maze");
-        require(m, "cells", "world.maze");
+        Mapping m = shapes.mapping(w.entries().get("maze"), "world.maze");
+        shapes.keys(m, List.of("cells", "cellSize", "seed", "robotFile"), "world.maze");
+        shapes.require(m, "cells", "world.maze");
         Node cellsNode = m.entries().get("cells");
         List<Template> cells = new ArrayList<>();
         if (cellsNode instanceof Sequence s) {
@@ -297,9 +272,9 @@ public final class ExperimentReader {
         }
         List<ProgramTemplate> out = new ArrayList<>();
         for (int i = 0; i < list.items().size(); i++) {
-            Mapping p = mapping(list.items().get(i), "a program");
-            keys(p, List.of("class", "count", "args", "link"), "a program");
-            require(p, "class", "a program");
+            Mapping p = shapes.mapping(list.items().get(i), "a program");
+            shapes.keys(p, List.of("class", "count", "args", "link"), "a program");
+            shapes.require(p, "class", "a program");
             Template count = optional(p, "count", "a program's count");
             if (count == null && i < list.items().size() - 1) {
                 throw new ExperimentFileException(file, p.line(), "this program gives no count, but programs follow it:"
@@ -323,7 +298,7 @@ public final class ExperimentReader {
     }
 
     private CommsTemplate comms(Mapping c) {
-        keys(c, List.of("range", "loss", "latency", "wallsBlock"), "comms");
+        shapes.keys(c, List.of("range", "loss", "latency", "wallsBlock"), "comms");
         return new CommsTemplate(optional(c, "range", "comms.range"), optional(c, "loss", "comms.loss"),
                 optional(c, "latency", "comms.latency"), optional(c, "wallsBlock", "comms.wallsBlock"));
     }
@@ -333,10 +308,10 @@ public final class ExperimentReader {
         if (!top.entries().containsKey("aggregate")) {
             return out;
         }
-        Mapping a = mapping(top.entries().get("aggregate"), "aggregate");
+        Mapping a = shapes.mapping(top.entries().get("aggregate"), "aggregate");
         a.entries().forEach((name, v) -> {
             metricName(name, a.keyLines().get(name), "aggregate");
-            String how = scalar(v, "aggregate." + name);
+            String how = shapes.scalar(v, "aggregate." + name);
             if (!Aggregate.NAMES.contains(how)) {
                 throw new ExperimentFileException(file, v.line(), "'" + how + "' is given for aggregate." + name
                         + ": it is mean, sum, min or max");
@@ -353,7 +328,7 @@ public final class ExperimentReader {
         }
         List<String> out = new ArrayList<>();
         for (Node item : list.items()) {
-            String n = scalar(item, what);
+            String n = shapes.scalar(item, what);
             metricName(n, item.line(), what);
             if (out.contains(n)) {
                 throw new ExperimentFileException(file, item.line(), what + " names " + n + " twice");
@@ -371,7 +346,7 @@ public final class ExperimentReader {
         }
         List<List<String>> out = new ArrayList<>();
         for (Node item : list.items()) {
-            List<String> together = item instanceof Sequence ? names(item, "plot.metrics") : List.of(scalar(item,
+            List<String> together = item instanceof Sequence ? names(item, "plot.metrics") : List.of(shapes.scalar(item,
                     "plot.metrics"));
             if (together.isEmpty()) {
                 throw new ExperimentFileException(file, item.line(), "an empty list in plot.metrics: a plot draws at"
@@ -390,59 +365,8 @@ public final class ExperimentReader {
         }
     }
 
-    // ---- the tree's shapes
-
-    private Mapping mapping(Node node, String what) {
-        if (node instanceof Mapping m) {
-            return m;
-        }
-        throw new ExperimentFileException(file, node.line(), what + " is " + node.kind() + ": it must be a mapping"
-                + " of keys to values");
-    }
-
-    private void keys(Mapping m, List<String> known, String what) {
-        for (String k : m.entries().keySet()) {
-            if (!known.contains(k)) {
-                throw new ExperimentFileException(file, m.keyLines().get(k), "'" + k + "' is no key of " + what
-                        + ": its keys are " + String.join(", ", known));
-            }
-        }
-    }
-
-    private void require(Mapping m, String key, String what) {
-        if (!m.entries().containsKey(key)) {
-            throw new ExperimentFileException(file, m.line(), what + " has no " + key + ": it is required");
-        }
-    }
-
-    private String scalar(Node node, String what) {
-        if (node instanceof Scalar s && !s.isNull()) {
-            return s.text();
-        }
-        throw new ExperimentFileException(file, node.line(), what + " is " + node.kind() + ": it must be a single value");
-    }
-
     private String word(Mapping m, String key) {
-        return scalar(m.entries().get(key), key);
-    }
-
-    private long whole(Mapping m, String key, long absent, long min, long max) {
-        if (!m.entries().containsKey(key)) {
-            return absent;
-        }
-        Node n = m.entries().get(key);
-        String v = scalar(n, key);
-        try {
-            long x = Long.parseLong(v);
-            if (x < min || x > max) {
-                throw new ExperimentFileException(file, n.line(), x + " is given for " + key + ": it must be from " + min
-                        + (max >= Long.MAX_VALUE / 2 ? " up" : " to " + max));
-            }
-            return x;
-        } catch (NumberFormatException e) {
-            throw new ExperimentFileException(file, n.line(), "'" + v + "' is given for " + key
-                    + ": it must be a whole number");
-        }
+        return shapes.scalar(m.entries().get(key), key);
     }
 
     private Template optional(Mapping m, String key, String what) {
@@ -450,7 +374,7 @@ public final class ExperimentReader {
     }
 
     private Template template(Node node, String what) {
-        String text = scalar(node, what);
+        String text = shapes.scalar(node, what);
         Template t = new Template(text, node.line());
         for (String name : t.names()) {
             if (!factorNames.contains(name) && !Template.BUILT_IN.contains(name)) {

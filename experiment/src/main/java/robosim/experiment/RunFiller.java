@@ -98,12 +98,11 @@ final class RunFiller {
             Link link = Link.IN_PROCESS;
             if (p.link() != null) {
                 String l = text(p.link());
-                link = switch (l) {
-                    case "in-process" -> Link.IN_PROCESS;
-                    case "jvm" -> Link.JVM;
-                    default -> throw error(p.link(), "'" + l + "' is given for a program's link: it is in-process"
+                link = Link.ofFileName(l);
+                if (link == null) {
+                    throw error(p.link(), "'" + l + "' is given for a program's link: it is in-process"
                             + " (threads of the run's JVM) or jvm (a JVM per robot, over TCP)");
-                };
+                }
             }
             out.add(new ProgramPlan(cls, count, args, link));
         }

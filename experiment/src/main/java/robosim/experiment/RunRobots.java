@@ -29,8 +29,8 @@ final class RunRobots {
     private final RobotJvms jvms;
     private final Thread runner;
     private final List<Thread> threads = new ArrayList<>();
-    private final Map<Process, String> processes = new LinkedHashMap<>();
-    private final Map<Process, Path> logs = new LinkedHashMap<>();
+    /** The robot JVMs; guarded by this. */
+    private final List<Process> processes = new ArrayList<>();
     /** The failures, in the order they came: robot, then what went wrong; guarded by this. */
     private final Map<String, String> failures = new LinkedHashMap<>();
     /** Whether the run is under way, so a failure interrupts the runner; guarded by this. */
@@ -97,8 +97,7 @@ final class RunRobots {
         Files.createDirectories(log.getParent());
         Process p = jvms.start(className, robot, port, secret, log, args);
         synchronized (this) {
-            processes.put(p, robot);
-            logs.put(p, log);
+            processes.add(p);
         }
         p.onExit().thenAccept(ended -> {
             int exit = ended.exitValue();
@@ -152,7 +151,7 @@ final class RunRobots {
             }
             List<Process> all;
             synchronized (this) {
-                all = new ArrayList<>(processes.keySet());
+                all = new ArrayList<>(processes);
             }
             for (Process p : all) {
                 p.waitFor(Math.max(1, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
@@ -161,7 +160,7 @@ final class RunRobots {
             List<Process> left;
             synchronized (this) {
                 stopping = true;
-                left = processes.keySet().stream().filter(Process::isAlive).toList();
+                left = processes.stream().filter(Process::isAlive).toList();
             }
             for (Process p : left) {
                 p.destroy();

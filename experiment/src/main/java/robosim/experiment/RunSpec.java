@@ -70,6 +70,19 @@ public record RunSpec(int index, Map<String, String> factors, int replicate, lon
         public String fileName() {
             return this == IN_PROCESS ? "in-process" : "jvm";
         }
+
+        /**
+         * @param name a link's name in the file or on the command line
+         * @return the link, or null if the name is neither {@code in-process} nor {@code jvm}
+         */
+        public static Link ofFileName(String name) {
+            for (Link l : values()) {
+                if (l.fileName().equals(name)) {
+                    return l;
+                }
+            }
+            return null;
+        }
     }
 
     /**

@@ -67,6 +67,36 @@ final class RunWorlds {
         return new Made(properties(rest ? world : world.withFirstRobots(wanted), f.properties()), null);
     }
 
+    /**
+     * A world file must read, and a maze's robot parameter file must be found, before any run starts.
+     *
+     * @param e   the experiment
+     * @param run one of its runs
+     * @throws ExperimentFileException naming the line of the world or robot file that does not read
+     */
+    static void check(Experiment e, RunSpec run) {
+        if (run.world() instanceof RunSpec.MazePlan m) {
+            try {
+                RobotParameterFiles.load(m.robotFile());
+            } catch (IllegalArgumentException x) {
+                throw new ExperimentFileException(e.file(), e.world().robotFile() == null ? 0 : e.world().robotFile().line(),
+                        "world.maze.robotFile: " + x.getMessage());
+            }
+            return;
+        }
+        Path world = ((RunSpec.FilePlan) run.world()).file();
+        if (!Files.isRegularFile(world)) {
+            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file is " + world
+                    + ", which does not exist (a world file's path is relative to the experiment file)");
+        }
+        try {
+            WorldReader.read(world);
+        } catch (RuntimeException x) {
+            throw new ExperimentFileException(e.file(), e.world().file().line(), "world.file " + world
+                    + " breaks a rule: " + x.getMessage());
+        }
+    }
+
     private static World properties(World world, Map<String, String> set) {
         if (set.isEmpty()) {
             return world;

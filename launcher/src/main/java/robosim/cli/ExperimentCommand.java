@@ -225,12 +225,12 @@ final class ExperimentCommand implements Callable<Integer> {
         if (link == null) {
             return null;
         }
-        return switch (link) {
-            case "in-process" -> RunSpec.Link.IN_PROCESS;
-            case "jvm" -> RunSpec.Link.JVM;
-            default -> throw new ParameterException(spec.commandLine(), "'" + link + "' was supplied for --link: it is"
+        RunSpec.Link every = RunSpec.Link.ofFileName(link);
+        if (every == null) {
+            throw new ParameterException(spec.commandLine(), "'" + link + "' was supplied for --link: it is"
                     + " in-process or jvm");
-        };
+        }
+        return every;
     }
 
     private long heapBytes() {
