@@ -12,7 +12,7 @@ import java.util.regex.Pattern;
 /**
  * An experiment, as its file gives it ({@link ExperimentReader}): a world and robot programs whose
  * values may name factors, the combinations of the factors' values, replicates, a step limit, the
- * metrics to keep and how to plot them. {@link #runs()} fills in every run.
+ * metrics to keep and how to plot them. {@link #run(int)} fills in each run.
  *
  * @param file         the experiment file
  * @param name         its name (the file's, without the extension, unless it gives one)
