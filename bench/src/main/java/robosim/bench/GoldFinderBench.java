@@ -85,7 +85,7 @@ public final class GoldFinderBench {
                     most, robotFile.toAbsolutePath().toString()), StandardCharsets.UTF_8);
             World world = WorldReader.read(file);
             for (int t = 0; t < teams.size(); t++) {
-                out[t].bounds()[m] = GoldBound.steps(maze, world.withFirstRobots(teams.get(t)), CELL_SIZE);
+                out[t].bounds()[m] = GoldBound.steps(world.withFirstRobots(teams.get(t)));
                 out[t].steps()[m] = steps(world.withFirstRobots(teams.get(t)), seed, maxSteps, loss, latency);
             }
         }

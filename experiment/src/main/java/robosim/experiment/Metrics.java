@@ -34,9 +34,9 @@ public final class Metrics {
     public static final String FOUND_STEP = "foundStep";
     /** Who found it. */
     public static final String FOUND_BY = "foundBy";
-    /** The fewest steps a team that knew the maze would take to find its gold ({@link robosim.env.world.maze.GoldBound}). */
+    /** Steps no team could find the gold in fewer of, however well it knew the world ({@link robosim.env.world.maze.GoldBound}); empty without gold. */
     public static final String LOWER_BOUND = "lowerBound";
-    /** The steps to find the gold over the lower bound: how far the team was from searching perfectly. */
+    /** The steps to find the gold over the lower bound: at least 1, and the nearer 1 the nearer a perfect search at top speed. */
     public static final String BOUND_RATIO = "boundRatio";
     /** The robots in the run. */
     public static final String ROBOTS = "robots";

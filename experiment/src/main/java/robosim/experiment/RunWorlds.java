@@ -22,7 +22,7 @@ final class RunWorlds {
     private RunWorlds() {
     }
 
-    /** A run's world, with its maze's lower bound (null for a world file or a maze without gold). */
+    /** A run's world, with its lower bound on the steps to find the gold (null for a world without gold). */
     record Made(World world, Long lowerBound) {
     }
 
@@ -55,8 +55,7 @@ final class RunWorlds {
                 AtomicFiles.write(file, xml);
             }
             World world = properties(WorldReader.read(file), m.properties());
-            Long bound = world.gold() == null || wanted == 0 ? null : GoldBound.steps(maze, world, m.cellSize());
-            return new Made(world, bound);
+            return new Made(world, bound(world));
         }
         FilePlan f = (FilePlan) run.world();
         World world = WorldReader.read(f.file());
@@ -64,7 +63,13 @@ final class RunWorlds {
         if (wanted > named || (!rest && wanted == 0)) {
             throw new RunFailure("world " + f.file() + " names " + named + " robot(s); the programs ask for " + wanted);
         }
-        return new Made(properties(rest ? world : world.withFirstRobots(wanted), f.properties()), null);
+        World team = properties(rest ? world : world.withFirstRobots(wanted), f.properties());
+        return new Made(team, bound(team));
+    }
+
+    /** @return the world's lower bound on the steps to find its gold, or null without gold or robots */
+    private static Long bound(World world) {
+        return world.gold() == null || world.robots().isEmpty() ? null : GoldBound.steps(world);
     }
 
     /**

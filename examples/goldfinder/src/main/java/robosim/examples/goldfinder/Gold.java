@@ -34,12 +34,18 @@ import robosim.aria.ArUtil;
  * there is known yet, for the frontier nearest it). The robot has found the gold when its heat
  * sensor places the gold within {@value #FOUND_DISTANCE} mm; it reports the find to the
  * Environment and broadcasts it, and every teammate that hears it stops.
+ *
+ * <p>For experiments it reports one metric of its own, {@value #CELLS_SENSED}: how many cells its
+ * laser has read, each time that grows (the team's sum, against the maze's cells, is how much of the
+ * maze the search had to see).
  */
 public class Gold extends ArRobot {
     /** The gold is found when the heat sensor places it this near, mm. */
     public static final double FOUND_DISTANCE = 1000;
     /** The world property the maze's cell size, mm, is read from: {@code bin/robosim maze} writes it. */
     public static final String CELL_SIZE_PROPERTY = "cellSize";
+    /** The metric it reports: the cells it has sensed itself. */
+    public static final String CELLS_SENSED = "cellsSensed";
 
     private final int rank;
     private final ArSick laser = new ArSick();
@@ -50,6 +56,9 @@ public class Gold extends ArRobot {
     private HeatGuide heat;
     private SearchPhases phases;
     private TeamDrawings drawings;
+    private Survey survey;
+    /** The cells sensed when it last reported them. */
+    private int cellsReported;
     /** Who found the gold, as far as this robot knows, or null. */
     private String finder;
 
@@ -112,6 +121,11 @@ public class Gold extends ArRobot {
             return;
         }
         phases.step();
+        int sensed = survey.ownCells().size();
+        if (sensed != cellsReported) {
+            reportMetric(CELLS_SENSED, sensed);
+            cellsReported = sensed;
+        }
         team.tellIfChanged();
         drawings.update();
     }
@@ -147,7 +161,7 @@ public class Gold extends ArRobot {
     /** Makes the robot's parts, which share its map and its course, starting in the cell it stands in. */
     private void makeParts(double cellSize, SplittableRandom random, ArHeatSensor heatSensor) {
         Course course = new Course((int) Math.floor(getX() / cellSize), (int) Math.floor(getY() / cellSize));
-        Survey survey = new Survey(this, laser, cellSize, heatSensor.getMaxRange(), map, course);
+        survey = new Survey(this, laser, cellSize, heatSensor.getMaxRange(), map, course);
         team = new TeamTalk(this, map, survey.ownCells(), course);
         heat = new HeatGuide(this, heatSensor, cellSize);
         Wayfinder way = new Wayfinder(this, rank, map, course, heat, random);
