@@ -245,6 +245,7 @@ final class BenchCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(),
                     steps + " was supplied for --steps: it must be at least 10");
         }
+        checkModeOptions();
         Path root = RobotParameterFiles.root();
         Path p3dx = RobotParameterFiles.resolve("p3dx").toAbsolutePath();
         Files.createDirectories(out);
@@ -253,16 +254,6 @@ final class BenchCommand implements Callable<Integer> {
                 System.getProperty("os.arch"), sensingThreads, RobotThreads.virtual() ? "virtual" : "platform",
                 EnvironmentLinks.Mode.configured().name().toLowerCase(Locale.ROOT));
         if (sweep != null) {
-            if (sweepParallel < 1) {
-                throw new ParameterException(spec.commandLine(), sweepParallel + " was supplied for --sweep-parallel:"
-                        + " it must be at least 1");
-            }
-            for (String l : sweepLinks) {
-                if (!l.equals("in-process") && !l.equals("jvm")) {
-                    throw new ParameterException(spec.commandLine(), "'" + l + "' was supplied for --sweep-links: links"
-                            + " are in-process and jvm");
-                }
-            }
             for (int r = 0; r < repeat; r++) {
                 SweepBench.print(o, sweep, SweepBench.run(sweep, out, sweepParallel, sweepLinks));
             }
@@ -276,14 +267,6 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (pioneerFlood) {
             int n = robots.get(0);
-            if (n < 2) {
-                throw new ParameterException(spec.commandLine(),
-                        n + " was supplied for --robots: --pioneer-flood needs at least 2 robots");
-            }
-            if (!(floodSeconds >= 1 && floodSeconds <= 60)) {
-                throw new ParameterException(spec.commandLine(),
-                        floodSeconds + " was supplied for --flood-seconds: it must be from 1 to 60");
-            }
             Level quiet = NET_LOG.getLevel();
             NET_LOG.setLevel(Level.WARNING);
             try {
@@ -296,14 +279,6 @@ final class BenchCommand implements Callable<Integer> {
             return 0;
         }
         if (mapLoad) {
-            if (mapPoints < 1000 || mapPoints > MAX_MAP_POINTS) {
-                throw new ParameterException(spec.commandLine(),
-                        mapPoints + " was supplied for --map-points: it must be from 1000 to " + MAX_MAP_POINTS);
-            }
-            if (!mapKind.equals("building") && !mapKind.equals("random")) {
-                throw new ParameterException(spec.commandLine(),
-                        mapKind + " was supplied for --map-kind: kinds are building or random");
-            }
             Path file = map != null ? map : mapKind.equals("random")
                     ? MapLoadBench.generateRandom(out.resolve("random-" + mapPoints + ".map"), mapPoints)
                     : MapLoadBench.generate(out.resolve("scan-" + mapPoints + ".map"), mapPoints);
@@ -313,21 +288,6 @@ final class BenchCommand implements Callable<Integer> {
             return 0;
         }
         if (goldfinder) {
-            try {
-                ServerOptions.requireAtLeast("--maze-size", mazeSize, 2);
-                ServerOptions.requireAtLeast("--message-latency", latency, 1);
-                ServerOptions.requireAtLeast("--step-limit", stepLimit, 1);
-                ServerOptions.requireAtLeast("--first-maze", firstMaze, 1);
-                ServerOptions.requireAtLeast("--mazes", mazes, 1);
-                for (int t : teams) {
-                    ServerOptions.requireAtLeast("--teams", t, 1);
-                }
-                if (!(loss >= 0 && loss <= 1)) {
-                    throw new IllegalArgumentException(loss + " was supplied for --message-loss: it must be from 0 to 1");
-                }
-            } catch (IllegalArgumentException e) {
-                throw new ParameterException(spec.commandLine(), e.getMessage());
-            }
             GoldFinderBench.print(o, GoldFinderBench.run(teams, firstMaze, mazes, mazeSize, stepLimit, out.resolve("mazes"), p3dx,
                     loss, latency), stepLimit);
             return 0;
@@ -371,5 +331,59 @@ final class BenchCommand implements Callable<Integer> {
             NET_LOG.setLevel(level);
         }
         return 0;
+    }
+
+    /** The options of the one measurement asked for instead of the default ones, checked before anything is measured. */
+    private void checkModeOptions() {
+        if (sweep != null) {
+            if (sweepParallel < 1) {
+                throw new ParameterException(spec.commandLine(), sweepParallel + " was supplied for --sweep-parallel:"
+                        + " it must be at least 1");
+            }
+            for (String l : sweepLinks) {
+                if (!l.equals("in-process") && !l.equals("jvm")) {
+                    throw new ParameterException(spec.commandLine(), "'" + l + "' was supplied for --sweep-links: links"
+                            + " are in-process and jvm");
+                }
+            }
+        }
+        if (pioneerFlood) {
+            int n = robots.get(0);
+            if (n < 2) {
+                throw new ParameterException(spec.commandLine(),
+                        n + " was supplied for --robots: --pioneer-flood needs at least 2 robots");
+            }
+            if (!(floodSeconds >= 1 && floodSeconds <= 60)) {
+                throw new ParameterException(spec.commandLine(),
+                        floodSeconds + " was supplied for --flood-seconds: it must be from 1 to 60");
+            }
+        }
+        if (mapLoad) {
+            if (mapPoints < 1000 || mapPoints > MAX_MAP_POINTS) {
+                throw new ParameterException(spec.commandLine(),
+                        mapPoints + " was supplied for --map-points: it must be from 1000 to " + MAX_MAP_POINTS);
+            }
+            if (!mapKind.equals("building") && !mapKind.equals("random")) {
+                throw new ParameterException(spec.commandLine(),
+                        mapKind + " was supplied for --map-kind: kinds are building or random");
+            }
+        }
+        if (goldfinder) {
+            try {
+                ServerOptions.requireAtLeast("--maze-size", mazeSize, 2);
+                ServerOptions.requireAtLeast("--message-latency", latency, 1);
+                ServerOptions.requireAtLeast("--step-limit", stepLimit, 1);
+                ServerOptions.requireAtLeast("--first-maze", firstMaze, 1);
+                ServerOptions.requireAtLeast("--mazes", mazes, 1);
+                for (int t : teams) {
+                    ServerOptions.requireAtLeast("--teams", t, 1);
+                }
+                if (!(loss >= 0 && loss <= 1)) {
+                    throw new IllegalArgumentException(loss + " was supplied for --message-loss: it must be from 0 to 1");
+                }
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), e.getMessage());
+            }
+        }
     }
 }

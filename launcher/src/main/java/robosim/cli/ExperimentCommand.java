@@ -44,6 +44,8 @@ import robosim.params.RobotParameterFiles;
 final class ExperimentCommand implements Callable<Integer> {
     /** A heap size as java's -Xmx takes it. */
     private static final Pattern HEAP = Pattern.compile("(\\d{1,6})([kKmMgG])");
+    /** A memory size as sbatch's --mem takes it: megabytes unless a unit follows. */
+    private static final Pattern SLURM_MEM = Pattern.compile("(\\d{1,9})([kKmMgGtT]?)");
 
     @Spec
     CommandSpec spec;
@@ -217,8 +219,34 @@ final class ExperimentCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(), "--partition, --time, --cpus-per-task, --mem and"
                     + " --runs-per-task go with --slurm or --slurm-script");
         }
-        heapBytes();
+        long heapBytes = heapBytes();
         everyLink();
+        memHoldsTheJvms(heapBytes);
+    }
+
+    /**
+     * Each cluster task runs a launcher and up to {@code min(--cpus-per-task, --runs-per-task)} runs at
+     * once, each a JVM with {@code --heap}: a {@code --mem} too small for their heaps fails every task.
+     */
+    private void memHoldsTheJvms(long heapBytes) {
+        Matcher m = mem == null ? null : SLURM_MEM.matcher(mem);
+        if (m == null || !m.matches() || Long.parseLong(m.group(1)) == 0) {
+            return; // none, one sbatch reads in a way of its own (Slurm.Request checks the characters), or all the node's
+        }
+        int shift = switch (m.group(2).isEmpty() ? 'm' : Character.toLowerCase(m.group(2).charAt(0))) {
+            case 'k' -> 10;
+            case 'g' -> 30;
+            case 't' -> 40;
+            default -> 20;
+        };
+        long bytes = Long.parseLong(m.group(1)) << shift;
+        int atOnce = Math.min(cpusPerTask == null ? 1 : cpusPerTask, runsPerTask);
+        long needed = heapBytes * (1 + atOnce);
+        if (bytes < needed) {
+            throw new ParameterException(spec.commandLine(), String.format(Locale.ROOT, "'%s' was supplied for --mem:"
+                    + " each task runs its launcher and %d run(s) at once, each a JVM of --heap %s, so it needs at"
+                    + " least %dM; give more, or a smaller --heap", mem, atOnce, heap, needed >> 20));
+        }
     }
 
     private RunSpec.Link everyLink() {

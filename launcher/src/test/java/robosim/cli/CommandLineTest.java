@@ -182,7 +182,11 @@ class CommandLineTest {
             "--clients 0         | 0 was supplied for --clients: client JVMs are 1 to 64",
             "--repeat 0          | 0 was supplied for --repeat: it must be at least 1",
             "--heap-every -1     | -1 was supplied for --heap-every: it must be 0 (none) or more",
-            "--rates-every -1    | -1 was supplied for --rates-every: it must be 0 (none) or more"})
+            "--rates-every -1    | -1 was supplied for --rates-every: it must be 0 (none) or more",
+            "--goldfinder --first-maze 0 | 0 was supplied for --first-maze: it must be at least 1",
+            "--goldfinder --mazes 0      | 0 was supplied for --mazes: it must be at least 1",
+            "--map-load --map-points 10  | 10 was supplied for --map-points: it must be from 1000 to 5000000",
+            "--pioneer-flood --robots 4 --flood-seconds 0 | 0.0 was supplied for --flood-seconds: it must be from 1 to 60"})
     void benchWithAnInvalidOptionExitsWith2AndSaysWhyBeforeMeasuringAnything(String args, String message) {
         java.util.List<String> line = new java.util.ArrayList<>(java.util.List.of("bench", "--out-dir", dir.toString()));
         line.addAll(java.util.List.of(args.split(" ")));

@@ -142,6 +142,14 @@ class ExperimentCommandTest {
         Run bad = execute("experiment", f.toString(), "--slurm-script", "--partition", "a b");
         assertEquals(2, bad.exit());
         assertTrue(bad.firstLine().contains("'a b' was supplied for --partition"), bad.firstLine());
+        // 2 runs at once and the launcher, 512m each: 1536M at least
+        Run small = execute("experiment", f.toString(), "--slurm-script", "--cpus-per-task", "2", "--runs-per-task", "3",
+                "--mem", "1G");
+        assertEquals(2, small.exit());
+        assertTrue(small.firstLine().contains("'1G' was supplied for --mem: each task runs its launcher and 2 run(s) at"
+                + " once, each a JVM of --heap 512m, so it needs at least 1536M"), small.firstLine());
+        assertEquals(0, execute("experiment", f.toString(), "--out-dir", dir.resolve("m").toString(), "--slurm-script",
+                "--mem", "1536").exit(), "1536 megabytes hold the launcher and a run");
     }
 
     @Test
