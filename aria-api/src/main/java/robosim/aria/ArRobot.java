@@ -1,6 +1,7 @@
 package robosim.aria;
 
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
 import robosim.hw.AbstractRobot;
@@ -40,7 +41,7 @@ public class ArRobot extends AbstractRobot {
     /** ARIA's {@code isStopped} rotational threshold, deg/s. */
     public static final double STOPPED_ROT_VEL = 1;
 
-    private final SonarRing sonar;
+    private volatile SonarRing sonar;
     private final ReentrantLock lock = new ReentrantLock();
     private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
     private final TaskList userTasks = new TaskList("user");
@@ -67,6 +68,34 @@ public class ArRobot extends AbstractRobot {
     private volatile boolean cycleStopped;
     private volatile int sonarCycleMs;
 
+    /** Robots made without a name, for ARIA's default names: robot, robot2, robot3, ... */
+    private static final AtomicInteger UNNAMED = new AtomicInteger();
+
+    /**
+     * A robot as ARIA's {@code ArRobot robot;} makes one, named {@code robot} (the second such robot
+     * of the program {@code robot2}, and so on, as ARIA names them), a Pioneer 3-DX ({@code p3dx}),
+     * to be connected by an {@link ArRobotConnector} or {@link ArSimpleConnector}, which say where
+     * from the command line.
+     */
+    public ArRobot() {
+        this(defaultName());
+    }
+
+    /**
+     * A robot as ARIA's {@code ArRobot robot(name);} makes one, a Pioneer 3-DX ({@code p3dx}), to be
+     * connected by an {@link ArRobotConnector} or {@link ArSimpleConnector}.
+     *
+     * @param name the robot's name; in a RoboSim world, the connector's command line may give another
+     */
+    public ArRobot(String name) {
+        this(name, ArRobotConnector.DEFAULT_HOST, ArRobotConnector.DEFAULT_PORT, "p3dx");
+    }
+
+    private static String defaultName() {
+        int n = UNNAMED.incrementAndGet();
+        return n == 1 ? "robot" : "robot" + n;
+    }
+
     /**
      * @param name      the robot's name in the world
      * @param host      the Environment's host
@@ -88,10 +117,27 @@ public class ArRobot extends AbstractRobot {
      */
     public ArRobot(String name, String host, int port, RobotParameters parameters) {
         super(name, host, port, RobotKind.PIONEER.id(), parameters);
+        useParameters(parameters);
+    }
+
+    /**
+     * Renames the robot and says where it connects, before it connects, with the parameters given.
+     *
+     * @throws IllegalStateException if the robot is connected
+     */
+    @Override
+    protected void relocate(String name, String host, int port, RobotParameters parameters) {
+        super.relocate(name, host, port, parameters);
+        useParameters(parameters);
+    }
+
+    /** The limits and sonar ring the parameters give. */
+    private void useParameters(RobotParameters parameters) {
         this.maxTransVel = parameters.maxVelocity();
         this.maxRotVel = parameters.maxRVelocity();
         this.sonar = new SonarRing(parameters.sonarUnits(), parameters.sonarMaxRange());
     }
+
 
     /**
      * Connects to the Environment, waiting (bounded) for its welcome.
@@ -228,6 +274,16 @@ public class ArRobot extends AbstractRobot {
         if (isConnected()) {
             keepAlive(true);
         }
+    }
+
+    /**
+     * ARIA's {@code runAsync(stopRunIfNotConnected)}: as {@link #runAsync()}. The cycle always stops
+     * when the robot is disconnected, so the flag changes nothing here.
+     *
+     * @param stopRunIfNotConnected ARIA's: whether the cycle stops without a connection
+     */
+    public void runAsync(boolean stopRunIfNotConnected) {
+        runAsync();
     }
 
     /** @return whether {@link #runAsync()} was called and the robot is still connected */

@@ -41,11 +41,12 @@ public abstract class AbstractRobot {
     private final LogLimiter refusals = new LogLimiter(LOG);
     private static final InheritableThreadLocal<AbstractRobot> CURRENT = new InheritableThreadLocal<>();
 
-    private final String name;
-    private final String host;
-    private final int port;
+    /** Who the robot is and where it connects: fixed once it first connects ({@link #relocate}). */
+    private volatile String name;
+    private volatile String host;
+    private volatile int port;
     private final String robotType;
-    private final RobotParameters parameters;
+    private volatile RobotParameters parameters;
     private volatile RobotState state = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, 0);
     private volatile int stepMs = 100;
     private volatile WelcomeFacts facts;
@@ -77,6 +78,32 @@ public abstract class AbstractRobot {
         this.host = host;
         this.port = port;
         this.robotType = robotType;
+        this.parameters = parameters;
+        this.facts = WelcomeFacts.none(name);
+    }
+
+    /**
+     * Renames the robot, and gives it the Environment to connect to and the parameters it sends,
+     * before it connects: for ARIA's connector, which makes a robot first and connects it once the
+     * command line has said where ({@code ArRobotConnector}).
+     *
+     * @param name       the robot's name in the world
+     * @param host       the Environment's host
+     * @param port       the Environment's robot port
+     * @param parameters the robot's parameters
+     * @throws IllegalStateException    if the robot is connected
+     * @throws IllegalArgumentException if the port is not 1 to 65535
+     */
+    protected void relocate(String name, String host, int port, RobotParameters parameters) {
+        if (isConnected()) {
+            throw new IllegalStateException("robot " + this.name + " is connected: it is renamed or moved only before");
+        }
+        if (port <= 0 || port > 65535) {
+            throw new IllegalArgumentException(port + " was supplied for port: a port is 1 to 65535");
+        }
+        this.name = name;
+        this.host = host;
+        this.port = port;
         this.parameters = parameters;
         this.facts = WelcomeFacts.none(name);
     }

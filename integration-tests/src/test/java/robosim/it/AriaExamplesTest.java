@@ -1,0 +1,134 @@
+package robosim.it;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.aria.ArLog;
+import robosim.aria.Aria;
+import robosim.cli.Background;
+import robosim.env.core.RobotSummary;
+import robosim.env.net.RunReport;
+import robosim.examples.aria.SimpleConnect;
+import robosim.examples.aria.SimpleMotionCommands;
+
+/**
+ * AriaCoda's examples ported to Java ({@code examples/aria}), run as ARIA programs run: through
+ * {@code Aria}, {@code ArArgumentParser} and {@code ArRobotConnector}, against a RoboSim Environment
+ * in lockstep ({@code NAME HOST PORT}) and against RoboSim's Pioneer port ({@code -remoteHost}).
+ */
+@Timeout(value = 3, unit = TimeUnit.MINUTES)
+class AriaExamplesTest {
+    @TempDir
+    Path dir;
+
+    /** What an example printed, and the code it gave {@code Aria.exit}. */
+    record Ran(String out, int exit) {
+    }
+
+    /** Aria.exit ends the example's thread, not the test's JVM. */
+    static final class Exited extends RuntimeException {
+        final int code;
+
+        Exited(int code) {
+            super("Aria.exit(" + code + ")", null, false, false);
+            this.code = code;
+        }
+    }
+
+    /** Runs an example's main as its program, its log and its exit caught. */
+    static Ran run(Consumer<String[]> main, String... args) {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        ArLog.setStream(new PrintStream(bytes, true, StandardCharsets.UTF_8));
+        Aria.setExitHandler(code -> {
+            throw new Exited(code);
+        });
+        int code = -1;
+        try {
+            main.accept(args);
+        } catch (Exited e) {
+            code = e.code;
+        } finally {
+            ArLog.setStream(null);
+            Aria.setExitHandler(null);
+        }
+        return new Ran(bytes.toString(StandardCharsets.UTF_8), code);
+    }
+
+    @Test
+    void simpleConnectConnectsToTheEnvironmentPrintsThePoseSleepsThreeSecondsAndExits() throws Exception {
+        try (ThreadedRun run = new ThreadedRun(LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml"),
+                1, 600)) {
+            Future<Ran> r1 = run.robot(() -> run(SimpleConnect::main, "r1", "127.0.0.1", String.valueOf(run.port())));
+            Future<Ran> r2 = run.robot(() -> run(SimpleConnect::main, "r2", "127.0.0.1", String.valueOf(run.port())));
+            Ran ran = r1.get(90, TimeUnit.SECONDS);
+            Ran other = r2.get(90, TimeUnit.SECONDS);
+            RunReport report = run.await();
+            assertEquals(0, ran.exit(), ran.out());
+            assertEquals(0, other.exit(), other.out());
+            assertTrue(ran.out().contains("simpleConnect: Connected to robot.\n"), ran.out());
+            assertTrue(ran.out().contains("simpleConnect: Pose=(1500.00,1500.00,45.00), Trans.  Vel=0.00, Battery=13.00V"
+                    + "\n"), ran.out());
+            assertTrue(other.out().contains("simpleConnect: Pose=(4500.00,4500.00,-135.00)"), other.out());
+            assertTrue(ran.out().endsWith("simpleConnect: Ending robot thread...\nsimpleConnect: Exiting.\n"), ran.out());
+            // 3 s of 100 ms steps, and the connection's first steps
+            assertTrue(report.steps() >= 30 && report.steps() < 40, "steps: " + report.steps());
+        }
+    }
+
+    @Test
+    void simpleConnectReachesThePioneerPortWithRemoteHost() throws Exception {
+        try (PioneerRun run = new PioneerRun(PioneerRun.room(dir), false, code -> { })) {
+            Ran ran = Background.supply("simpleConnect", () -> run(SimpleConnect::main, "-remoteHost", "127.0.0.1",
+                    "-rrtp", String.valueOf(run.ports.portOf("r1")))).get(90, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("Connnecting to robot using TCP connection to 127.0.0.1:"), ran.out());
+            // a Pioneer server's odometry starts where the robot does, as a real Pioneer's
+            assertTrue(ran.out().contains("simpleConnect: Pose=(0.00,0.00,0.00), Trans.  Vel=0.00"), ran.out());
+            assertTrue(ran.out().contains("simpleConnect: Exiting."), ran.out());
+        }
+    }
+
+    @Test
+    void aBadArgumentOrNoServerEndsWithTheReasonAndTheOptions() {
+        Ran bad = run(SimpleConnect::main, "-rrtp", "eighty");
+        assertEquals(1, bad.exit(), bad.out());
+        assertTrue(bad.out().startsWith("Argument given to -rrtp was not an integer it was the string eighty\n"
+                + "simpleConnect: Could not connect to the robot.\n"), bad.out());
+        assertTrue(bad.out().contains("Options for ArRobotConnector"), bad.out());
+        // nobody listens on the port: the connection fails, saying where it looked
+        Ran none = run(SimpleConnect::main, "-rh", "127.0.0.1", "-rrtp", "1");
+        assertEquals(1, none.exit(), none.out());
+        assertTrue(none.out().contains("Could not connect robot to remote host 127.0.0.1, port 1."), none.out());
+        Ran help = run(SimpleConnect::main, "-help", "-rh", "127.0.0.1", "-rrtp", "1");
+        assertEquals(1, help.exit(), help.out());
+        assertTrue(help.out().contains("-remoteHost <remoteHostNameOrIP>"), help.out());
+    }
+
+    @Test
+    void simpleMotionCommandsDrivesTurnsAndDrivesAgainAsTheCommandsSay() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 1000)) {
+            Future<Ran> r1 = run.robot(() -> run(SimpleMotionCommands::main, "r1", "127.0.0.1",
+                    String.valueOf(run.port())));
+            Ran ran = r1.get(120, TimeUnit.SECONDS);
+            RunReport report = run.await();
+            assertEquals(0, ran.exit(), ran.out());
+            assertEquals(2, ran.out().lines().filter(l -> l.startsWith("simpleMotionCommands: Pose=")).count(), ran.out());
+            RobotSummary r = report.robots().get(0);
+            // 0° + 50° − 100° = −50°; about 1.2 m at 250 mm/s and 0.7 m at 150 mm/s, less the ramps
+            assertEquals(-50, r.th(), 2, "heading: " + r);
+            assertEquals(1900, r.distance(), 150, "distance: " + r);
+            assertTrue(ran.out().endsWith("simpleMotionCommands: Exiting.\n"), ran.out());
+        }
+    }
+}
