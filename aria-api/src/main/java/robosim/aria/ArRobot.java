@@ -46,6 +46,8 @@ public class ArRobot extends AbstractRobot {
     private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
     private final TaskList userTasks = new TaskList("user");
     private final RangeDevices rangeDevices = new RangeDevices();
+    private final java.util.concurrent.ConcurrentSkipListMap<Integer, ArLaser> lasers =
+            new java.util.concurrent.ConcurrentSkipListMap<>();
     private volatile long counter;
     private volatile boolean sonarEnabled = true;
     private volatile boolean runningAsync;
@@ -426,6 +428,101 @@ public class ArRobot extends AbstractRobot {
     /** @return the attached range devices */
     public List<ArRangeDevice> getRangeDeviceList() {
         return rangeDevices.list();
+    }
+
+    // ---- lasers, by number (ARIA's laser map) ----
+
+    /**
+     * Adds a laser as its number on the robot, and as a range device, as ARIA's
+     * {@code ArRobot::addLaser} (ArRobot.cpp).
+     *
+     * @param laser  the laser
+     * @param number its number, from 1
+     * @return false if another laser has the number (logged); true if added or already there
+     */
+    public boolean addLaser(ArLaser laser, int number) {
+        return addLaser(laser, number, true);
+    }
+
+    /**
+     * @param laser            the laser
+     * @param number           its number
+     * @param addAsRangeDevice whether it becomes a range device of the robot too
+     * @return false if the laser is null or another has the number (logged)
+     */
+    public boolean addLaser(ArLaser laser, int number, boolean addAsRangeDevice) {
+        if (laser == null) {
+            ArLog.log(ArLog.Normal, "ArRobot::addLaser: Tried to add NULL laser as laser number %d", number);
+            return false;
+        }
+        ArLaser there = lasers.putIfAbsent(number, laser);
+        if (there != null && there != laser) {
+            ArLog.log(ArLog.Normal, "ArRobot::addLaser: Tried to add laser %s as laser number %d but there is already"
+                    + " a laser of that number (called %s)", laser.getName(), number, there.getName());
+            return false;
+        }
+        if (addAsRangeDevice) {
+            remRangeDevice(laser);
+            addRangeDevice(laser);
+        } else {
+            laser.setRobot(this);
+        }
+        return true;
+    }
+
+    /** @param laser a laser to remove, and as a range device @return false if it is not the robot's (logged) */
+    public boolean remLaser(ArLaser laser) {
+        return remLaser(laser, true);
+    }
+
+    /**
+     * @param laser               a laser to remove
+     * @param removeAsRangeDevice whether it stops being a range device too
+     * @return false if it is not the robot's (logged)
+     */
+    public boolean remLaser(ArLaser laser, boolean removeAsRangeDevice) {
+        for (var e : lasers.entrySet()) {
+            if (e.getValue() == laser) {
+                lasers.remove(e.getKey());
+                if (removeAsRangeDevice) {
+                    remRangeDevice(laser);
+                }
+                return true;
+            }
+        }
+        ArLog.log(ArLog.Normal, "ArRobot::remLaser: Could not find laser %s to remove",
+                laser == null ? "NULL" : laser.getName());
+        return false;
+    }
+
+    /** @param number a laser's number @return false if the robot has none of that number (logged) */
+    public boolean remLaser(int number) {
+        ArLaser laser = lasers.get(number);
+        if (laser == null) {
+            ArLog.log(ArLog.Normal, "ArRobot::remLaser: Could not find laser %d to remove", number);
+            return false;
+        }
+        return remLaser(laser, true);
+    }
+
+    /** @param number a laser's number @return the laser, or null */
+    public ArLaser findLaser(int number) {
+        return lasers.get(number);
+    }
+
+    /** @return the lasers by number, ascending; a copy */
+    public java.util.SortedMap<Integer, ArLaser> getLaserMap() {
+        return new java.util.TreeMap<>(lasers);
+    }
+
+    /** @param laser a laser @return whether it is one of the robot's */
+    public boolean hasLaser(ArLaser laser) {
+        return lasers.containsValue(laser);
+    }
+
+    /** @return how many lasers the robot has */
+    public int getNumLasers() {
+        return lasers.size();
     }
 
     /** @return the latest state, for the devices of this package */

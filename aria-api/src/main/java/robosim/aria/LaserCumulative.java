@@ -28,6 +28,8 @@ final class LaserCumulative {
     double cleanDist = DEFAULT_CLEAN_DIST;
     long cleanIntervalMs = DEFAULT_CLEAN_INTERVAL_MS;
     private Long lastCleanMs;
+    /** Added to the time the interval is counted from, when it restarts (ARIA's clean offset), ms. */
+    long cleanOffsetMs;
 
     /**
      * Takes one scan into the cumulative buffer.
@@ -61,10 +63,15 @@ final class LaserCumulative {
         }
     }
 
+    /** Counts the interval from the next scan, as ARIA's {@code resetLastCumulativeCleanTime} counts it from now. */
+    void restartCleanInterval() {
+        lastCleanMs = null;
+    }
+
     /** ARIA cleans when more than the interval has passed since the last clean (or the first scan). */
     private boolean cleanDue(long timeMs) {
         if (lastCleanMs == null) {
-            lastCleanMs = timeMs;
+            lastCleanMs = timeMs + cleanOffsetMs;
         }
         if (cleanIntervalMs <= 0 || timeMs - lastCleanMs > cleanIntervalMs) {
             lastCleanMs = timeMs;
