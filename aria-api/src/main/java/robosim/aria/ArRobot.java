@@ -46,6 +46,7 @@ public class ArRobot extends AbstractRobot {
     private final TaskList sensorInterpTasks = new TaskList("sensor interpretation");
     private final TaskList userTasks = new TaskList("user");
     private final RangeDevices rangeDevices = new RangeDevices();
+    private volatile ArKeyHandler keyHandler;
     private final java.util.concurrent.ConcurrentSkipListMap<Integer, ArLaser> lasers =
             new java.util.concurrent.ConcurrentSkipListMap<>();
     private volatile long counter;
@@ -428,6 +429,45 @@ public class ArRobot extends AbstractRobot {
     /** @return the attached range devices */
     public List<ArRangeDevice> getRangeDeviceList() {
         return rangeDevices.list();
+    }
+
+    // ---- the key handler ----
+
+    /**
+     * Checks the handler's keys each cycle, as a sensor-interpretation task ({@code Key Handler},
+     * position 50); Escape exits the program ({@link Aria#exit}), as ARIA's {@code attachKeyHandler}.
+     *
+     * @param handler the key handler
+     */
+    public void attachKeyHandler(ArKeyHandler handler) {
+        attachKeyHandler(handler, true, true);
+    }
+
+    /**
+     * @param handler            the key handler
+     * @param exitOnEscape       whether Escape ends the program
+     * @param useExitNotShutdown whether it ends by {@link Aria#exit} (else the robot stops running
+     *                           and {@link Aria#shutdown})
+     */
+    public void attachKeyHandler(ArKeyHandler handler, boolean exitOnEscape, boolean useExitNotShutdown) {
+        keyHandler = handler;
+        addSensorInterpTask("Key Handler", 50, handler::checkKeys);
+        if (exitOnEscape) {
+            handler.addKeyHandler(ArKeyHandler.ESCAPE, () -> {
+                ArLog.log(ArLog.Terse, "Escape was pressed, program is exiting.");
+                if (useExitNotShutdown) {
+                    Aria.exit(0);
+                } else {
+                    stopRunning();
+                    Aria.shutdown();
+                }
+            });
+        }
+    }
+
+    /** @return the key handler attached, or null */
+    public ArKeyHandler getKeyHandler() {
+        return keyHandler;
     }
 
     // ---- lasers, by number (ARIA's laser map) ----

@@ -49,6 +49,7 @@ public final class Aria {
         volatile boolean running;
         volatile boolean exiting;
         volatile String directory = "";
+        volatile ArKeyHandler keyHandler;
     }
 
     /** The program of threads that have not called {@link #init} nor been started by one that has. */
@@ -280,5 +281,15 @@ public final class Aria {
     /** @return the program's directory, "" unless set */
     public static String getDirectory() {
         return program().directory;
+    }
+
+    /** @param handler the program's key handler (ARIA keeps one, for programs that look it up) */
+    public static void setKeyHandler(ArKeyHandler handler) {
+        program().keyHandler = handler;
+    }
+
+    /** @return the program's key handler, or null */
+    public static ArKeyHandler getKeyHandler() {
+        return program().keyHandler;
     }
 }
