@@ -431,6 +431,114 @@ public class ArRobot extends AbstractRobot {
         return rangeDevices.list();
     }
 
+    // ---- direct commands (ARIA's com, comInt, com2Bytes, comStr) ----
+
+    /**
+     * Sends a command with no argument, as ARIA's {@code com}: see {@link #comInt(int, int)}.
+     *
+     * @param command one of {@link ArCommands}
+     * @return whether it is one the simulation carries out (else logged and ignored)
+     */
+    public boolean com(int command) {
+        return comInt(command, 0);
+    }
+
+    /**
+     * Sends a Pioneer command with an integer argument, as an ARIA program sends one directly. The
+     * simulation carries out the motion and device commands by the calls that do the same:
+     * {@code ENABLE} ({@link #enableMotors}/{@link #disableMotors}), {@code SETA} and {@code SETRA}
+     * (acceleration, or deceleration when negative), {@code SETV}, {@code SETRV}, {@code SETO}
+     * (odometry to 0, 0, 0), {@code MOVE}, {@code VEL}, {@code RVEL}, {@code ROTATE}, {@code HEAD},
+     * {@code DHEAD}, {@code DCHEAD}, {@code STOP}, {@code VEL2} (left and right bytes, 2 cm/s each),
+     * {@code SONAR}; {@code PULSE}, {@code SOUNDTOG}, {@code SOUND}, {@code SAY} and {@code PLAYLIST}
+     * are taken and do nothing (the simulated robot has no sound). Another command is logged and
+     * ignored.
+     *
+     * @param command one of {@link ArCommands}
+     * @param arg     its argument, a signed 16-bit value as the packet carries it
+     * @return whether the simulation carries it out
+     */
+    public boolean comInt(int command, int arg) {
+        short v = (short) arg;
+        switch (command) {
+            case ArCommands.ENABLE -> {
+                if (v != 0) {
+                    enableMotors();
+                } else {
+                    disableMotors();
+                }
+            }
+            case ArCommands.SETA -> {
+                if (v >= 0) {
+                    setTransAccel(v);
+                } else {
+                    setTransDecel(-v);
+                }
+            }
+            case ArCommands.SETRA -> {
+                if (v >= 0) {
+                    setRotAccel(v);
+                } else {
+                    setRotDecel(-v);
+                }
+            }
+            case ArCommands.SETV -> setTransVelMax(v);
+            case ArCommands.SETRV -> setRotVelMax(v);
+            case ArCommands.SETO -> moveTo(new ArPose());
+            case ArCommands.MOVE -> move(v);
+            case ArCommands.VEL -> setVel(v);
+            case ArCommands.RVEL, ArCommands.ROTATE -> setRotVel(v);
+            case ArCommands.HEAD -> setHeading(v);
+            case ArCommands.DHEAD, ArCommands.DCHEAD -> setDeltaHeading(v);
+            case ArCommands.STOP -> stop();
+            case ArCommands.VEL2 -> setVel2(20.0 * (byte) (v >> 8), 20.0 * (byte) v);
+            case ArCommands.SONAR -> {
+                if (v != 0) {
+                    enableSonar();
+                } else {
+                    disableSonar();
+                }
+            }
+            case ArCommands.PULSE, ArCommands.SOUNDTOG, ArCommands.SOUND, ArCommands.SAY, ArCommands.PLAYLIST -> {
+                // the simulated robot keeps its own connection and has no sound
+            }
+            default -> {
+                ArLog.log(ArLog.Normal, "ArRobot::comInt: command %d is not simulated; ignored", command);
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Sends a command with two bytes, as ARIA's {@code com2Bytes}: the high byte first, as
+     * {@link #comInt(int, int)} takes them.
+     *
+     * @param command one of {@link ArCommands}
+     * @param high    the first byte
+     * @param low     the second byte
+     * @return whether the simulation carries it out
+     */
+    public boolean com2Bytes(int command, int high, int low) {
+        return comInt(command, ((high & 0xff) << 8) | (low & 0xff));
+    }
+
+    /**
+     * Sends a command with a string, as ARIA's {@code comStr}: only {@code SAY} takes one, and the
+     * simulated robot has no sound.
+     *
+     * @param command one of {@link ArCommands}
+     * @param text    the string
+     * @return whether the simulation carries it out
+     */
+    public boolean comStr(int command, String text) {
+        if (command == ArCommands.SAY) {
+            return true;
+        }
+        ArLog.log(ArLog.Normal, "ArRobot::comStr: command %d is not simulated; ignored", command);
+        return false;
+    }
+
     // ---- the key handler ----
 
     /**
