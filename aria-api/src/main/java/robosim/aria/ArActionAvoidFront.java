@@ -26,6 +26,25 @@ public class ArActionAvoidFront extends ArAction {
         this("avoid front obstacles", 450, 200, 15);
     }
 
+    /** @param name the action's name; the rest ARIA's defaults (450 mm, 200 mm/s, 15°), as C++'s default arguments */
+    public ArActionAvoidFront(String name) {
+        this(name, 450, 200, 15);
+    }
+
+    /** @param name the action's name @param obstacleDistance distance at which to turn, mm; 200 mm/s, 15° */
+    public ArActionAvoidFront(String name, double obstacleDistance) {
+        this(name, obstacleDistance, 200, 15);
+    }
+
+    /**
+     * @param name             the action's name
+     * @param obstacleDistance distance at which to turn, mm
+     * @param avoidVelocity    speed while avoiding, mm/s; it turns 15°
+     */
+    public ArActionAvoidFront(String name, double obstacleDistance, double avoidVelocity) {
+        this(name, obstacleDistance, avoidVelocity, 15);
+    }
+
     /**
      * @param name             the action's name
      * @param obstacleDistance distance at which to turn, mm

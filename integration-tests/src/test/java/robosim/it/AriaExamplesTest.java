@@ -20,6 +20,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
+import robosim.examples.aria.Wander;
 
 /**
  * AriaCoda's examples ported to Java ({@code examples/aria}), run as ARIA programs run: through
@@ -45,23 +46,40 @@ class AriaExamplesTest {
         }
     }
 
-    /** Runs an example's main as its program, its log and its exit caught. */
+    /**
+     * Runs an example's main as its program, its log and its exit caught: the first code given to
+     * Aria.exit, from whichever of its threads (a key handler's Escape exits from the robot's cycle).
+     */
     static Ran run(Consumer<String[]> main, String... args) {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         ArLog.setStream(new PrintStream(bytes, true, StandardCharsets.UTF_8));
-        Aria.setExitHandler(code -> {
-            throw new Exited(code);
+        java.util.concurrent.atomic.AtomicInteger code = new java.util.concurrent.atomic.AtomicInteger(-1);
+        Aria.setExitHandler(c -> {
+            code.compareAndSet(-1, c);
+            throw new Exited(c);
         });
-        int code = -1;
         try {
             main.accept(args);
         } catch (Exited e) {
-            code = e.code;
+            // the program ended here
         } finally {
             ArLog.setStream(null);
             Aria.setExitHandler(null);
         }
-        return new Ran(bytes.toString(StandardCharsets.UTF_8), code);
+        return new Ran(bytes.toString(StandardCharsets.UTF_8), code.get());
+    }
+
+    /** Runs an example whose key handler reads standard input, with these keys on it. */
+    static Ran runWithKeys(String keys, Consumer<String[]> main, String... args) {
+        synchronized (System.class) {
+            java.io.InputStream in = System.in;
+            System.setIn(new java.io.ByteArrayInputStream(keys.getBytes(StandardCharsets.ISO_8859_1)));
+            try {
+                return run(main, args);
+            } finally {
+                System.setIn(in);
+            }
+        }
     }
 
     @Test
@@ -129,6 +147,37 @@ class AriaExamplesTest {
             assertEquals(-50, r.th(), 2, "heading: " + r);
             assertEquals(1900, r.distance(), 150, "distance: " + r);
             assertTrue(ran.out().endsWith("simpleMotionCommands: Exiting.\n"), ran.out());
+        }
+    }
+
+    @Test
+    void wanderDrivesAboutTheRoomWithItsActionsAndTheLaserUntilTheRunEnds() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 600)) {
+            Future<Ran> r1 = run.robot(() -> runWithKeys("", Wander::main, "r1", "127.0.0.1",
+                    String.valueOf(run.port()), "-connectLaser"));
+            RunReport report = run.await();
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(!ran.out().contains("unable to connect to requested lasers"), ran.out());
+            RobotSummary r = report.robots().get(0);
+            // 60 s at up to 400 mm/s in a 10 m room: it drives, and turns before the walls
+            assertTrue(r.distance() > 5000, "distance: " + r);
+            assertEquals(0, r.collisions(), "collisions: " + r);
+        }
+    }
+
+    @Test
+    void escapeEndsWander() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 600)) {
+            Future<Ran> r1 = run.robot(() -> runWithKeys("\u001b", Wander::main, "r1", "127.0.0.1",
+                    String.valueOf(run.port())));
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            RunReport report = run.await();
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("Escape was pressed, program is exiting."), ran.out());
+            assertTrue(report.steps() < 100, "it left at once: " + report.steps());
         }
     }
 }
