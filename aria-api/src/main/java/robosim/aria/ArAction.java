@@ -29,7 +29,9 @@ public abstract class ArAction {
     private final String name;
     private final String description;
     private volatile boolean active;
-    private volatile ArRobot robot;
+    /** The robot the action was added to, or null: ARIA's {@code myRobot}, for actions ported from C++. */
+    protected volatile ArRobot myRobot;
+    private final java.util.List<ArArg> args = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /** @param name the action's name, as {@link ArRobot#findAction} finds it */
     protected ArAction(String name) {
@@ -85,12 +87,49 @@ public abstract class ArAction {
      * @param robot the robot, or null
      */
     public void setRobot(ArRobot robot) {
-        this.robot = robot;
+        this.myRobot = robot;
     }
 
     /** @return the robot the action was added to, or null */
     public ArRobot getRobot() {
-        return robot;
+        return myRobot;
+    }
+
+    /**
+     * Adds a parameter others may find and set, as ARIA's {@code setNextArgument}.
+     *
+     * @param arg the parameter
+     */
+    protected void setNextArgument(ArArg arg) {
+        args.add(arg);
+    }
+
+    /** @return how many parameters the action gave */
+    public int getNumArgs() {
+        return args.size();
+    }
+
+    /**
+     * @param number a parameter's number, from 0
+     * @return it, or null
+     */
+    public ArArg getArg(int number) {
+        return number >= 0 && number < args.size() ? args.get(number) : null;
+    }
+
+    /** Logs the action's name, description and parameters, as ARIA's {@code ArAction::log}. */
+    public void log() {
+        ArLog.log(ArLog.Terse, "Action %s isActive %b", name, active);
+        if (!description.isEmpty()) {
+            ArLog.log(ArLog.Terse, "Action description:\n%s", description);
+        }
+        if (!args.isEmpty()) {
+            ArLog.log(ArLog.Terse, "Parameters:");
+            for (int i = 0; i < args.size(); i++) {
+                ArLog.log(ArLog.Terse, "Parameter #%d:", i);
+                args.get(i).log();
+            }
+        }
     }
 
     /** @return what the action wanted at its last firing, or null if it keeps none */

@@ -300,6 +300,16 @@ public class ArRobot extends AbstractRobot {
         waitForRunExit();
     }
 
+    /**
+     * ARIA's {@code run(stopRunIfNotConnected)}: as {@link #run()}; the cycle always stops when the
+     * robot is disconnected.
+     *
+     * @param stopRunIfNotConnected ARIA's: whether the cycle stops without a connection
+     */
+    public void run(boolean stopRunIfNotConnected) {
+        run();
+    }
+
     /** Waits, yielded, until the robot is disconnected. */
     public void waitForRunExit() {
         while (isConnected()) {

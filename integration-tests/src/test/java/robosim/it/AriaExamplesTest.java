@@ -18,6 +18,7 @@ import robosim.aria.Aria;
 import robosim.cli.Background;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
+import robosim.examples.aria.ActionExample;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
 import robosim.examples.aria.Wander;
@@ -178,6 +179,22 @@ class AriaExamplesTest {
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(ran.out().contains("Escape was pressed, program is exiting."), ran.out());
             assertTrue(report.steps() < 100, "it left at once: " + report.steps());
+        }
+    }
+
+    @Test
+    void actionExamplesGoAndTurnDriveTheRoomWithoutTouchingAWall() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 900)) {
+            Future<Ran> r1 = run.robot(() -> run(ActionExample::main, "r1", "127.0.0.1", String.valueOf(run.port())));
+            RunReport report = run.await();
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("actionExample: Connected to robot."), ran.out());
+            RobotSummary r = report.robots().get(0);
+            // Go drives at up to 500 mm/s and stops 350 mm short; Turn turns away within 400 mm
+            assertTrue(r.distance() > 3000, "distance: " + r);
+            assertEquals(0, r.collisions(), "collisions: " + r);
         }
     }
 }
