@@ -89,7 +89,7 @@ class SameRunTest {
     @ParameterizedTest(name = "in-process {0}")
     @ValueSource(booleans = {false, true})
     void aGoldFinderTeamTalkingAndDrawingInAMaze(boolean inProcess) throws Exception {
-        assertEquals("201 snapshots, 1ca952d0d09f4f84dc36c74e9d5680ab9e73b79a668f4b4c42494da69c463cd3",
+        assertEquals("201 snapshots, 085cc715cd87df6ffecf0ae73bfd35a33eca725f12d9c66a06ef8887742c786b",
                 digest(WORLDS.resolve("maze-small.xml"), 3, 200,
                 List.of("r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8"), (name, port) -> {
                     Gold g = new Gold(name, "127.0.0.1", Integer.parseInt(port));

@@ -74,7 +74,7 @@ final class Wayfinder {
         if (!map.isSensed(x, y)) {
             return -1; // it drives into a frontier: no way on is known until it is sensed; the plan stands
         }
-        TeamPlan.Plan plan = TeamPlan.plan(map, rank, x, y, order, robot.getStep());
+        TeamPlan.Plan plan = TeamPlan.plan(map, rank, x, y, course.ahead().size(), order, robot.getStep());
         long goldCell = heat.goldCell();
         if (goldCell >= 0 && goldCell != from) {
             plan = towardsGold(x, y, goldCell, plan);

@@ -100,6 +100,37 @@ class TeamPlanTest {
     }
 
     @Test
+    void aTeammatesWayIsCountedThroughTheCellsItHasCommittedTo() {
+        // a corridor from the frontier (0, 0) east to the dead end (4, 0)
+        MazeKnowledge map = new MazeKnowledge();
+        map.sensed(1, 0, W | E);
+        map.sensed(2, 0, W | E);
+        map.sensed(3, 0, W | E);
+        map.sensed(4, 0, W);
+        map.mate("r1", claiming(2, 0, key(0, 0), 5));
+        assertEquals(2, TeamPlan.cellsTo(map, map.mate("r1"), key(0, 0)));
+        assertFalse(TeamPlan.wins(map, 2, 3, key(0, 0), 6), "r1 stands two cells from it, r2 three");
+        // r1 has committed to drive on east to (3, 0): it gets to the frontier after r2
+        map.mate("r1", new MazeKnowledge.Mate(2, 0, List.of(key(3, 0)), 0, 0, 5));
+        assertEquals(4, TeamPlan.cellsTo(map, map.mate("r1"), key(0, 0)));
+        assertTrue(TeamPlan.wins(map, 2, 3, key(0, 0), 6));
+    }
+
+    @Test
+    void aRobotWithNothingToClaimFollowsAClaimNoNearerTeammateFollows() {
+        // r1 and r3 stand in the junction and claim a branch each; r2, behind, can claim neither
+        MazeKnowledge map = junction();
+        map.mate("r1", claiming(1, 0, key(2, 0), 5));
+        map.mate("r3", claiming(1, 0, key(1, 1), 5));
+        assertEquals(new TeamPlan.Plan(key(2, 0), false), TeamPlan.plan(map, 2, 0, 0, EAST_FIRST, 6),
+                "both branches as near: the direction order decides");
+        // r4, in the junction too, already follows r1 east
+        map.mate("r4", new MazeKnowledge.Mate(1, 0, List.of(), NONE, NONE, 5, -1, key(2, 0)));
+        assertEquals(new TeamPlan.Plan(key(1, 1), false), TeamPlan.plan(map, 2, 0, 0, EAST_FIRST, 6),
+                "r4 is at hand where r1's branch forks; r2 follows r3");
+    }
+
+    @Test
     void withNothingLeftToExploreThereIsNoPlan() {
         MazeKnowledge map = new MazeKnowledge();
         map.sensed(0, 0, E);
