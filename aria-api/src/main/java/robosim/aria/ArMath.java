@@ -286,7 +286,15 @@ public final class ArMath {
 
     /** @return the generator the calling thread draws from (see the class comment) */
     private static Random generator() {
-        AbstractRobot robot = AbstractRobot.current();
+        return generatorFor(AbstractRobot.current());
+    }
+
+    /**
+     * @param robot the robot whose thread draws, or null
+     * @return its generator, made for its run's seed on first use; the fixed-seed one for null or a
+     *         robot not connected
+     */
+    static Random generatorFor(AbstractRobot robot) {
         if (robot == null || !robot.isConnected()) {
             return OUTSIDE;
         }

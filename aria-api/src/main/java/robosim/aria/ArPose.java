@@ -296,8 +296,8 @@ public final class ArPose {
     /**
      * As ARIA's {@code isInsidePolygon} (ariaUtil.h): the even-odd rule, by crossings of a ray from
      * this position towards +x; the vertices in order, the last joined to the first; headings ignored.
-     * Points on the boundary fall as ARIA's test makes them fall (it is kept as it is); fewer than
-     * three vertices hold nothing.
+     * Points on the boundary fall as ARIA's test makes them fall (it is kept as it is, degenerate
+     * polygons included); no vertices hold nothing.
      *
      * @param vertices the polygon's corners
      * @return whether this position is inside
