@@ -61,6 +61,31 @@ final class ArRangeBuffer {
         readings.removeIf(r -> r.closerThan(x, y, dist));
     }
 
+    /**
+     * ARIA's {@code addReadingConditional}'s test (ArRangeBuffer.cpp): the first reading, newest
+     * first, strictly closer than {@code dist} to (x, y) gets the time {@code nowMs}, keeping its place.
+     *
+     * @return whether there was one
+     */
+    boolean refreshWithin(double x, double y, double dist, long nowMs) {
+        List<ArPoseWithTime> all = new ArrayList<>(readings);
+        for (int i = 0; i < all.size(); i++) {
+            ArPoseWithTime r = all.get(i);
+            if (r.closerThan(x, y, dist)) {
+                all.set(i, new ArPoseWithTime(r.x(), r.y(), nowMs, r.robotPose()));
+                readings.clear();
+                readings.addAll(all);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** @return the readings, newest first, as a new list */
+    List<ArPoseWithTime> readings() {
+        return new ArrayList<>(readings);
+    }
+
     /** @return whether a reading lies strictly closer than {@code dist} to (x, y) */
     boolean anyCloserThan(double x, double y, double dist) {
         for (ArPoseWithTime r : readings) {

@@ -1,7 +1,9 @@
 package robosim.aria;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.ReentrantLock;
 import robosim.protocol.RobotState;
 
 /**
@@ -21,6 +23,11 @@ import robosim.protocol.RobotState;
  * <p>Times are the simulated time of the state the robot's cycle delivered; positions are the
  * robot's odometry pose in that state. A device with no robot, or before the first state, prunes
  * nothing by age or distance and answers queries from the origin, heading 0.
+ *
+ * <p>Each call is atomic on its own. {@link #lockDevice()} (ARIA's device lock) holds off the
+ * device's update in the robot's cycle, so that several calls read one cycle's readings; the cycle
+ * holds the robot's lock while it waits for it, so, as in ARIA, a thread holding the device lock
+ * must not wait for the robot's.
  */
 public class ArRangeDevice {
     /** The current buffer's size when none is given: ARIA's sonar default. */
@@ -37,6 +44,10 @@ public class ArRangeDevice {
     public static final double DEFAULT_MIN_DIST_BETWEEN_CUMULATIVE = 50;
     /** The position of the device's sensor-interpretation task (ARIA's range devices use 50). */
     static final int TASK_POSITION = 50;
+    /** ARIA's {@code ArMutex::STATUS_FAILED}: what {@link #unlockDevice()} answers when the thread does not hold the lock. */
+    public static final int STATUS_FAILED = 2;
+    /** ARIA's {@code ArMutex::STATUS_ALREADY_LOCKED}: what {@link #tryLockDevice()} answers when another thread holds the lock. */
+    public static final int STATUS_ALREADY_LOCKED = 3;
 
     private static final AtomicLong IDS = new AtomicLong();
 
@@ -51,6 +62,10 @@ public class ArRangeDevice {
     private int maxSecondsToKeepCumulative = DEFAULT_MAX_SECONDS_TO_KEEP_CUMULATIVE;
     private double maxDistToKeepCumulative = DEFAULT_MAX_DIST_TO_KEEP_CUMULATIVE;
     private double minDistBetweenCumulative = DEFAULT_MIN_DIST_BETWEEN_CUMULATIVE;
+    private double minDistBetweenCurrent;
+    private double maxInsertDistCumulative;
+    private final boolean locationDependent;
+    private final ReentrantLock deviceLock = new ReentrantLock();
 
     /**
      * A device with buffers of {@value #DEFAULT_CURRENT_BUFFER_SIZE} and
@@ -70,15 +85,119 @@ public class ArRangeDevice {
      * @param cumulativeBufferSize how many cumulative readings it keeps (0: none)
      */
     public ArRangeDevice(String name, double maxRange, int currentBufferSize, int cumulativeBufferSize) {
+        this(name, maxRange, currentBufferSize, cumulativeBufferSize, false);
+    }
+
+    private ArRangeDevice(String name, double maxRange, int currentBufferSize, int cumulativeBufferSize,
+            boolean locationDependent) {
         if (name == null) {
             throw new IllegalArgumentException("null was supplied for name: a range device needs a name");
         }
         this.name = name;
+        this.locationDependent = locationDependent;
         // tasks are named per device, so two devices of the same name do not replace each other's
         this.taskName = name + " range device #" + IDS.incrementAndGet();
         this.current = new ArRangeBuffer("current", currentBufferSize);
         this.cumulative = new ArRangeBuffer("cumulative", cumulativeBufferSize);
         this.maxRange = checkedMaxRange(maxRange);
+    }
+
+    /**
+     * ARIA's constructor ({@code ArRangeDevice(currentBufferSize, cumulativeBufferSize, name,
+     * maxRange, maxSecondsToKeepCurrent, maxSecondsToKeepCumulative, maxDistToKeepCumulative,
+     * locationDependent)}, ArRangeDevice.cpp), with ARIA's rules: white space in the name becomes
+     * '_'; the minimum distances between readings and the maximum insertion distance start at 0 (off);
+     * times and distances of 0 or less keep readings for ever and at any distance.
+     *
+     * @param currentBufferSize          how many current readings it keeps
+     * @param cumulativeBufferSize       how many cumulative readings it keeps
+     * @param name                       the device's name
+     * @param maxRange                   its maximum range, mm, greater than 0
+     * @param maxSecondsToKeepCurrent    how long current readings are kept, s
+     * @param maxSecondsToKeepCumulative how long cumulative readings are kept, s
+     * @param maxDistToKeepCumulative    how far from the robot cumulative readings are kept, mm
+     * @param locationDependent          whether the device's readings depend on where the robot
+     *                                   thinks it is (a map's forbidden lines); see {@link #isLocationDependent()}
+     */
+    public ArRangeDevice(int currentBufferSize, int cumulativeBufferSize, String name, int maxRange,
+            int maxSecondsToKeepCurrent, int maxSecondsToKeepCumulative, double maxDistToKeepCumulative,
+            boolean locationDependent) {
+        this(name == null ? null : name.replaceAll("[ \\t\\n\\x0B\\f\\r]", "_"), maxRange, currentBufferSize,
+                cumulativeBufferSize, locationDependent);
+        this.maxSecondsToKeepCurrent = maxSecondsToKeepCurrent;
+        this.maxSecondsToKeepCumulative = maxSecondsToKeepCumulative;
+        this.maxDistToKeepCumulative = maxDistToKeepCumulative;
+        this.minDistBetweenCumulative = 0;
+    }
+
+    /**
+     * ARIA's constructor with its defaults: readings kept for ever and at any distance, not location
+     * dependent.
+     *
+     * @param currentBufferSize    how many current readings it keeps
+     * @param cumulativeBufferSize how many cumulative readings it keeps
+     * @param name                 the device's name
+     * @param maxRange             its maximum range, mm
+     */
+    public ArRangeDevice(int currentBufferSize, int cumulativeBufferSize, String name, int maxRange) {
+        this(currentBufferSize, cumulativeBufferSize, name, maxRange, 0, 0, 0, false);
+    }
+
+    /**
+     * ARIA's constructor with its defaults from {@code maxSecondsToKeepCumulative} on.
+     *
+     * @param currentBufferSize       how many current readings it keeps
+     * @param cumulativeBufferSize    how many cumulative readings it keeps
+     * @param name                    the device's name
+     * @param maxRange                its maximum range, mm
+     * @param maxSecondsToKeepCurrent how long current readings are kept, s
+     */
+    public ArRangeDevice(int currentBufferSize, int cumulativeBufferSize, String name, int maxRange,
+            int maxSecondsToKeepCurrent) {
+        this(currentBufferSize, cumulativeBufferSize, name, maxRange, maxSecondsToKeepCurrent, 0, 0, false);
+    }
+
+    /**
+     * ARIA's constructor with its defaults from {@code maxDistToKeepCumulative} on.
+     *
+     * @param currentBufferSize          how many current readings it keeps
+     * @param cumulativeBufferSize       how many cumulative readings it keeps
+     * @param name                       the device's name
+     * @param maxRange                   its maximum range, mm
+     * @param maxSecondsToKeepCurrent    how long current readings are kept, s
+     * @param maxSecondsToKeepCumulative how long cumulative readings are kept, s
+     */
+    public ArRangeDevice(int currentBufferSize, int cumulativeBufferSize, String name, int maxRange,
+            int maxSecondsToKeepCurrent, int maxSecondsToKeepCumulative) {
+        this(currentBufferSize, cumulativeBufferSize, name, maxRange, maxSecondsToKeepCurrent,
+                maxSecondsToKeepCumulative, 0, false);
+    }
+
+    /**
+     * ARIA's constructor, not location dependent.
+     *
+     * @param currentBufferSize          how many current readings it keeps
+     * @param cumulativeBufferSize       how many cumulative readings it keeps
+     * @param name                       the device's name
+     * @param maxRange                   its maximum range, mm
+     * @param maxSecondsToKeepCurrent    how long current readings are kept, s
+     * @param maxSecondsToKeepCumulative how long cumulative readings are kept, s
+     * @param maxDistToKeepCumulative    how far from the robot cumulative readings are kept, mm
+     */
+    public ArRangeDevice(int currentBufferSize, int cumulativeBufferSize, String name, int maxRange,
+            int maxSecondsToKeepCurrent, int maxSecondsToKeepCumulative, double maxDistToKeepCumulative) {
+        this(currentBufferSize, cumulativeBufferSize, name, maxRange, maxSecondsToKeepCurrent,
+                maxSecondsToKeepCumulative, maxDistToKeepCumulative, false);
+    }
+
+    /**
+     * ARIA's {@code isLocationDependent}: whether the device's readings depend on where the robot
+     * thinks it is (ARIA's map-based devices); set by ARIA's constructor, false otherwise.
+     *
+     * @return whether the device is location dependent
+     */
+    public boolean isLocationDependent() {
+        return locationDependent;
     }
 
     /** @return the device's name */
@@ -161,6 +280,22 @@ public class ArRangeDevice {
     }
 
     /**
+     * ARIA's {@code addReading(x, y, wasAdded)}: as {@link #addReading(double, double)}, telling
+     * whether the reading went into the current buffer (it does not when
+     * {@link #getMinDistBetweenCurrent()} refreshed an older one instead).
+     *
+     * @param x        the echo's global x, mm
+     * @param y        the echo's global y, mm
+     * @param wasAdded null, or an array whose element 0 receives whether it was added
+     */
+    public synchronized void addReading(double x, double y, boolean[] wasAdded) {
+        boolean added = addReadingAt(x, y, robotPose(), nowMs());
+        if (wasAdded != null) {
+            wasAdded[0] = added;
+        }
+    }
+
+    /**
      * Adds a reading taken at a known pose and time: for devices that add many readings from one
      * cycle's state.
      *
@@ -170,16 +305,27 @@ public class ArRangeDevice {
      * @param timeMs simulated time when it was taken
      */
     protected synchronized void addReading(double x, double y, ArPose pose, long timeMs) {
+        addReadingAt(x, y, pose, timeMs);
+    }
+
+    /** @return whether the reading went into the current buffer */
+    private boolean addReadingAt(double x, double y, ArPose pose, long timeMs) {
         ArPoseWithTime reading = new ArPoseWithTime(x, y, timeMs, pose);
-        current.add(reading);
+        boolean added = !(minDistBetweenCurrent > 0 && current.refreshWithin(x, y, minDistBetweenCurrent, timeMs));
+        if (added) {
+            current.add(reading);
+        }
         if (cumulative.getSize() == 0
-                || maxDistToKeepCumulative > 0 && reading.fartherThan(pose.getX(), pose.getY(), maxDistToKeepCumulative)) {
-            return;
+                || maxDistToKeepCumulative > 0 && reading.fartherThan(pose.getX(), pose.getY(), maxDistToKeepCumulative)
+                || maxInsertDistCumulative > 0 && robot != null
+                        && reading.fartherThan(pose.getX(), pose.getY(), maxInsertDistCumulative)) {
+            return added;
         }
         if (minDistBetweenCumulative > 0) {
             cumulative.removeWithin(x, y, minDistBetweenCumulative);
         }
         cumulative.add(reading);
+        return added;
     }
 
     /**
@@ -225,6 +371,48 @@ public class ArRangeDevice {
     public synchronized List<ArPose> getCumulativeBuffer() {
         prune();
         return cumulative.poses();
+    }
+
+    /**
+     * ARIA's {@code getCurrentReadings}: the current readings with their times, newest first, pruned
+     * first.
+     *
+     * @return a copy of the buffer
+     */
+    public synchronized List<ArPoseWithTime> getCurrentReadings() {
+        prune();
+        return current.readings();
+    }
+
+    /**
+     * ARIA's {@code getCumulativeReadings}: the cumulative readings with their times, newest first,
+     * pruned first.
+     *
+     * @return a copy of the buffer
+     */
+    public synchronized List<ArPoseWithTime> getCumulativeReadings() {
+        prune();
+        return cumulative.readings();
+    }
+
+    /**
+     * ARIA's {@code clearCumulativeOlderThan}: removes the cumulative readings taken more than
+     * {@code milliSeconds} before now (simulated time); exactly that old stays.
+     *
+     * @param milliSeconds the age, ms
+     */
+    public synchronized void clearCumulativeOlderThan(int milliSeconds) {
+        cumulative.removeOlderThan(nowMs(), milliSeconds);
+    }
+
+    /**
+     * ARIA's {@code clearCumulativeOlderThanSeconds}: {@link #clearCumulativeOlderThan} of
+     * {@code seconds · 1000} ms.
+     *
+     * @param seconds the age, s
+     */
+    public synchronized void clearCumulativeOlderThanSeconds(int seconds) {
+        clearCumulativeOlderThan(seconds * 1000);
     }
 
     /** Empties the current buffer. */
@@ -277,6 +465,33 @@ public class ArRangeDevice {
     /** @param mm how close a new cumulative reading replaces an old one; 0 or less: never */
     public synchronized void setMinDistBetweenCumulative(double mm) {
         minDistBetweenCumulative = mm;
+    }
+
+    /**
+     * @return ARIA's {@code getMinDistBetweenCurrent}: a new current reading closer than this to an
+     *         older one refreshes the older one's time instead of being added; 0 (ARIA's default): off
+     */
+    public synchronized double getMinDistBetweenCurrent() {
+        return minDistBetweenCurrent;
+    }
+
+    /** @param mm ARIA's {@code setMinDistBetweenCurrent}: see {@link #getMinDistBetweenCurrent()}; 0 or less: off */
+    public synchronized void setMinDistBetweenCurrent(double mm) {
+        minDistBetweenCurrent = mm;
+    }
+
+    /**
+     * @return ARIA's {@code getMaxInsertDistCumulative}: a reading farther than this from the robot
+     *         goes into the current buffer only, not the cumulative one (for a device with a robot);
+     *         0 (ARIA's default): off
+     */
+    public synchronized double getMaxInsertDistCumulative() {
+        return maxInsertDistCumulative;
+    }
+
+    /** @param mm ARIA's {@code setMaxInsertDistCumulative}: see {@link #getMaxInsertDistCumulative()}; 0 or less: off */
+    public synchronized void setMaxInsertDistCumulative(double mm) {
+        maxInsertDistCumulative = mm;
     }
 
     // ---- queries ----
@@ -440,9 +655,124 @@ public class ArRangeDevice {
         return rawReadings;
     }
 
+    /**
+     * ARIA's {@code getAdjustedRawReadings}: the raw readings corrected for the robot's odometry
+     * delay. ARIA makes them only for a robot with an odometry delay; RoboSim's readings and poses
+     * come from the same step, with no delay, so, as ARIA answers then, there are none.
+     *
+     * @return null
+     */
+    public List<ArSensorReading> getAdjustedRawReadings() {
+        return null;
+    }
+
     /** @param readings the device's latest readings, kept as they are (callers pass a fresh list) */
     protected void setRawReadings(List<ArSensorReading> readings) {
         rawReadings = List.copyOf(readings);
+    }
+
+    // ---- the device lock ----
+
+    /**
+     * ARIA's {@code lockDevice}: holds off the device's update in the robot's cycle until
+     * {@link #unlockDevice()}; the lock is reentrant, as ARIA's is.
+     *
+     * @return 0
+     */
+    public int lockDevice() {
+        deviceLock.lock();
+        return 0;
+    }
+
+    /** @return 0 if the lock was taken, {@link #STATUS_ALREADY_LOCKED} if another thread holds it (ARIA's {@code tryLockDevice}) */
+    public int tryLockDevice() {
+        return deviceLock.tryLock() ? 0 : STATUS_ALREADY_LOCKED;
+    }
+
+    /** @return 0, or {@link #STATUS_FAILED} if the calling thread does not hold the lock (ARIA's {@code unlockDevice}) */
+    public int unlockDevice() {
+        if (!deviceLock.isHeldByCurrentThread()) {
+            return STATUS_FAILED;
+        }
+        deviceLock.unlock();
+        return 0;
+    }
+
+    /** @return as {@link #lockDevice()} (ARIA's {@code lock}) */
+    public int lock() {
+        return lockDevice();
+    }
+
+    /** @return as {@link #tryLockDevice()} (ARIA's {@code tryLock}) */
+    public int tryLock() {
+        return tryLockDevice();
+    }
+
+    /** @return as {@link #unlockDevice()} (ARIA's {@code unlock}) */
+    public int unlock() {
+        return unlockDevice();
+    }
+
+    // ---- logging ----
+
+    /**
+     * ARIA's {@code logConfig}: one line with the device's name and settings, to {@link ArLog}.
+     *
+     * @param level  the line's level
+     * @param prefix text before the name
+     */
+    public synchronized void logConfig(ArLog.LogLevel level, String prefix) {
+        ArLog.log(level, "%s%s MaxRange=%d MaxSecondsToKeepCurrent=%d MinDistBetweenCurrent=%s "
+                + "MaxSecondsToKeepCumulative=%d MaxDistToKeepCumulative=%s MinDistBetweenCumulative=%s "
+                + "MaxInsertDistCumulative=%s IsLocationDependent=%d HaveRawReadings=%d",
+                prefix, name, Math.round(maxRange), maxSecondsToKeepCurrent, g(minDistBetweenCurrent),
+                maxSecondsToKeepCumulative, g(maxDistToKeepCumulative), g(minDistBetweenCumulative),
+                g(getMaxInsertDistCumulative()), locationDependent ? 1 : 0, rawReadings.isEmpty() ? 0 : 1);
+    }
+
+    /** ARIA's {@code logConfig()} with its defaults: level Normal, no prefix. */
+    public void logConfig() {
+        logConfig(ArLog.Normal, "");
+    }
+
+    /**
+     * ARIA's {@code logData}: the buffers' readings, then the raw readings' ranges if there are any,
+     * to {@link ArLog}.
+     *
+     * @param level  the lines' level
+     * @param prefix text before the name
+     */
+    public synchronized void logData(ArLog.LogLevel level, String prefix) {
+        prune();
+        logBuffer(level, prefix, "Current", current.readings());
+        logBuffer(level, prefix, "Cumulative", cumulative.readings());
+        List<ArSensorReading> raw = rawReadings;
+        if (!raw.isEmpty()) {
+            ArPose p = robotPose();
+            StringBuilder ranges = new StringBuilder();
+            for (ArSensorReading r : raw) {
+                ranges.append(r.getRange()).append(' ');
+            }
+            ArLog.log(level, "%s%s Raw: %d CurrentRobotPose: (%.0f, %.0f) Ranges: %s", prefix, name, raw.size(),
+                    p.getX(), p.getY(), ranges);
+        }
+    }
+
+    /** ARIA's {@code logData()} with its defaults: level Normal, no prefix. */
+    public void logData() {
+        logData(ArLog.Normal, "");
+    }
+
+    private void logBuffer(ArLog.LogLevel level, String prefix, String which, List<ArPoseWithTime> readings) {
+        StringBuilder b = new StringBuilder();
+        for (ArPoseWithTime r : readings) {
+            b.append(String.format(java.util.Locale.ROOT, "(%.0f, %.0f) ", r.x(), r.y()));
+        }
+        ArLog.log(level, "%s%s %s: %d readings: %s", prefix, name, which, readings.size(), b);
+    }
+
+    private static String g(double v) {
+        return String.format(java.util.Locale.ROOT, "%g", v);
     }
 
     // ---- the cycle ----
@@ -454,9 +784,16 @@ public class ArRangeDevice {
     protected void processReadings() {
     }
 
-    private synchronized void sensorInterp() {
-        processReadings();
-        prune();
+    private void sensorInterp() {
+        deviceLock.lock();
+        try {
+            synchronized (this) {
+                processReadings();
+                prune();
+            }
+        } finally {
+            deviceLock.unlock();
+        }
     }
 
     private void prune() {

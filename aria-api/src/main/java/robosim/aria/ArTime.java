@@ -25,6 +25,20 @@ public final class ArTime {
         setToNow();
     }
 
+    /**
+     * @param ms simulated ms since the start of the run
+     * @return a time set to them, for readings stamped in ms
+     */
+    static ArTime ofMs(long ms) {
+        ArTime t = new ArTime(0L);
+        t.ms = ms;
+        return t;
+    }
+
+    /** A time not set from the clock, for {@link #ofMs}. */
+    private ArTime(long ignored) {
+    }
+
     /** @param other a time to copy */
     public ArTime(ArTime other) {
         this.ms = other.ms;
