@@ -19,6 +19,7 @@ import robosim.cli.Background;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.examples.aria.ActionExample;
+import robosim.examples.aria.LaserConnect;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
 import robosim.examples.aria.Wander;
@@ -195,6 +196,30 @@ class AriaExamplesTest {
             // Go drives at up to 500 mm/s and stops 350 mm short; Turn turns away within 400 mm
             assertTrue(r.distance() > 3000, "distance: " + r);
             assertEquals(0, r.collisions(), "collisions: " + r);
+        }
+    }
+
+    @Test
+    void laserConnectConnectsTheLaserTheCommandLineAsksForAndPrintsItsClosestReading() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 120)) {
+            Future<Ran> r1 = run.robot(() -> run(LaserConnect::main, "r1", "127.0.0.1", String.valueOf(run.port()),
+                    "-connectLaser", "-laserDegrees", "100"));
+            run.await();
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("Connected to all lasers."), ran.out());
+            // r1 at (3000, 3000) faces +x; the boundary's inner faces are at 100 and 9900. In 100° of
+            // view the nearest is the wall on the right, at the view's edge: the beam at -50° from the
+            // laser (18 mm ahead) meets y = 100 2900 / sin 50° = 3786 mm out, at (5451, 100), 3797 mm
+            // from the centre, which polar readings are measured from. The 20 beams from about 30° to
+            // 50° left reach 8 m (the far corner) without a hit: 81 of 101.
+            double beam = 2900 / Math.sin(Math.toRadians(50));
+            double closest = Math.hypot(18 + beam * Math.cos(Math.toRadians(50)), 2900);
+            assertTrue(ran.out().contains(String.format(java.util.Locale.ROOT, "Laser #1 (lms2xx_1): connected. Have 81"
+                    + " 'current' readings. Closest reading is at -50 degrees and is %.3f", closest / 1000)), ran.out());
+            assertEquals(3, ran.out().lines().filter(l -> l.startsWith("Laser #1")).count(), "every 5 s of 12: " + ran.out());
+            assertTrue(ran.out().endsWith("lasersExample: exiting.\n"), ran.out());
         }
     }
 }
