@@ -19,8 +19,8 @@ import java.util.TreeMap;
  * -laserPortType}, {@code -remoteLaserTcpPort}) are taken and kept: the simulated laser comes over
  * the robot's own link. Another type, or a second laser, is refused with the reason.
  *
- * <p>Lasers are simulated on the Environment's link; a robot reached through a Pioneer port has no
- * laser (MobileSim serves its laser on a port of its own, which RoboSim's Pioneer port does not).
+ * <p>The laser's scans come over the robot's link: the Environment's, or a Pioneer port's (in the
+ * laser packets of the simulator's laser, as MobileSim sends them).
  */
 public class ArLaserConnector {
     /** The one laser type RoboSim simulates. */

@@ -222,4 +222,18 @@ class AriaExamplesTest {
             assertTrue(ran.out().endsWith("lasersExample: exiting.\n"), ran.out());
         }
     }
+
+    @Test
+    void laserConnectReadsTheLaserThroughThePioneerPortToo() throws Exception {
+        try (PioneerRun run = new PioneerRun(PioneerRun.room(dir), 120, false, code -> { })) {
+            Ran ran = Background.supply("laserConnect", () -> run(LaserConnect::main, "-remoteHost", "127.0.0.1",
+                    "-rrtp", String.valueOf(run.ports.portOf("r1")), "-connectLaser")).get(90, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            // the room as in the lockstep run, its full 180° this time: the wall on the right, 2900 mm
+            // from the laser at -90°, is the nearest
+            assertTrue(java.util.regex.Pattern.compile("Laser #1 \\(lms2xx_1\\): connected\\. Have \\d{2,3} 'current'"
+                    + " readings\\. Closest reading is at -9\\d degrees and is 2\\.9\\d+ meters away\\.").matcher(ran.out())
+                    .find(), ran.out());
+        }
+    }
 }
