@@ -6,6 +6,8 @@ import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
+import robosim.hw.RobotRuntime;
+import robosim.hw.RuntimeChoices;
 import robosim.params.BumperParameters;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
@@ -47,6 +49,9 @@ public class ArRobot extends AbstractRobot {
     private final TaskList userTasks = new TaskList("user");
     private final RangeDevices rangeDevices = new RangeDevices();
     private volatile ArKeyHandler keyHandler;
+    private volatile ArDeviceConnection deviceConnection;
+    /** Runtimes made for Pioneer robot servers, for their names. */
+    private static final AtomicInteger PIONEER_RUNTIMES = new AtomicInteger();
     private final java.util.concurrent.ConcurrentSkipListMap<Integer, ArLaser> lasers =
             new java.util.concurrent.ConcurrentSkipListMap<>();
     private volatile long counter;
@@ -148,7 +153,33 @@ public class ArRobot extends AbstractRobot {
      * @return true if connected; otherwise {@link #getConnectionError()} says why
      */
     public boolean blockingConnect() {
+        ArDeviceConnection through = deviceConnection;
+        if (through != null && !isConnected()) {
+            usePioneerServer(getName(), through.host(), through.port());
+        }
         return tryConnect(HardwareOptions.defaults());
+    }
+
+    /**
+     * Gives the robot the connection it connects through, as an ARIA program that opens its own
+     * does: {@link #blockingConnect()} then drives the Pioneer robot server at its address.
+     *
+     * @param connection the connection, or null to connect to the robot's Environment as made
+     */
+    public void setDeviceConnection(ArDeviceConnection connection) {
+        deviceConnection = connection;
+    }
+
+    /** @return the connection given, or null */
+    public ArDeviceConnection getDeviceConnection() {
+        return deviceConnection;
+    }
+
+    /** Sends the robot to the Pioneer robot server at an address when it connects: a runtime of its own names it. */
+    void usePioneerServer(String name, String host, int port) {
+        setRuntime(RobotRuntime.create("pioneer-" + PIONEER_RUNTIMES.incrementAndGet(),
+                RuntimeChoices.fromSystemProperties().withPioneer(host + ":" + port)));
+        relocate(name, host, port, getParameters());
     }
 
     /**

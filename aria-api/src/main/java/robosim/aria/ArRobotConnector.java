@@ -3,9 +3,6 @@ package robosim.aria;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
-import java.util.concurrent.atomic.AtomicInteger;
-import robosim.hw.RobotRuntime;
-import robosim.hw.RuntimeChoices;
 
 /**
  * ARIA's {@code ArRobotConnector}: connects an {@link ArRobot} where the command line says, so that
@@ -36,7 +33,6 @@ public class ArRobotConnector {
     public static final String DEFAULT_HOST = "localhost";
     /** The TCP port ARIA looks for a robot server on: MobileSim's and the first Pioneer port's. */
     public static final int DEFAULT_PORT = 8101;
-    private static final AtomicInteger RUNTIMES = new AtomicInteger();
     /** How long the connector waits for a Pioneer robot server's TCP port to answer, ms. */
     private static final int PROBE_MS = 5000;
 
@@ -223,9 +219,7 @@ public class ArRobotConnector {
             }
             return false;
         }
-        which.setRuntime(RobotRuntime.create("pioneer-" + RUNTIMES.incrementAndGet(),
-                RuntimeChoices.fromSystemProperties().withPioneer(host + ":" + remoteRobotTcpPort)));
-        which.relocate(which.getName(), host, remoteRobotTcpPort, which.getParameters());
+        which.usePioneerServer(which.getName(), host, remoteRobotTcpPort);
         usingSim = remoteHost == null || (remoteIsSim && !remoteIsNotSim);
         return true;
     }
