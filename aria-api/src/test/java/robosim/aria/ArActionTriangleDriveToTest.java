@@ -40,10 +40,16 @@ class ArActionTriangleDriveToTest {
 
     /** A 181-beam scan from the p3dx's laser (18 mm ahead) at (x, 0) facing +x, of the segments. */
     private static int[] scan(double x, double[][] segments) {
+        return scan(x, 0, 0, segments);
+    }
+
+    /** A 181-beam scan from the p3dx's laser (18 mm ahead) with the robot at (x, y, th), of the segments. */
+    private static int[] scan(double x, double y, double th, double[][] segments) {
         int[] s = new int[181];
-        double ox = x + 18;
+        double ox = x + 18 * Math.cos(Math.toRadians(th));
+        double oy = y + 18 * Math.sin(Math.toRadians(th));
         for (int i = 0; i < 181; i++) {
-            double a = Math.toRadians(-90 + i);
+            double a = Math.toRadians(th - 90 + i);
             double dx = Math.cos(a);
             double dy = Math.sin(a);
             double best = 8000;
@@ -54,8 +60,8 @@ class ArActionTriangleDriveToTest {
                 if (Math.abs(den) < 1e-12) {
                     continue;
                 }
-                double t = ((g[0] - ox) * ey - (g[1]) * ex) / den;
-                double u = ((g[0] - ox) * dy - (g[1]) * dx) / den;
+                double t = ((g[0] - ox) * ey - (g[1] - oy) * ex) / den;
+                double u = ((g[0] - ox) * dy - (g[1] - oy) * dx) / den;
                 if (t > 0 && u >= 0 && u <= 1) {
                     best = Math.min(best, t);
                 }
@@ -180,6 +186,45 @@ class ArActionTriangleDriveToTest {
         assertEquals(30, d.getRotVel());
         drive.deactivate();
         assertEquals(State.STATE_INACTIVE, drive.getState());
+    }
+
+    @Test
+    void drivenByWhatItAsksForItEndsInFrontOfTheTargetFacingIt() {
+        double[][] world = target(2500, 254, 135);
+        double x = 0;
+        double y = 400;
+        double th = 10;
+        double vel = 0;
+        ArActionTriangleDriveTo drive = new ArActionTriangleDriveTo();
+        drive.setRobot(robot);
+        ArPriorityResolver resolver = new ArPriorityResolver();
+        List<ArResolver.Entry> actions = List.of(new ArResolver.Entry(50, drive));
+        boolean activated = false;
+        java.util.Set<State> states = new java.util.LinkedHashSet<>();
+        for (int step = 0; step < 600 && drive.getState() != State.STATE_SUCCEEDED; step++) {
+            time += 100;
+            robot.responded(new robosim.hw.RobotSensorResponse(robosim.protocol.RobotStates.of(robot.getCounter() + 1,
+                    time, x, y, th, vel, 0, vel, vel, false, new int[0], 0, scan(x, y, th, world), null)));
+            if (!activated) {
+                drive.activate();
+                activated = true;
+            }
+            ArActionDesired d = resolver.resolve(actions, robot, false);
+            states.add(drive.getState());
+            // the robot: turns at most 10 degrees a step toward what is asked, then drives
+            double turn = d.getDeltaHeadingStrength() > 0 ? d.getDeltaHeading()
+                    : d.getRotVelStrength() > 0 ? d.getRotVel() * 0.1 : 0;
+            th = ArMath.addAngle(th, Math.max(-10, Math.min(10, turn)));
+            vel = d.getVelStrength() > 0 ? d.getVel() : 0;
+            x += vel * 0.1 * Math.cos(Math.toRadians(th));
+            y += vel * 0.1 * Math.sin(Math.toRadians(th));
+        }
+        assertEquals(State.STATE_SUCCEEDED, drive.getState(), "through " + states);
+        assertTrue(states.contains(State.STATE_GOTO_APPROACH) && states.contains(State.STATE_GOTO_FINAL), states.toString());
+        // the final point: 400 mm out from the vertex along its heading (toward -x)
+        assertEquals(2100, x, 100, "x " + x);
+        assertEquals(0, y, 100, "y " + y);
+        assertEquals(0, th, 3, "facing the vertex");
     }
 
     @Test
