@@ -236,7 +236,8 @@ public class ArLineFinder {
             boolean maxDistTriggered = false;
             int end;
             for (end = start; end < len; end++) {
-                if (end - start >= makingMinPoints && points.get(start).findDistanceTo(points.get(end)) > makingMinLen) {
+                if (end - start >= makingMinPoints
+                        && points.get(start).findDistanceTo(points.get(end)) > makingMinLen) {
                     break;
                 }
                 if (maxDistBetweenPoints > 0 && end > start
