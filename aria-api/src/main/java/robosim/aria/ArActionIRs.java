@@ -84,13 +84,14 @@ public class ArActionIRs extends ArAction {
         return false;
     }
 
-    /** As ARIA's on a robot without table-sensing IRs: nothing, every cycle. */
+    /**
+     * As ARIA's on a robot without table-sensing IRs: it is never backing off (ARIA's back-off,
+     * turn and stop all start from a triggered IR), and with no IRs to read it returns nothing,
+     * every cycle.
+     */
     @Override
     public ArActionDesired fire(ArActionDesired currentDesired) {
         desired.reset();
-        if (!haveTableSensingIR()) {
-            return null;
-        }
         return null;
     }
 
