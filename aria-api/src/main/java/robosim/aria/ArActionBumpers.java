@@ -29,6 +29,35 @@ public class ArActionBumpers extends ArAction {
         this("bumpers", 100, 3000, 3000, false);
     }
 
+    /** @param name the action's name; ARIA's other defaults */
+    public ArActionBumpers(String name) {
+        this(name, 100, 3000, 3000, false);
+    }
+
+    /** @param name the action's name @param backOffSpeed speed to back away at, mm/s */
+    public ArActionBumpers(String name, double backOffSpeed) {
+        this(name, backOffSpeed, 3000, 3000, false);
+    }
+
+    /**
+     * @param name         the action's name
+     * @param backOffSpeed speed to back away at, mm/s
+     * @param backOffTime  how long to back away, ms
+     */
+    public ArActionBumpers(String name, double backOffSpeed, int backOffTime) {
+        this(name, backOffSpeed, backOffTime, 3000, false);
+    }
+
+    /**
+     * @param name         the action's name
+     * @param backOffSpeed speed to back away at, mm/s
+     * @param backOffTime  how long to back away, ms
+     * @param turnTime     how long the turn may take, ms
+     */
+    public ArActionBumpers(String name, double backOffSpeed, int backOffTime, int turnTime) {
+        this(name, backOffSpeed, backOffTime, turnTime, false);
+    }
+
     /**
      * @param name         the action's name
      * @param backOffSpeed speed to back away at, mm/s

@@ -14,6 +14,11 @@ public class ArActionConstantVelocity extends ArAction {
         this("Constant Velocity", 400);
     }
 
+    /** @param name the action's name; 400 mm/s */
+    public ArActionConstantVelocity(String name) {
+        this(name, 400);
+    }
+
     /**
      * @param name     the action's name
      * @param velocity the velocity to travel at, mm/s

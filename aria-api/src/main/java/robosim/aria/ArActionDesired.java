@@ -35,6 +35,11 @@ public class ArActionDesired {
     private final ArActionDesiredChannel maxRotVelNeg = new ArActionDesiredChannel();
     private final ArActionDesiredChannel rotAccel = new ArActionDesiredChannel();
     private final ArActionDesiredChannel rotDecel = new ArActionDesiredChannel();
+    private final ArActionDesiredChannel latVel = new ArActionDesiredChannel();
+    private final ArActionDesiredChannel maxLeftLatVel = new ArActionDesiredChannel();
+    private final ArActionDesiredChannel maxRightLatVel = new ArActionDesiredChannel();
+    private final ArActionDesiredChannel latAccel = new ArActionDesiredChannel();
+    private final ArActionDesiredChannel latDecel = new ArActionDesiredChannel();
     private final List<ArActionDesiredChannel> all = new ArrayList<>();
     private double heading;
     private double headingStrength = MIN_STRENGTH;
@@ -54,6 +59,11 @@ public class ArActionDesired {
         all.add(maxRotVelNeg);
         all.add(rotAccel);
         all.add(rotDecel);
+        all.add(latVel);
+        all.add(maxLeftLatVel);
+        all.add(maxRightLatVel);
+        all.add(latAccel);
+        all.add(latDecel);
         transDecel.setOverrideDoesLessThan(false);
         rotDecel.setOverrideDoesLessThan(false);
         maxNegVel.setOverrideDoesLessThan(false);
@@ -489,6 +499,198 @@ public class ArActionDesired {
         return headingStrength;
     }
 
+    // ---- the lateral channels (ARIA's, for robots that move sideways; no simulated robot does,
+    // so the resolver combines them and nothing sends them) ----
+
+    /** @param value the desired lateral velocity, mm/s, left positive, at full strength */
+    public void setLeftLatVel(double value) {
+        setLeftLatVel(value, MAX_STRENGTH);
+    }
+
+    /**
+     * @param value    the desired lateral velocity, mm/s, left positive
+     * @param strength how strongly, 0 to 1
+     */
+    public void setLeftLatVel(double value, double strength) {
+        latVel.setDesired(value, strength, false);
+    }
+
+    /** @param value the desired lateral velocity to the right, mm/s, at full strength */
+    public void setRightLatVel(double value) {
+        setRightLatVel(value, MAX_STRENGTH);
+    }
+
+    /**
+     * As ARIA's: the left lateral velocity, negated.
+     *
+     * @param value    the desired lateral velocity to the right, mm/s
+     * @param strength how strongly, 0 to 1
+     */
+    public void setRightLatVel(double value, double strength) {
+        latVel.setDesired(-value, strength, false);
+    }
+
+    /** @return the desired lateral velocity, mm/s, left positive */
+    public double getLatVel() {
+        return latVel.getDesired();
+    }
+
+    /** @return its strength */
+    public double getLatVelStrength() {
+        return latVel.getStrength();
+    }
+
+    /** @param value the desired maximum lateral velocity to the left, mm/s; the slowest wins */
+    public void setMaxLeftLatVel(double value) {
+        setMaxLeftLatVel(value, MAX_STRENGTH, true);
+    }
+
+    /**
+     * @param value    the desired maximum lateral velocity to the left, mm/s
+     * @param strength how strongly, 0 to 1
+     */
+    public void setMaxLeftLatVel(double value, double strength) {
+        setMaxLeftLatVel(value, strength, true);
+    }
+
+    /**
+     * @param value      the desired maximum lateral velocity to the left, mm/s
+     * @param strength   how strongly, 0 to 1
+     * @param useSlowest whether the slowest value wins
+     */
+    public void setMaxLeftLatVel(double value, double strength, boolean useSlowest) {
+        maxLeftLatVel.setDesired(value, strength, useSlowest);
+    }
+
+    /** @return the desired maximum lateral velocity to the left, mm/s */
+    public double getMaxLeftLatVel() {
+        return maxLeftLatVel.getDesired();
+    }
+
+    /** @return its strength */
+    public double getMaxLeftLatVelStrength() {
+        return maxLeftLatVel.getStrength();
+    }
+
+    /** @return whether the slowest value wins in this channel */
+    public boolean getMaxLeftLatVelSlowestUsed() {
+        return maxLeftLatVel.getAllowOverride();
+    }
+
+    /** @param value the desired maximum lateral velocity to the right, mm/s; the slowest wins */
+    public void setMaxRightLatVel(double value) {
+        setMaxRightLatVel(value, MAX_STRENGTH, true);
+    }
+
+    /**
+     * @param value    the desired maximum lateral velocity to the right, mm/s
+     * @param strength how strongly, 0 to 1
+     */
+    public void setMaxRightLatVel(double value, double strength) {
+        setMaxRightLatVel(value, strength, true);
+    }
+
+    /**
+     * @param value      the desired maximum lateral velocity to the right, mm/s
+     * @param strength   how strongly, 0 to 1
+     * @param useSlowest whether the slowest value wins
+     */
+    public void setMaxRightLatVel(double value, double strength, boolean useSlowest) {
+        maxRightLatVel.setDesired(value, strength, useSlowest);
+    }
+
+    /** @return the desired maximum lateral velocity to the right, mm/s */
+    public double getMaxRightLatVel() {
+        return maxRightLatVel.getDesired();
+    }
+
+    /** @return its strength */
+    public double getMaxRightLatVelStrength() {
+        return maxRightLatVel.getStrength();
+    }
+
+    /** @return whether the slowest value wins in this channel */
+    public boolean getMaxRightLatVelSlowestUsed() {
+        return maxRightLatVel.getAllowOverride();
+    }
+
+    /** @param value the desired lateral acceleration, mm/s²; the slowest wins */
+    public void setLatAccel(double value) {
+        setLatAccel(value, MAX_STRENGTH, true);
+    }
+
+    /**
+     * @param value    the desired lateral acceleration, mm/s²
+     * @param strength how strongly, 0 to 1
+     */
+    public void setLatAccel(double value, double strength) {
+        setLatAccel(value, strength, true);
+    }
+
+    /**
+     * @param value      the desired lateral acceleration, mm/s²
+     * @param strength   how strongly, 0 to 1
+     * @param useSlowest whether the slowest value wins
+     */
+    public void setLatAccel(double value, double strength, boolean useSlowest) {
+        latAccel.setDesired(value, strength, useSlowest);
+    }
+
+    /** @return the desired lateral acceleration, mm/s² */
+    public double getLatAccel() {
+        return latAccel.getDesired();
+    }
+
+    /** @return its strength */
+    public double getLatAccelStrength() {
+        return latAccel.getStrength();
+    }
+
+    /** @return whether the slowest value wins in this channel */
+    public boolean getLatAccelSlowestUsed() {
+        return latAccel.getAllowOverride();
+    }
+
+    /** @param value the desired lateral deceleration, mm/s² */
+    public void setLatDecel(double value) {
+        setLatDecel(value, MAX_STRENGTH, true);
+    }
+
+    /**
+     * @param value    the desired lateral deceleration, mm/s²
+     * @param strength how strongly, 0 to 1
+     */
+    public void setLatDecel(double value, double strength) {
+        setLatDecel(value, strength, true);
+    }
+
+    /**
+     * As ARIA's, this channel keeps the channels' default rule (ARIA's does not set the
+     * fastest-deceleration rule on it, as it does for the translational and rotational ones).
+     *
+     * @param value      the desired lateral deceleration, mm/s²
+     * @param strength   how strongly, 0 to 1
+     * @param useFastest ARIA's flag for the channel's override
+     */
+    public void setLatDecel(double value, double strength, boolean useFastest) {
+        latDecel.setDesired(value, strength, useFastest);
+    }
+
+    /** @return the desired lateral deceleration, mm/s² */
+    public double getLatDecel() {
+        return latDecel.getDesired();
+    }
+
+    /** @return its strength */
+    public double getLatDecelStrength() {
+        return latDecel.getStrength();
+    }
+
+    /** @return whether the fastest value wins in this channel */
+    public boolean getLatDecelFastestUsed() {
+        return latDecel.getAllowOverride();
+    }
+
     /** Nothing desired again. */
     public void reset() {
         for (ArActionDesiredChannel c : all) {
@@ -605,6 +807,10 @@ public class ArActionDesired {
         maxRotVelNeg.checkLowerBound(actionName, "MaxRotVelNeg", 1);
         rotAccel.checkLowerBound(actionName, "RotAccel", 1);
         rotDecel.checkLowerBound(actionName, "RotDecel", 1);
+        maxLeftLatVel.checkLowerBound(actionName, "MaxLeftLatVel", 0);
+        maxRightLatVel.checkLowerBound(actionName, "MaxRightLatVel", 0);
+        latAccel.checkLowerBound(actionName, "LatAccel", 1);
+        latDecel.checkLowerBound(actionName, "LatDecel", 1);
     }
 
     /** @return a copy, as ARIA passes the current desire to {@code fire} by value */
@@ -635,6 +841,11 @@ public class ArActionDesired {
         append(b, "MaxRotVelNeg", maxRotVelNeg);
         append(b, "RotAccel", rotAccel);
         append(b, "RotDecel", rotDecel);
+        append(b, "LatVel", latVel);
+        append(b, "MaxLeftLatVel", maxLeftLatVel);
+        append(b, "MaxRightLatVel", maxRightLatVel);
+        append(b, "LatAccel", latAccel);
+        append(b, "LatDecel", latDecel);
         if (headingSet && headingStrength >= MIN_STRENGTH) {
             b.append(String.format(" Heading %.0f (%.2f)", heading, headingStrength));
         }

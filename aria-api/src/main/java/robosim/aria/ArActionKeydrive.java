@@ -1,10 +1,18 @@
 package robosim.aria;
 
 /**
- * Drives from the arrow keys, as ARIA's {@code ArActionKeydrive} (ArActionKeydrive.cpp). ARIA's
- * key handler calls {@link #up()}, {@link #down()}, {@link #left()}, {@link #right()} and
- * {@link #space()} on each key press; RoboSim has no key handler, so whatever reads the keys (the
- * RemoteControl's window, with {@code --keydrive}) calls them, from any thread.
+ * Drives from the arrow keys, as ARIA's {@code ArActionKeydrive} (ArActionKeydrive.cpp): the
+ * program's key handler ({@link Aria#getKeyHandler()}) calls {@link #up()}, {@link #down()},
+ * {@link #left()}, {@link #right()} and {@link #space()} on each press of UP, DOWN, LEFT, RIGHT and
+ * SPACE. As ARIA's, it takes those keys when it is added to a robot and when it is activated, and
+ * gives them up when it is deactivated (so {@link ArActionGroup#activateExclusive()} of another
+ * group frees them); a key another handler holds is logged and left to it.
+ *
+ * <p>ARIA's makes a terminal key handler (and attaches it to the robot) when the program has none;
+ * RoboSim's does not, since a program may feed the keys itself: the RemoteControl's window (with
+ * {@code --keydrive}) calls the five methods directly, from any thread. A program that wants ARIA's
+ * behaviour makes its {@link ArKeyHandler}, sets it with {@link Aria#setKeyHandler} and attaches it
+ * with {@link ArRobot#attachKeyHandler}, as ARIA's examples do, before adding the action.
  *
  * <p>Each up or down press raises or lowers the speed by the velocity increment, up to the maximum
  * either way; each left or right press adds the turn increment to the delta heading of the next
@@ -32,6 +40,11 @@ public class ArActionKeydrive extends ArAction {
     private double turnAmount;
     private double desiredSpeed;
     private boolean speedReset = true;
+    private final Runnable upCB = this::up;
+    private final Runnable downCB = this::down;
+    private final Runnable leftCB = this::left;
+    private final Runnable rightCB = this::right;
+    private final Runnable spaceCB = this::space;
 
     /** A keydrive named {@code keydrive} with ARIA's speeds and increments. */
     public ArActionKeydrive() {
@@ -56,6 +69,108 @@ public class ArActionKeydrive extends ArAction {
                 + " velocities based on this.");
         setSpeeds(transVelMax, turnAmountMax);
         setIncrements(velIncrement, turnIncrement);
+        setNextArgument(ArArg.ofDouble("trans vel max", () -> this.transVelMax, v -> this.transVelMax = v,
+                "The maximum speed to go (mm/sec)"));
+        setNextArgument(ArArg.ofDouble("turn amount max", () -> this.turnAmountMax, v -> this.turnAmountMax = v,
+                "The maximum amount to turn (deg/cycle)"));
+        setNextArgument(ArArg.ofDouble("vel increment per keypress", () -> this.velIncrement,
+                v -> this.velIncrement = v, "The amount to increment velocity by per keypress (mm/sec)"));
+        setNextArgument(ArArg.ofDouble("turn increment per keypress", () -> this.turnIncrement,
+                v -> this.turnIncrement = v, "The amount to turn by per keypress (deg)"));
+    }
+
+    /**
+     * @param name        the action's name
+     * @param transVelMax the top speed either way, mm/s; ARIA's other defaults
+     */
+    public ArActionKeydrive(String name, double transVelMax) {
+        this(name, transVelMax, DEFAULT_TURN_AMOUNT_MAX, DEFAULT_VEL_INCREMENT, DEFAULT_TURN_INCREMENT);
+    }
+
+    /**
+     * @param name          the action's name
+     * @param transVelMax   the top speed either way, mm/s
+     * @param turnAmountMax the largest turn in one cycle, degrees; ARIA's increments
+     */
+    public ArActionKeydrive(String name, double transVelMax, double turnAmountMax) {
+        this(name, transVelMax, turnAmountMax, DEFAULT_VEL_INCREMENT, DEFAULT_TURN_INCREMENT);
+    }
+
+    /**
+     * @param name          the action's name
+     * @param transVelMax   the top speed either way, mm/s
+     * @param turnAmountMax the largest turn in one cycle, degrees
+     * @param velIncrement  the speed step per up or down press, mm/s; ARIA's turn increment
+     */
+    public ArActionKeydrive(String name, double transVelMax, double turnAmountMax, double velIncrement) {
+        this(name, transVelMax, turnAmountMax, velIncrement, DEFAULT_TURN_INCREMENT);
+    }
+
+    /**
+     * As ARIA's: takes the keys of the program's key handler, if it has one.
+     *
+     * @param robot the robot, or null when removed
+     */
+    @Override
+    public void setRobot(ArRobot robot) {
+        super.setRobot(robot);
+        if (robot != null) {
+            takeKeys();
+        }
+    }
+
+    /**
+     * Adds UP, DOWN, LEFT, RIGHT and SPACE to the program's key handler ({@link Aria#getKeyHandler()}),
+     * as ARIA's {@code takeKeys}; a key it already has is logged and left as it is. Without a key
+     * handler, nothing (logged).
+     */
+    public void takeKeys() {
+        ArKeyHandler keys = Aria.getKeyHandler();
+        if (keys == null) {
+            ArLog.log(ArLog.Verbose, "ArActionKeydrive::takeKeys: There is no key handler; %s is driven by its"
+                    + " methods only.", getName());
+            return;
+        }
+        take(keys, ArKeyHandler.UP, upCB, "up");
+        take(keys, ArKeyHandler.DOWN, downCB, "down");
+        take(keys, ArKeyHandler.LEFT, leftCB, "left");
+        take(keys, ArKeyHandler.RIGHT, rightCB, "right");
+        take(keys, ArKeyHandler.SPACE, spaceCB, "space");
+    }
+
+    private static void take(ArKeyHandler keys, int key, Runnable cb, String name) {
+        if (!keys.addKeyHandler(key, cb)) {
+            ArLog.log(ArLog.Terse, "The key handler already has a key for %s, keydrive will not work correctly.", name);
+        }
+    }
+
+    /** Removes its keys from the program's key handler, as ARIA's {@code giveUpKeys}. */
+    public void giveUpKeys() {
+        ArKeyHandler keys = Aria.getKeyHandler();
+        if (keys == null) {
+            return;
+        }
+        giveUp(keys, upCB, "up");
+        giveUp(keys, downCB, "down");
+        giveUp(keys, leftCB, "left");
+        giveUp(keys, rightCB, "right");
+        giveUp(keys, spaceCB, "space");
+    }
+
+    private static void giveUp(ArKeyHandler keys, Runnable cb, String name) {
+        if (!keys.remKeyHandler(cb)) {
+            ArLog.log(ArLog.Terse, "ArActionKeydrive: The key handler already didn't have a key for %s, something is"
+                    + " wrong.", name);
+        }
+    }
+
+    /** As ARIA's: an inactive keydrive takes its keys again when activated. */
+    @Override
+    public synchronized void activate() {
+        if (!isActive()) {
+            takeKeys();
+        }
+        super.activate();
     }
 
     /**
@@ -108,9 +223,12 @@ public class ArActionKeydrive extends ArAction {
         return desiredSpeed;
     }
 
-    /** As ARIA's: a keydrive switched off forgets its speed and turn. */
+    /** As ARIA's: a keydrive switched off gives up its keys and forgets its speed and turn. */
     @Override
     public synchronized void deactivate() {
+        if (isActive()) {
+            giveUpKeys();
+        }
         super.deactivate();
         desiredSpeed = 0;
         turnAmount = 0;

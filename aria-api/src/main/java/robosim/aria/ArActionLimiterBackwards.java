@@ -18,6 +18,35 @@ public class ArActionLimiterBackwards extends ArAction {
         this("speed limiter", -250, -600, -250, 1.5);
     }
 
+    /** @param name the action's name; ARIA's other defaults */
+    public ArActionLimiterBackwards(String name) {
+        this(name, -250, -600, -250, 1.5);
+    }
+
+    /** @param name the action's name @param stopDistance distance at which to stop, mm (negative) */
+    public ArActionLimiterBackwards(String name, double stopDistance) {
+        this(name, stopDistance, -600, -250, 1.5);
+    }
+
+    /**
+     * @param name         the action's name
+     * @param stopDistance distance at which to stop, mm (negative)
+     * @param slowDistance distance at which to slow down, mm (negative)
+     */
+    public ArActionLimiterBackwards(String name, double stopDistance, double slowDistance) {
+        this(name, stopDistance, slowDistance, -250, 1.5);
+    }
+
+    /**
+     * @param name              the action's name
+     * @param stopDistance      distance at which to stop, mm (negative)
+     * @param slowDistance      distance at which to slow down, mm (negative)
+     * @param maxBackwardsSpeed the backward speed allowed beyond the slow distance, mm/s; width ratio 1.5
+     */
+    public ArActionLimiterBackwards(String name, double stopDistance, double slowDistance, double maxBackwardsSpeed) {
+        this(name, stopDistance, slowDistance, maxBackwardsSpeed, 1.5);
+    }
+
     /**
      * @param name              the action's name
      * @param stopDistance      distance at which to stop, mm (negative: behind)

@@ -22,6 +22,35 @@ public class ArActionLimiterForwards extends ArAction {
         this("speed limiter", 250, 1000, 200, 1);
     }
 
+    /** @param name the action's name; ARIA's other defaults */
+    public ArActionLimiterForwards(String name) {
+        this(name, 250, 1000, 200, 1);
+    }
+
+    /** @param name the action's name @param stopDistance distance at which to stop, mm */
+    public ArActionLimiterForwards(String name, double stopDistance) {
+        this(name, stopDistance, 1000, 200, 1);
+    }
+
+    /**
+     * @param name         the action's name
+     * @param stopDistance distance at which to stop, mm
+     * @param slowDistance distance at which to slow down, mm
+     */
+    public ArActionLimiterForwards(String name, double stopDistance, double slowDistance) {
+        this(name, stopDistance, slowDistance, 200, 1);
+    }
+
+    /**
+     * @param name         the action's name
+     * @param stopDistance distance at which to stop, mm
+     * @param slowDistance distance at which to slow down, mm
+     * @param slowSpeed    speed allowed at the slow distance, mm/s; width ratio 1
+     */
+    public ArActionLimiterForwards(String name, double stopDistance, double slowDistance, double slowSpeed) {
+        this(name, stopDistance, slowDistance, slowSpeed, 1);
+    }
+
     /**
      * @param name         the action's name
      * @param stopDistance distance at which to stop, mm

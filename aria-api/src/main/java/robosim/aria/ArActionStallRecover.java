@@ -39,6 +39,47 @@ public class ArActionStallRecover extends ArAction {
         this("stall recover", 225, 50, 150, 45, true);
     }
 
+    /** @param name the action's name; ARIA's other defaults */
+    public ArActionStallRecover(String name) {
+        this(name, 225, 50, 150, 45, true);
+    }
+
+    /** @param name the action's name @param obstacleDistance distance at which not to move, mm */
+    public ArActionStallRecover(String name, double obstacleDistance) {
+        this(name, obstacleDistance, 50, 150, 45, true);
+    }
+
+    /**
+     * @param name             the action's name
+     * @param obstacleDistance distance at which not to move, mm
+     * @param cyclesToMove     cycles a manoeuvre lasts at most
+     */
+    public ArActionStallRecover(String name, double obstacleDistance, int cyclesToMove) {
+        this(name, obstacleDistance, cyclesToMove, 150, 45, true);
+    }
+
+    /**
+     * @param name             the action's name
+     * @param obstacleDistance distance at which not to move, mm
+     * @param cyclesToMove     cycles a manoeuvre lasts at most
+     * @param speed            speed to back up or go forward at, mm/s
+     */
+    public ArActionStallRecover(String name, double obstacleDistance, int cyclesToMove, double speed) {
+        this(name, obstacleDistance, cyclesToMove, speed, 45, true);
+    }
+
+    /**
+     * @param name             the action's name
+     * @param obstacleDistance distance at which not to move, mm
+     * @param cyclesToMove     cycles a manoeuvre lasts at most
+     * @param speed            speed to back up or go forward at, mm/s
+     * @param degreesToTurn    degrees to turn
+     */
+    public ArActionStallRecover(String name, double obstacleDistance, int cyclesToMove, double speed,
+                                double degreesToTurn) {
+        this(name, obstacleDistance, cyclesToMove, speed, degreesToTurn, true);
+    }
+
     /**
      * @param name             the action's name
      * @param obstacleDistance distance at which not to move because of an obstacle, mm
