@@ -236,4 +236,32 @@ class AriaExamplesTest {
                     .find(), ran.out());
         }
     }
+
+    @Test
+    void aConnectionOfTheProgramsOwnSendsTheRobotToThatPioneerServer() throws Exception {
+        try (PioneerRun run = new PioneerRun(PioneerRun.room(dir), 0, false, code -> { })) {
+            int port = run.ports.portOf("r1");
+            robosim.aria.ArTcpConnection refused = new robosim.aria.ArTcpConnection();
+            int ret = refused.open("127.0.0.1", 1);
+            assertEquals(robosim.aria.ArTcpConnection.OPEN_CON_REFUSED, ret);
+            assertEquals("Connection refused.", refused.getOpenMessage(ret));
+            String moved = Background.supply("own connection", () -> {
+                robosim.aria.ArTcpConnection con = new robosim.aria.ArTcpConnection();
+                assertEquals(0, con.open("127.0.0.1", port));
+                robosim.aria.ArRobot robot = new robosim.aria.ArRobot();
+                robot.setDeviceConnection(con);
+                assertTrue(robot.blockingConnect(), robot.getConnectionError());
+                robot.enableMotors();
+                robot.move(500);
+                for (int i = 0; i < 100 && !robot.isMoveDone(); i++) {
+                    robosim.aria.ArUtil.sleep(100);
+                }
+                String at = String.format(java.util.Locale.ROOT, "%.0f", robot.getX());
+                robot.disconnect();
+                return at;
+            }).get(60, TimeUnit.SECONDS);
+            assertEquals(500, Double.parseDouble(moved), 45, "the robot's odometry, through the Pioneer port");
+            assertEquals(3500, run.env.sim.summary("r1").x(), 60, "the robot of the Environment behind the port moved");
+        }
+    }
 }
