@@ -40,6 +40,8 @@ public abstract class AbstractRobot {
     /** The Environment refuses a bad request each time it is sent: one line a second. */
     private final LogLimiter refusals = new LogLimiter(LOG);
     private static final InheritableThreadLocal<AbstractRobot> CURRENT = new InheritableThreadLocal<>();
+    /** The robots a thread connected: the thread is the code of each (see {@link #sleepSimulated}). */
+    private static final ThreadLocal<java.util.Set<AbstractRobot>> CONNECTED_BY = new ThreadLocal<>();
 
     /** Who the robot is and where it connects: fixed once it first connects ({@link #relocate}). */
     private volatile String name;
@@ -241,6 +243,13 @@ public abstract class AbstractRobot {
         facts = WelcomeFacts.of(name, w);
         state = w.state();
         welcomed(w.state());
+        java.util.Set<AbstractRobot> mine = CONNECTED_BY.get();
+        if (mine == null) {
+            mine = new java.util.LinkedHashSet<>();
+            CONNECTED_BY.set(mine);
+        }
+        mine.removeIf(r -> !r.isConnected());
+        mine.add(this);
         CURRENT.set(this);
     }
 
@@ -558,10 +567,25 @@ public abstract class AbstractRobot {
             return;
         }
         long wake = hw.timeMs() + Math.max(ms, 1);
+        java.util.Set<AbstractRobot> mine = CONNECTED_BY.get();
+        java.util.List<HardwareSimulator> parked = new java.util.ArrayList<>();
+        if (mine != null && mine.size() > 1) {
+            // the thread is the code of other robots too: they go on while it sleeps on this one
+            for (AbstractRobot other : mine) {
+                HardwareSimulator o = other.hardware;
+                if (other != this && o != null && !o.isEnded()) {
+                    long otherWake = o.timeMs() + Math.max(ms, 1);
+                    o.park(t -> t >= otherWake);
+                    parked.add(o);
+                }
+            }
+        }
         try {
             hw.await(t -> t >= wake);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        } finally {
+            parked.forEach(HardwareSimulator::unpark);
         }
     }
 

@@ -183,6 +183,26 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         gate.awaitWake();
     }
 
+    /**
+     * Yields the calling thread while it waits on another robot: a thread that is the code of
+     * several robots (one program driving two, as ARIA's twoRobotWander does) lets each of their
+     * steps go on while it sleeps on one, up to the same wake, so that robots of one Environment
+     * wake at the same step as the one it sleeps on and the run stays the same. It sends the step's
+     * requests if it was the last to yield.
+     *
+     * @param wakeWhen the condition on this robot's simulated time it yields until
+     */
+    void park(LongPredicate wakeWhen) {
+        if (gate.yieldUntil(wakeWhen)) {
+            sendRequests();
+        }
+    }
+
+    /** Ends {@link #park()}: the calling thread runs as this robot's code again. */
+    void unpark() {
+        gate.stopWaiting();
+    }
+
     /** @return simulated time of the latest state, ms */
     public long timeMs() {
         return gate.timeMs();

@@ -89,6 +89,14 @@ public final class StepGate {
     }
 
     /**
+     * Ends a yield of the calling thread that it never waits out: its code runs on once it is back
+     * from waiting on another robot ({@link HardwareSimulator#park}).
+     */
+    public synchronized void stopWaiting() {
+        waiting.remove(Thread.currentThread());
+    }
+
+    /**
      * Waits until a step satisfies the condition the calling thread yielded with
      * ({@link #yieldUntil}), or the connection ends; returns at once if that has already happened.
      *

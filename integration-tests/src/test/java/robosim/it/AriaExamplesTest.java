@@ -22,6 +22,7 @@ import robosim.examples.aria.ActionExample;
 import robosim.examples.aria.LaserConnect;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
+import robosim.examples.aria.TwoRobotWander;
 import robosim.examples.aria.Wander;
 
 /**
@@ -262,6 +263,26 @@ class AriaExamplesTest {
             }).get(60, TimeUnit.SECONDS);
             assertEquals(500, Double.parseDouble(moved), 45, "the robot's odometry, through the Pioneer port");
             assertEquals(3500, run.env.sim.summary("r1").x(), 60, "the robot of the Environment behind the port moved");
+        }
+    }
+
+    @Test
+    void twoRobotWanderDrivesTwoRobotsThroughTheirOwnConnectionsAndStopsOneAfterTenSeconds() throws Exception {
+        try (PioneerRun run = new PioneerRun(PioneerRun.roomForTwo(dir), 150, false, code -> { })) {
+            Ran ran = Background.supply("twoRobotWander", () -> run(TwoRobotWander::main, "-rh1", "127.0.0.1", "-rp1",
+                    String.valueOf(run.ports.portOf("r1")), "-rh2", "127.0.0.1", "-rp2",
+                    String.valueOf(run.ports.portOf("r2")))).get(90, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("Connecting to second robot at 127.0.0.1:"), ran.out());
+            assertEquals(1, ran.out().lines().filter(l -> l.equals("Switching to robot 2.")).count(), ran.out());
+            assertTrue(ran.out().endsWith("Both robots disconnected.\n"), ran.out());
+            RobotSummary r1 = run.env.sim.summary("r1");
+            RobotSummary r2 = run.env.sim.summary("r2");
+            // one thread drives both: while it sleeps on one robot, the other's steps go on too. Both
+            // wander at 400 mm/s; r1 is stopped after 10 s of the run's 15
+            assertTrue(r1.distance() > 2000, "r1: " + r1);
+            assertTrue(r2.distance() > r1.distance() + 1000, "r2 went on: " + r2 + " / " + r1);
+            assertEquals(0, r1.collisions() + r2.collisions(), r1 + " / " + r2);
         }
     }
 }
