@@ -238,12 +238,13 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Whether the robot is connected: as ARIA's, false while it is still stabilizing after the
-     * Environment welcomed it ({@link #isStabilizing()}).
+     * Whether the robot is connected: as ARIA's, only once the connection has finished (the
+     * Environment welcomed the robot and it has stabilized, {@link #isStabilizing()}), and until it
+     * ends.
      */
     @Override
     public boolean isConnected() {
-        return super.isConnected() && !events.isStabilizing;
+        return super.isConnected() && events.isLive();
     }
 
     /**

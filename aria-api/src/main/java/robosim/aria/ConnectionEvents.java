@@ -48,6 +48,11 @@ final class ConnectionEvents {
         notifyAll();
     }
 
+    /** @return whether the connection has finished and its end has not been told */
+    synchronized boolean isLive() {
+        return live;
+    }
+
     /** @return whether the connection's end is to be told now (true once per connection) */
     synchronized boolean claimEnd() {
         boolean was = live;
