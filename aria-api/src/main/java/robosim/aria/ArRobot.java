@@ -2046,7 +2046,8 @@ public class ArRobot extends AbstractRobot {
             LOG.warning(() -> "robot " + getName() + ": setName(" + name + "): the robot is connected under its name; ignoring it");
             return;
         }
-        relocate(name != null ? name : defaultName(), getHost(), getPort(), getParameters());
+        // the parameters stay, and with them the limits set
+        super.relocate(name != null ? name : defaultName(), getHost(), getPort(), getParameters());
     }
 
     /**

@@ -92,8 +92,10 @@ class ArRobotStateExtrasTest {
         assertEquals("p3dx", robot.getRobotSubType());
         assertSame(robot.getParameters(), robot.getRobotParams());
         assertEquals("", robot.getRobotSerialNumber());
+        robot.setAbsoluteMaxTransVel(300);
         robot.setName("other");
         assertEquals("other", robot.getName());
+        assertEquals(300, robot.getAbsoluteMaxTransVel(), "a rename keeps the limits");
         assertTrue(robot.loadParamFile("p3at"));
         assertEquals("p3at", robot.getRobotSubType());
         assertEquals(16, robot.getNumSonar());
