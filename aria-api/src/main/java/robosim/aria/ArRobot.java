@@ -171,7 +171,7 @@ public class ArRobot extends AbstractRobot {
 
     /**
      * Connects to the Environment, waiting (bounded) for its welcome, then for the stabilizing time
-     * ({@link #setStabilizingTime}), as ARIA's {@code blockingConnect} does. On success the
+     * ({@link #setStabilizingTime}), as ARIA's {@code ArRobot::blockingConnect} (ArRobot.cpp) does. On success the
      * stabilizing callbacks run, then the connect callbacks ({@link #addConnectCB}); on failure the
      * failed-connect callbacks ({@link #addFailedConnectCB}).
      *
@@ -214,7 +214,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code asyncConnect}: refused (false) unless the robot's cycle was started with
+     * ARIA's {@code ArRobot::asyncConnect} (ArRobot.cpp): refused (false) unless the robot's cycle was started with
      * {@link #runAsync()} and the robot is not connected, as in ARIA. The connection itself is made
      * in the calling thread, which becomes part of the robot's code as the lockstep requires, so this
      * returns once it has succeeded or failed; as in ARIA, the callbacks and
@@ -230,7 +230,10 @@ public class ArRobot extends AbstractRobot {
         return true;
     }
 
-    /** The connection failed: ARIA's {@code failedConnect} (its log line, the callbacks, the waiters). */
+    /**
+     * The connection failed: ARIA's {@code ArRobot::failedConnect} (ArRobot.cpp; its log line, the
+     * callbacks, the waiters).
+     */
     private void failedConnect() {
         LOG.warning(() -> "robot " + getName() + ": Failed to connect to robot.");
         events.failedConnect.invoke(getName());
@@ -248,7 +251,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Leaves the run, as ARIA's {@code disconnect}: if the robot was connected, the
+     * Leaves the run, as ARIA's {@code ArRobot::disconnect} (ArRobot.cpp): if the robot was connected, the
      * disconnect-normally callbacks run first ({@link #addDisconnectNormallyCB}), then the run-exit
      * ones if the cycle was running ({@link #addRunExitCB}).
      *
@@ -269,7 +272,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code dropConnection}: leaves the run as a lost connection does, with the
+     * ARIA's {@code ArRobot::dropConnection} (ArRobot.cpp): leaves the run as a lost connection does, with the
      * disconnect-on-error callbacks ({@link #addDisconnectOnErrorCB}) instead of the normal ones;
      * nothing when the robot is not connected.
      *
@@ -358,7 +361,10 @@ public class ArRobot extends AbstractRobot {
         }
     }
 
-    /** ARIA's {@code finishedConnection}: connected; the trip odometer restarts; the connect callbacks; the waiters. */
+    /**
+     * ARIA's {@code ArRobot::finishedConnection} (ArRobot.cpp): connected; the trip odometer restarts;
+     * the connect callbacks; the waiters.
+     */
     private void finishedConnection() {
         events.isStabilizing = false;
         resetTripOdometer();
@@ -470,7 +476,10 @@ public class ArRobot extends AbstractRobot {
         addStabilizingCB(functor, ArListPos.LAST);
     }
 
-    /** @param functor run when the robot starts stabilizing @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST} */
+    /**
+     * @param functor run when the robot starts stabilizing
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
+     */
     public void addStabilizingCB(Runnable functor, int position) {
         events.stabilizing.add(functor, position);
     }
@@ -520,8 +529,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Waits until another thread has connected the robot, as ARIA's {@code waitForConnect}; before
-     * a connection there is no simulated time, so the wait is in wall-clock time.
+     * Waits until another thread has connected the robot, as ARIA's {@code ArRobot::waitForConnect}
+     * (ArRobot.cpp); before a connection there is no simulated time, so the wait is in wall-clock time.
      *
      * @param msecs at most this many ms; 0 for no limit
      * @return {@link WaitState#WAIT_CONNECTED} at once if connected, or once connected (or woken by
@@ -600,15 +609,16 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setConnectionTimeoutTime}, logged as ARIA logs it; 0 or less means 0. The value
-     * is answered by {@link #getConnectionTimeoutTime()}; the robot itself counts the Environment
-     * lost after the hardware's lost time ({@code robosim.hw.HardwareOptions}, 10 s of wall-clock
-     * silence by default), since simulated time stops when the Environment does.
+     * ARIA's {@code ArRobot::setConnectionTimeoutTime} (ArRobot.cpp), logged as ARIA logs it; 0 or less
+     * means 0. The value is answered by {@link #getConnectionTimeoutTime()}; the robot itself counts the
+     * Environment lost after the hardware's lost time ({@code robosim.hw.HardwareOptions}, 10 s of
+     * wall-clock silence by default), since simulated time stops when the Environment does.
      *
      * @param mSecs the timeout, ms
      */
     public void setConnectionTimeoutTime(int mSecs) {
-        LOG.info(() -> "robot " + getName() + ": ArRobot::setConnectionTimeoutTime: Setting timeout to " + mSecs + " mSecs");
+        LOG.info(() -> "robot " + getName() + ": ArRobot::setConnectionTimeoutTime: Setting timeout to "
+                + mSecs + " mSecs");
         events.timeoutMs = Math.max(0, mSecs);
     }
 
@@ -680,16 +690,16 @@ public class ArRobot extends AbstractRobot {
         return counter;
     }
 
-    /** Adds one to the cycle counter, as ARIA's {@code incCounter}. */
+    /** Adds one to the cycle counter, as ARIA's {@code ArRobot::incCounter} (ArRobot.h). */
     public void incCounter() {
         counter++;
     }
 
     /**
-     * Runs the robot's tasks once, as ARIA's {@code loopOnce} runs its task tree once, for a program
-     * that drives the cycle itself: the sensor-interpretation tasks, the actions (their commands
-     * queued for the next step) and the user tasks, under the robot's lock; then the counter goes up.
-     * No new state is read: that comes with each step.
+     * Runs the robot's tasks once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task tree
+     * once, for a program that drives the cycle itself: the sensor-interpretation tasks, the actions
+     * (their commands queued for the next step) and the user tasks, under the robot's lock; then the
+     * counter goes up. No new state is read: that comes with each step.
      */
     public void loopOnce() {
         underLock(() -> {
@@ -707,7 +717,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setCycleTime}: here the cycle is the world's step, one cycle per state the
+     * ARIA's {@code ArRobot::setCycleTime} (ArRobot.cpp): here the cycle is the world's step, one cycle per state the
      * Environment sends, so the value is ignored with a log line; the world file sets the step.
      *
      * @param ms the cycle time ARIA would use
@@ -740,20 +750,24 @@ public class ArRobot extends AbstractRobot {
         cycleStats.noTimeWarningThisCycle = noTimeWarningThisCycle;
     }
 
-    /** @return true: the cycle is chained to the states' arrival, each step's state starting one, as ARIA's is by default */
+    /**
+     * @return true: the cycle is chained to the states' arrival, each step's state starting one, as
+     *     ARIA's is by default
+     */
     public boolean isCycleChained() {
         return true;
     }
 
     /**
-     * ARIA's {@code setCycleChained}: the cycle is always chained to the states here (there is no
+     * ARIA's {@code ArRobot::setCycleChained} (ArRobot.h): the cycle is always chained to the states here (there is no
      * timer to run it between steps), so false is ignored with a log line.
      *
      * @param cycleChained whether the cycle follows the states
      */
     public void setCycleChained(boolean cycleChained) {
         if (!cycleChained) {
-            LOG.info(() -> "robot " + getName() + ": setCycleChained(false): the cycle runs once per step's state; ignoring it");
+            LOG.info(() -> "robot " + getName()
+                    + ": setCycleChained(false): the cycle runs once per step's state; ignoring it");
         }
     }
 
@@ -790,7 +804,7 @@ public class ArRobot extends AbstractRobot {
         return userTasks.remove(functor);
     }
 
-    /** @param name a user task's name @return the task, or null (ARIA's {@code findUserTask}) */
+    /** @param name a user task's name @return the task, or null (ARIA's {@code ArRobot::findUserTask} (ArRobot.cpp)) */
     public ArSyncTask findUserTask(String name) {
         return userTasks.find(name);
     }
@@ -816,7 +830,7 @@ public class ArRobot extends AbstractRobot {
         return t != null ? t : userTasks.find(functor);
     }
 
-    /** Logs the user tasks in running order (ARIA's {@code logUserTasks}). */
+    /** Logs the user tasks in running order (ARIA's {@code ArRobot::logUserTasks} (ArRobot.cpp)). */
     public void logUserTasks() {
         userTasks.log(getName());
     }
@@ -927,7 +941,7 @@ public class ArRobot extends AbstractRobot {
 
     /**
      * Waits, yielded, until the robot's cycle stops ({@link #stopRunning}, or the robot leaves the
-     * run), as ARIA's {@code waitForRunExit}.
+     * run), as ARIA's {@code ArRobot::waitForRunExit} (ArRobot.cpp).
      *
      * @param msecs at most this many simulated ms; 0 for no limit
      * @return {@link WaitState#WAIT_RUN_EXIT} once the cycle has stopped (or the wait was woken by
@@ -1024,8 +1038,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Logs the actions by priority, highest first, as ARIA's {@code logActions}: a priority line, then
-     * each action's name.
+     * Logs the actions by priority, highest first, as ARIA's {@code ArRobot::logActions} (ArRobot.cpp): a
+     * priority line, then each action's name.
      *
      * @param logDeactivated whether the deactivated actions are listed too
      */
@@ -1051,7 +1065,10 @@ public class ArRobot extends AbstractRobot {
         return actions.logActions();
     }
 
-    /** @param ptz the robot's camera, for ARIA's {@code getPTZ} (an {@link ArPTZ} is given the robot when made) */
+    /**
+     * @param ptz the robot's camera, for ARIA's {@code ArRobot::getPTZ} (ArRobot.h; an {@link ArPTZ}
+     *     is given the robot when made)
+     */
     public void setPTZ(ArPTZ ptz) {
         this.ptz = ptz;
     }
@@ -1108,7 +1125,8 @@ public class ArRobot extends AbstractRobot {
 
     /** @param packetsReceivedTracking whether every state received is logged, as ARIA tracks packets */
     public void setPacketsReceivedTracking(boolean packetsReceivedTracking) {
-        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsReceivedTracking ? "" : "not ") + "tracking packets received");
+        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsReceivedTracking ? "" : "not ")
+                + "tracking packets received");
         extras.packetsReceivedTracking = packetsReceivedTracking;
     }
 
@@ -1119,11 +1137,15 @@ public class ArRobot extends AbstractRobot {
 
     /** @param packetsSentTracking whether every request sent is logged, with ARIA's log line on change */
     public void setPacketsSentTracking(boolean packetsSentTracking) {
-        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsSentTracking ? "" : "not ") + "tracking packets sent");
+        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsSentTracking ? "" : "not ")
+                + "tracking packets sent");
         extras.packetsSentTracking = packetsSentTracking;
     }
 
-    /** Queues a request, logging it when {@link #setPacketsSentTracking} or (for motion) {@link #setLogMovementSent} says so. */
+    /**
+     * Queues a request, logging it when {@link #setPacketsSentTracking} or (for motion) {@link
+     * #setLogMovementSent} says so.
+     */
     @Override
     protected void request(Command command) {
         if (extras.packetsSentTracking || extras.logMovementSent && command instanceof Command.Motion) {
@@ -1135,7 +1157,8 @@ public class ArRobot extends AbstractRobot {
     /** The logging a program turned on for each state received. */
     private void logReceived(RobotState s) {
         if (extras.packetsReceivedTracking) {
-            LOG.info(() -> "robot " + getName() + ": received the state of step " + s.step() + " at " + s.timeMs() + " ms");
+            LOG.info(() -> "robot " + getName() + ": received the state of step " + s.step() + " at "
+                    + s.timeMs() + " ms");
         }
         if (extras.logSipContents) {
             LOG.info(() -> "robot " + getName() + ": state " + s);
@@ -1207,7 +1230,10 @@ public class ArRobot extends AbstractRobot {
         return trans || rot;
     }
 
-    /** Makes {@link #isTryingToMove()} true until the end of the current cycle, as ARIA's {@code forceTryingToMove}. */
+    /**
+     * Makes {@link #isTryingToMove()} true until the end of the current cycle, as ARIA's {@code
+     * ArRobot::forceTryingToMove} (ArRobot.h).
+     */
     public void forceTryingToMove() {
         forcedTryingToMove = true;
     }
@@ -1273,7 +1299,10 @@ public class ArRobot extends AbstractRobot {
         return rangeDevices.list().contains(device);
     }
 
-    /** @return the attached range devices, in the order attached (ARIA's {@code getRangeDevices}) */
+    /**
+     * @return the attached range devices, in the order attached (ARIA's {@code
+     *     ArRobot::getRangeDevices} (ArRobot.h))
+     */
     public List<ArRangeDevice> getRangeDevices() {
         return rangeDevices.list();
     }
@@ -1514,7 +1543,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Sets the absolute maximum translational velocity, as ARIA's {@code setAbsoluteMaxTransVel}
+     * Sets the absolute maximum translational velocity, as ARIA's {@code ArRobot::setAbsoluteMaxTransVel} (ArRobot.cpp)
      * (ArRobot.cpp): 0 or less is refused with a log line; over the top (the parameter file's
      * {@code MaxVelocity}, what the Environment drives) is capped with a log line; a velocity limit
      * above the new maximum comes down to it.
@@ -1536,8 +1565,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * As {@link #setAbsoluteMaxTransVel} for backwards (ARIA's {@code setAbsoluteMaxTransNegVel}): 0
-     * or more is refused, below −{@code MaxVelocity} capped, each with a log line; a
+     * As {@link #setAbsoluteMaxTransVel} for backwards (ARIA's {@code ArRobot::setAbsoluteMaxTransNegVel}
+     * (ArRobot.cpp)): 0 or more is refused, below −{@code MaxVelocity} capped, each with a log line; a
      * {@link #getTransNegVelMax()} below the new maximum comes up to it.
      *
      * @param maxNegVel mm/s, negative
@@ -1553,7 +1582,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setAbsoluteMaxTransAccel}: 0 or less refused, over the Environment's largest
+     * ARIA's {@code ArRobot::setAbsoluteMaxTransAccel} (ArRobot.cpp): 0 or less refused, over the Environment's largest
      * capped, each with a log line; an acceleration above it comes down to it.
      *
      * @param maxAccel mm/s²
@@ -1579,8 +1608,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setAbsoluteMaxRotVel}: 0 or less refused, over {@code MaxRVelocity} capped, each
-     * with a log line; a rotational limit above it comes down to it.
+     * ARIA's {@code ArRobot::setAbsoluteMaxRotVel} (ArRobot.cpp): 0 or less refused, over {@code
+     * MaxRVelocity} capped, each with a log line; a rotational limit above it comes down to it.
      *
      * @param maxVel deg/s
      * @return false if refused
@@ -1621,14 +1650,17 @@ public class ArRobot extends AbstractRobot {
         return v != null;
     }
 
-    /** @return 0: the absolute maximum lateral velocity of a robot without lateral motion (a Pioneer's config packet's) */
+    /**
+     * @return 0: the absolute maximum lateral velocity of a robot without lateral motion (a Pioneer's
+     *     config packet's)
+     */
     public double getAbsoluteMaxLatVel() {
         return maxima.get(Maxima.Absolute.LAT_VEL);
     }
 
     /**
-     * ARIA's {@code setAbsoluteMaxLatVel}: 0 or less refused with a log line; anything else capped
-     * to the top, 0 for a robot without lateral motion, with a log line.
+     * ARIA's {@code ArRobot::setAbsoluteMaxLatVel} (ArRobot.cpp): 0 or less refused with a log line;
+     * anything else capped to the top, 0 for a robot without lateral motion, with a log line.
      *
      * @param maxVel mm/s
      * @return false if refused
@@ -1663,8 +1695,9 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setTransNegVelMax}: 0 or more is ignored, below {@link #getAbsoluteMaxTransNegVel()}
-     * is capped, each with ARIA's log line. {@link #setVel} clamps backwards velocities to it.
+     * ARIA's {@code ArRobot::setTransNegVelMax} (ArRobot.cpp): 0 or more is ignored, below {@link
+     * #getAbsoluteMaxTransNegVel()} is capped, each with ARIA's log line. {@link #setVel} clamps backwards
+     * velocities to it.
      *
      * @param negVel mm/s, negative
      */
@@ -1683,8 +1716,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setLatVel}: a robot without lateral motion ({@link #hasLatVel()} false) is sent
-     * nothing, as ARIA's state reflection sends no lateral command to it.
+     * ARIA's {@code ArRobot::setLatVel} (ArRobot.cpp): a robot without lateral motion ({@link
+     * #hasLatVel()} false) is sent nothing, as ARIA's state reflection sends no lateral command to it.
      *
      * @param latVelocity mm/s
      */
@@ -1964,17 +1997,26 @@ public class ArRobot extends AbstractRobot {
         return 120;
     }
 
-    /** @return the robot's name as the robot reports it (ARIA's {@code getRobotName}): its name in the world */
+    /**
+     * @return the robot's name as the robot reports it (ARIA's {@code ArRobot::getRobotName}
+     *     (ArRobot.h)): its name in the world
+     */
     public String getRobotName() {
         return getName();
     }
 
-    /** @return the robot's class from its parameters, for example {@code Pioneer} (ARIA's {@code getRobotType}) */
+    /**
+     * @return the robot's class from its parameters, for example {@code Pioneer} (ARIA's {@code
+     *     ArRobot::getRobotType} (ArRobot.h))
+     */
     public String getRobotType() {
         return getParameters().robotClass();
     }
 
-    /** @return the robot's subclass from its parameters, for example {@code p3dx} (ARIA's {@code getRobotSubType}) */
+    /**
+     * @return the robot's subclass from its parameters, for example {@code p3dx} (ARIA's {@code
+     *     ArRobot::getRobotSubType} (ArRobot.h))
+     */
     public String getRobotSubType() {
         return getParameters().subclass();
     }
@@ -1993,21 +2035,23 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Gives the robot other parameters before it connects, as ARIA's {@code setRobotParams}; once it
-     * is connected the Environment has its body, so they are refused with a log line.
+     * Gives the robot other parameters before it connects, as ARIA's {@code ArRobot::setRobotParams}
+     * (ArRobot.cpp); once it is connected the Environment has its body, so they are refused with a log
+     * line.
      *
      * @param params the parameters
      */
     public void setRobotParams(RobotParameters params) {
         if (super.isConnected()) {
-            LOG.warning(() -> "robot " + getName() + ": setRobotParams: the robot is connected; its parameters are fixed");
+            LOG.warning(() -> "robot " + getName()
+                    + ": setRobotParams: the robot is connected; its parameters are fixed");
             return;
         }
         relocate(getName(), getHost(), getPort(), params);
     }
 
     /**
-     * Reads a parameter file for the robot before it connects, as ARIA's {@code loadParamFile}:
+     * Reads a parameter file for the robot before it connects, as ARIA's {@code ArRobot::loadParamFile} (ArRobot.cpp):
      * its body, speeds, sonar units, bump rings and sonar cycle.
      *
      * @param file a path, or a shipped name such as {@code p3at}
@@ -2015,7 +2059,8 @@ public class ArRobot extends AbstractRobot {
      */
     public boolean loadParamFile(String file) {
         if (super.isConnected()) {
-            LOG.warning(() -> "robot " + getName() + ": loadParamFile(" + file + "): the robot is connected; its parameters are fixed");
+            LOG.warning(() -> "robot " + getName() + ": loadParamFile(" + file
+                    + "): the robot is connected; its parameters are fixed");
             return false;
         }
         try {
@@ -2029,21 +2074,23 @@ public class ArRobot extends AbstractRobot {
             wheelEncoders = new WheelEncoders(f.distConvFactor());
             return true;
         } catch (RuntimeException e) {
-            LOG.warning(() -> "robot " + getName() + ": ArRobot::loadParamFile: Could not load " + file + ": " + e.getMessage());
+            LOG.warning(() -> "robot " + getName() + ": ArRobot::loadParamFile: Could not load " + file
+                    + ": " + e.getMessage());
             return false;
         }
     }
 
     /**
-     * Renames the robot before it connects, as ARIA's {@code setName}; null gives ARIA's default name
-     * ({@code robot}, {@code robot2}, ...). Once connected the world knows it by its name, so the
-     * rename is refused with a log line.
+     * Renames the robot before it connects, as ARIA's {@code ArRobot::setName} (ArRobot.cpp); null gives
+     * ARIA's default name ({@code robot}, {@code robot2}, ...). Once connected the world knows it by its
+     * name, so the rename is refused with a log line.
      *
      * @param name the new name, or null
      */
     public void setName(String name) {
         if (super.isConnected()) {
-            LOG.warning(() -> "robot " + getName() + ": setName(" + name + "): the robot is connected under its name; ignoring it");
+            LOG.warning(() -> "robot " + getName() + ": setName(" + name
+                    + "): the robot is connected under its name; ignoring it");
             return;
         }
         // the parameters stay, and with them the limits set
@@ -2101,8 +2148,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Sets the raw encoder pose, as ARIA's {@code setRawEncoderPose}: the robot's motion is added to
-     * it from here, and the encoder pose is not changed.
+     * Sets the raw encoder pose, as ARIA's {@code ArRobot::setRawEncoderPose} (ArRobot.h): the robot's
+     * motion is added to it from here, and the encoder pose is not changed.
      *
      * @param rawEncoderPose the new raw pose
      */
@@ -2111,8 +2158,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Sets the encoder pose, as ARIA's {@code setEncoderPose}: the robot's motion is added to it from
-     * here; the encoder transform is kept, so {@link #getPose()} moves with it.
+     * Sets the encoder pose, as ARIA's {@code ArRobot::setEncoderPose} (ArRobot.h): the robot's motion is
+     * added to it from here; the encoder transform is kept, so {@link #getPose()} moves with it.
      *
      * @param encoderPose the new encoder pose
      */
@@ -2121,8 +2168,9 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setDeadReconPose}: the encoder pose becomes {@code pose} and the encoder transform
-     * changes so that {@link #getPose()} stays where it is; the set-encoder-transform callbacks run.
+     * ARIA's {@code ArRobot::setDeadReconPose} (ArRobot.cpp): the encoder pose becomes {@code pose} and
+     * the encoder transform changes so that {@link #getPose()} stays where it is; the
+     * set-encoder-transform callbacks run.
      *
      * @param pose the new encoder (dead-reckoning) pose
      */
@@ -2163,7 +2211,10 @@ public class ArRobot extends AbstractRobot {
         events.setEncoderTransform.invoke(getName());
     }
 
-    /** @param functor run whenever the encoder transform changes ({@link #moveTo}, {@link #setEncoderTransform}, {@link #setDeadReconPose}) */
+    /**
+     * @param functor run whenever the encoder transform changes ({@link #moveTo}, {@link
+     *     #setEncoderTransform}, {@link #setDeadReconPose})
+     */
     public void addSetEncoderTransformCB(Runnable functor) {
         addSetEncoderTransformCB(functor, 50);
     }
@@ -2213,7 +2264,7 @@ public class ArRobot extends AbstractRobot {
 
     /**
      * The global pose at a past (or a little future) simulated time, from the poses of the latest
-     * cycles, as ARIA's {@code getPoseInterpPosition} (ArInterpolation's answers).
+     * cycles, as ARIA's {@code ArRobot::getPoseInterpPosition} (ArRobot.h; ArInterpolation's answers).
      *
      * @param timeStamp the time
      * @param position  set to the pose, when the answer is 0 or 1
@@ -2249,9 +2300,9 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code applyEncoderOffset}: a pose known at one time carried to another by the motion
-     * the encoders saw in between (both encoder poses interpolated, then carried into the global
-     * frame by the current encoder transform).
+     * ARIA's {@code ArRobot::applyEncoderOffset} (ArRobot.cpp): a pose known at one time carried to
+     * another by the motion the encoders saw in between (both encoder poses interpolated, then carried
+     * into the global frame by the current encoder transform).
      *
      * @param from     the pose
      * @param fromTime when {@code from} held
@@ -2280,7 +2331,10 @@ public class ArRobot extends AbstractRobot {
         return retTo;
     }
 
-    /** @return how many ms the odometry lags the state it comes with (0, ARIA's default): the histories are stamped that much earlier */
+    /**
+     * @return how many ms the odometry lags the state it comes with (0, ARIA's default): the histories
+     *     are stamped that much earlier
+     */
     public int getOdometryDelay() {
         return odometryDelayMs;
     }
@@ -2291,7 +2345,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Asks for encoder packets, as ARIA's {@code requestEncoderPackets}: from the next cycle on,
+     * Asks for encoder packets, as ARIA's {@code ArRobot::requestEncoderPackets} (ArRobot.cpp): from the next cycle on,
      * {@link #getLeftEncoder()} and {@link #getRightEncoder()} count each wheel's travel in ticks of
      * the parameter file's {@code DistConvFactor}.
      */
@@ -2595,7 +2649,10 @@ public class ArRobot extends AbstractRobot {
         return underLock(() -> battery.realVoltage());
     }
 
-    /** @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()} unless {@link #setBatteryInfo} gave another */
+    /**
+     * @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()}
+     *     unless {@link #setBatteryInfo} gave another
+     */
     public double getRealBatteryVoltageNow() {
         return underLock(() -> battery.realVoltageNow());
     }
@@ -2718,7 +2775,10 @@ public class ArRobot extends AbstractRobot {
         return 0;
     }
 
-    /** Asks for IO packets, as ARIA's {@code requestIOPackets}; the simulation has no IO, so none come. */
+    /**
+     * Asks for IO packets, as ARIA's {@code ArRobot::requestIOPackets} (ArRobot.cpp); the simulation
+     * has no IO, so none come.
+     */
     public void requestIOPackets() {
         extras.ioRequested = true;
     }
@@ -2827,7 +2887,10 @@ public class ArRobot extends AbstractRobot {
         }
     }
 
-    /** @return the charge state a program set ({@link #setChargeState}), else CHARGING_UNKNOWN: no charger is simulated */
+    /**
+     * @return the charge state a program set ({@link #setChargeState}), else CHARGING_UNKNOWN: no
+     *     charger is simulated
+     */
     public ChargeState getChargeState() {
         ChargeState c = extras.chargeState;
         return c != null ? c : ChargeState.CHARGING_UNKNOWN;
@@ -2855,8 +2918,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Sets the state of charge, as ARIA's {@code setStateOfCharge}: the robot has one from now on; a
-     * reading with a state of charge from the Environment replaces it.
+     * Sets the state of charge, as ARIA's {@code ArRobot::setStateOfCharge} (ArRobot.cpp): the robot has
+     * one from now on; a reading with a state of charge from the Environment replaces it.
      *
      * @param stateOfCharge percent
      */
@@ -2890,7 +2953,7 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * ARIA's {@code setIgnoreMicroControllerBatteryInfo}: when true, the battery readings of the
+     * ARIA's {@code ArRobot::setIgnoreMicroControllerBatteryInfo} (ArRobot.cpp): when true, the battery readings of the
      * Environment's states are ignored, so that {@link #setBatteryInfo} (an external battery's
      * readings) alone sets the voltages and state of charge.
      *
@@ -2901,8 +2964,8 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Gives a battery reading, as ARIA's {@code setBatteryInfo} does for an external battery: both
-     * voltages join their averages; the state of charge is set if given.
+     * Gives a battery reading, as ARIA's {@code ArRobot::setBatteryInfo} (ArRobot.cpp) does for an
+     * external battery: both voltages join their averages; the state of charge is set if given.
      *
      * @param realBatteryVoltage       volts
      * @param normalizedBatteryVoltage volts on the 12 V scale
@@ -2912,7 +2975,8 @@ public class ArRobot extends AbstractRobot {
     public void setBatteryInfo(double realBatteryVoltage, double normalizedBatteryVoltage, boolean haveStateOfCharge,
                                double stateOfCharge) {
         long now = simulatedMs();
-        underLock(() -> battery.setInfo(realBatteryVoltage, normalizedBatteryVoltage, haveStateOfCharge, stateOfCharge, now));
+        underLock(() -> battery.setInfo(realBatteryVoltage, normalizedBatteryVoltage, haveStateOfCharge,
+                stateOfCharge, now));
     }
 
     /** @return false: no temperature is simulated (ARIA's answer for a robot that reports −128) */
@@ -3070,10 +3134,10 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * Turns the sonars on as ARIA's {@code enableAutonomousDrivingSonar} does: ARIA then fires the
-     * sonar boards only while the robot drives; RoboSim's Pioneer has no such boards, so the whole
-     * ring fires. {@link #areSonarsEnabled()} is false and {@link #areAutonomousDrivingSonarsEnabled()}
-     * true, as in ARIA.
+     * Turns the sonars on as ARIA's {@code ArRobot::enableAutonomousDrivingSonar} (ArRobot.cpp) does: ARIA
+     * then fires the sonar boards only while the robot drives; RoboSim's Pioneer has no such boards, so
+     * the whole ring fires. {@link #areSonarsEnabled()} is false and {@link
+     * #areAutonomousDrivingSonarsEnabled()} true, as in ARIA.
      */
     public void enableAutonomousDrivingSonar() {
         sonarEnabled = false;
@@ -3081,14 +3145,17 @@ public class ArRobot extends AbstractRobot {
         request(new Command.SetSonar(true));
     }
 
-    /** @return whether {@link #enableAutonomousDrivingSonar()} turned the sonars on (and they were not turned off since) */
+    /**
+     * @return whether {@link #enableAutonomousDrivingSonar()} turned the sonars on (and they were not
+     *     turned off since)
+     */
     public boolean areAutonomousDrivingSonarsEnabled() {
         return autonomousDrivingSonar;
     }
 
     /**
-     * Adds a sonar board as ARIA's {@code addSonar}: a range device kept by number (ARIA's MTX sonar
-     * boards; a RoboSim program may list its {@link ArSonarDevice} here).
+     * Adds a sonar board as ARIA's {@code ArRobot::addSonar} (ArRobot.cpp): a range device kept by number
+     * (ARIA's MTX sonar boards; a RoboSim program may list its {@link ArSonarDevice} here).
      *
      * @param sonar       the board
      * @param sonarNumber its number
@@ -3096,7 +3163,8 @@ public class ArRobot extends AbstractRobot {
      */
     public boolean addSonar(ArRangeDevice sonar, int sonarNumber) {
         if (sonar == null) {
-            LOG.info(() -> "robot " + getName() + ": ArRobot::addSonar: Tried to add NULL sonar board as sonar number " + sonarNumber);
+            LOG.info(() -> "robot " + getName()
+                    + ": ArRobot::addSonar: Tried to add NULL sonar board as sonar number " + sonarNumber);
             return false;
         }
         synchronized (sonarBoards) {
@@ -3123,7 +3191,8 @@ public class ArRobot extends AbstractRobot {
         }
         boolean removed = sonarBoards.values().remove(sonar);
         if (!removed) {
-            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board " + sonar.getName() + " to remove");
+            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board "
+                    + sonar.getName() + " to remove");
         }
         return removed;
     }
@@ -3131,7 +3200,8 @@ public class ArRobot extends AbstractRobot {
     /** @param sonarNumber a board's number @return false, with a log line, if none has it */
     public boolean remSonar(int sonarNumber) {
         if (sonarBoards.remove(sonarNumber) == null) {
-            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board " + sonarNumber + " to remove");
+            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board "
+                    + sonarNumber + " to remove");
             return false;
         }
         return true;
