@@ -115,6 +115,10 @@ final class ActionDriver {
     }
 
     /** @return what the actions wanted at the last cycle, combined (a copy) */
+    synchronized boolean logActions() {
+        return logActions;
+    }
+
     synchronized ArActionDesired lastDesired() {
         return desired.copy();
     }

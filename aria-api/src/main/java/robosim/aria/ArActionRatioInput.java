@@ -148,15 +148,15 @@ public class ArActionRatioInput extends ArAction {
 
     /** @param callback called when an inactive ratio input is activated (last) */
     public void addActivateCallback(Runnable callback) {
-        addActivateCallback(callback, ArListPos.Pos.LAST);
+        addActivateCallback(callback, ArListPos.LAST);
     }
 
     /**
      * @param callback called when an inactive ratio input is activated
      * @param position first or last among the others
      */
-    public synchronized void addActivateCallback(Runnable callback, ArListPos.Pos position) {
-        if (position == ArListPos.Pos.FIRST) {
+    public synchronized void addActivateCallback(Runnable callback, int position) {
+        if (position == ArListPos.FIRST) {
             activateCallbacks.addFirst(callback);
         } else {
             activateCallbacks.addLast(callback);
@@ -170,15 +170,15 @@ public class ArActionRatioInput extends ArAction {
 
     /** @param callback called on deactivating (see the class's note on ARIA's condition) */
     public void addDeactivateCallback(Runnable callback) {
-        addDeactivateCallback(callback, ArListPos.Pos.LAST);
+        addDeactivateCallback(callback, ArListPos.LAST);
     }
 
     /**
      * @param callback called on deactivating (see the class's note on ARIA's condition)
      * @param position first or last among the others
      */
-    public synchronized void addDeactivateCallback(Runnable callback, ArListPos.Pos position) {
-        if (position == ArListPos.Pos.FIRST) {
+    public synchronized void addDeactivateCallback(Runnable callback, int position) {
+        if (position == ArListPos.FIRST) {
             deactivateCallbacks.addFirst(callback);
         } else {
             deactivateCallbacks.addLast(callback);

@@ -1,15 +1,15 @@
 package robosim.aria;
 
-/** Where an item goes in a list of callbacks, as ARIA's {@code ArListPos} (ariaTypedefs.h). */
+/**
+ * ARIA's {@code ArListPos}: where in a callback list a callback goes, first or last (ariaUtil.h,
+ * where {@code FIRST} is 1 and {@code LAST} 2). {@link ArRobot}'s connection callbacks take it.
+ */
 public final class ArListPos {
-    private ArListPos() {
-    }
+    /** Put the callback first in the list. */
+    public static final int FIRST = 1;
+    /** Put the callback last in the list. */
+    public static final int LAST = 2;
 
-    /** ARIA's {@code ArListPos::Pos}. */
-    public enum Pos {
-        /** first in the list */
-        FIRST,
-        /** last in the list */
-        LAST
+    private ArListPos() {
     }
 }

@@ -1,14 +1,20 @@
 package robosim.aria;
 
+import java.util.Collections;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.logging.Logger;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
 import robosim.hw.AbstractRobot;
 import robosim.hw.HardwareOptions;
 import robosim.hw.RobotRuntime;
+import robosim.hw.RunEnd;
 import robosim.hw.RuntimeChoices;
 import robosim.params.BumperParameters;
+import robosim.params.ConversionFactors;
 import robosim.params.RobotParameterFiles;
 import robosim.hw.RobotSensorResponse;
 import robosim.protocol.BatteryReading;
@@ -71,7 +77,29 @@ public class ArRobot extends AbstractRobot {
     private volatile double stoppedRotVel = STOPPED_ROT_VEL;
     private volatile double maxRotVel;
     private final ActionDriver actions = new ActionDriver(this);
-    private volatile ArTransform encoderTransform = new ArTransform();
+    /** The raw encoder, encoder and global poses' frames over the Environment's pose. */
+    private final PoseFrames frames = new PoseFrames();
+    /** The latest global and encoder poses, for ARIA's interpolation calls. */
+    private final PoseHistory poseHistory = new PoseHistory();
+    private final PoseHistory encoderPoseHistory = new PoseHistory();
+    private volatile int odometryDelayMs;
+    /** The absolute maxima, the negative velocity limit and the lateral limits. */
+    private final Maxima maxima = new Maxima();
+    /** The connection's callbacks, times and waits. */
+    private final ConnectionEvents events = new ConnectionEvents();
+    /** The robot's cycle's extras: warning time, counts of states per simulated second. */
+    private final CycleStats cycleStats = new CycleStats();
+    /** The robot's charge and IO, as far as a program sets them. */
+    private final Extras extras = new Extras();
+    /** ARIA's sonar boards ({@code addSonar}), by number. */
+    private final Map<Integer, ArRangeDevice> sonarBoards = Collections.synchronizedMap(new TreeMap<>());
+    private volatile boolean autonomousDrivingSonar;
+    private volatile double transAsked;
+    private volatile double rotAsked;
+    private volatile boolean forcedTryingToMove;
+    private volatile WheelEncoders wheelEncoders = new WheelEncoders(1);
+    private volatile ArPTZ ptz;
+    private static final Logger LOG = Logger.getLogger(ArRobot.class.getName());
     private volatile BumperParameters bumpers = BumperParameters.ARIA_DEFAULTS;
     private volatile boolean cycleStopped;
     private volatile int sonarCycleMs;
@@ -114,6 +142,7 @@ public class ArRobot extends AbstractRobot {
         this(name, host, port, RobotParameterFiles.load(paramFile));
         this.bumpers = RobotParameterFiles.bumpers(paramFile);
         this.sonarCycleMs = RobotParameterFiles.sonarCycle(paramFile);
+        this.wheelEncoders = new WheelEncoders(RobotParameterFiles.conversionFactors(paramFile).distConvFactor());
     }
 
     /**
@@ -144,11 +173,15 @@ public class ArRobot extends AbstractRobot {
         this.maxTransVel = parameters.maxVelocity();
         this.maxRotVel = parameters.maxRVelocity();
         this.sonar = new SonarRing(parameters.sonarUnits(), parameters.sonarMaxRange());
+        maxima.reset(parameters);
     }
 
 
     /**
-     * Connects to the Environment, waiting (bounded) for its welcome.
+     * Connects to the Environment, waiting (bounded) for its welcome, then for the stabilizing time
+     * ({@link #setStabilizingTime}), as ARIA's {@code ArRobot::blockingConnect} (ArRobot.cpp) does. On success the
+     * stabilizing callbacks run, then the connect callbacks ({@link #addConnectCB}); on failure the
+     * failed-connect callbacks ({@link #addFailedConnectCB}).
      *
      * @return true if connected; otherwise {@link #getConnectionError()} says why
      */
@@ -157,7 +190,30 @@ public class ArRobot extends AbstractRobot {
         if (through != null && !isConnected()) {
             usePioneerServer(getName(), through.host(), through.port());
         }
-        return tryConnect(HardwareOptions.defaults());
+        if (!tryConnect(HardwareOptions.defaults())) {
+            failedConnect();
+            return false;
+        }
+        while (events.isStabilizing && super.isConnected()) {
+            sleepSimulated(getStepMs());
+        }
+        if (!isConnected()) {
+            events.isStabilizing = false;
+            failedConnect();
+            return false;
+        }
+        return true;
+    }
+
+    /**
+     * ARIA's {@code blockingConnect(tryHarderToConnect)}: as {@link #blockingConnect()}. Trying
+     * harder (closing a connection a crashed program left open) has no meaning for the Environment.
+     *
+     * @param tryHarderToConnect ARIA's flag; ignored
+     * @return whether the robot connected
+     */
+    public boolean blockingConnect(boolean tryHarderToConnect) {
+        return blockingConnect();
     }
 
     /**
@@ -192,10 +248,435 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
+     * ARIA's {@code ArRobot::asyncConnect} (ArRobot.cpp): refused (false) unless the robot's cycle was started with
+     * {@link #runAsync()} and the robot is not connected, as in ARIA. The connection itself is made
+     * in the calling thread, which becomes part of the robot's code as the lockstep requires, so this
+     * returns once it has succeeded or failed; as in ARIA, the callbacks and
+     * {@link #waitForConnectOrConnFail} tell which.
+     *
+     * @return whether the connection was attempted
+     */
+    public boolean asyncConnect() {
+        if (!runningAsync || isConnected()) {
+            return false;
+        }
+        blockingConnect();
+        return true;
+    }
+
+    /**
+     * The connection failed: ARIA's {@code ArRobot::failedConnect} (ArRobot.cpp; its log line, the
+     * callbacks, the waiters).
+     */
+    private void failedConnect() {
+        LOG.warning(() -> "robot " + getName() + ": Failed to connect to robot.");
+        events.failedConnect.invoke(getName());
+        events.failed();
+    }
+
+    /**
+     * Whether the robot is connected: as ARIA's, only once the connection has finished (the
+     * Environment welcomed the robot and it has stabilized, {@link #isStabilizing()}), and until it
+     * ends.
+     */
+    @Override
+    public boolean isConnected() {
+        return super.isConnected() && events.isLive();
+    }
+
+    /**
+     * Leaves the run, as ARIA's {@code ArRobot::disconnect} (ArRobot.cpp): if the robot was connected, the
+     * disconnect-normally callbacks run first ({@link #addDisconnectNormallyCB}), then the run-exit
+     * ones if the cycle was running ({@link #addRunExitCB}).
+     *
+     * @return true, as ARIA's answers when there is no connection to close or it closed
+     */
+    @Override
+    public boolean disconnect() {
+        if (events.claimEnd()) {
+            LOG.info(() -> "robot " + getName() + ": Disconnecting from robot.");
+            events.disconnectNormally.invoke(getName());
+            super.disconnect();
+            loopExited();
+        } else {
+            events.isStabilizing = false;
+            super.disconnect();
+        }
+        return true;
+    }
+
+    /**
+     * ARIA's {@code ArRobot::dropConnection} (ArRobot.cpp): leaves the run as a lost connection does, with the
+     * disconnect-on-error callbacks ({@link #addDisconnectOnErrorCB}) instead of the normal ones;
+     * nothing when the robot is not connected.
+     *
+     * @param technicalReason why, for the log and {@link #getDropConnectionReason()}; null for ARIA's default
+     * @param userReason      why, for a user ({@link #getDropConnectionUserReason()}); null for the technical one
+     */
+    public void dropConnection(String technicalReason, String userReason) {
+        if (!isConnected() || !events.claimEnd()) {
+            return;
+        }
+        events.dropReason = technicalReason != null ? technicalReason
+                : "Lost connection to the microcontroller because of unknown error.";
+        events.dropUserReason = userReason != null ? userReason : events.dropReason;
+        LOG.warning(() -> "robot " + getName() + ": " + events.dropReason);
+        events.disconnectOnError.invoke(getName());
+        super.disconnect();
+        loopExited();
+    }
+
+    /** As {@link #dropConnection(String, String)} with ARIA's default reason. */
+    public void dropConnection() {
+        dropConnection(null, null);
+    }
+
+    /** @return why the connection was dropped (ARIA's technical reason); empty if it was not */
+    public String getDropConnectionReason() {
+        return events.dropReason;
+    }
+
+    /** @return why the connection was dropped, for a user; empty if it was not */
+    public String getDropConnectionUserReason() {
+        return events.dropUserReason;
+    }
+
+    /**
+     * Tells the end of the run once, when the program sees it (after a yield): the
+     * disconnect-on-error callbacks if the robot was dropped or lost ({@link RunEnd.Kind#isFailure()}),
+     * with its description as the drop reason, else the disconnect-normally ones; then the run-exit ones.
+     */
+    private void noticeEnd() {
+        if (super.isConnected() || !events.claimEnd()) {
+            return;
+        }
+        RunEnd end = getRunEnd();
+        if (end != null && end.kind().isFailure()) {
+            events.dropReason = end.describe();
+            events.dropUserReason = end.reason();
+            LOG.warning(() -> "robot " + getName() + ": " + events.dropReason);
+            events.disconnectOnError.invoke(getName());
+        } else {
+            events.disconnectNormally.invoke(getName());
+        }
+        loopExited();
+    }
+
+    /** The cycle stopped: the run-exit callbacks, once, if it was running (ARIA's sync loop's exit). */
+    private void loopExited() {
+        boolean was = runningAsync;
+        runningAsync = false;
+        if (was) {
+            events.runExit.invoke(getName());
+        }
+        events.runExited();
+    }
+
+    /**
+     * ARIA's connection steps, run when the Environment has welcomed the robot: the opened time,
+     * then stabilizing ({@link #addStabilizingCB}), finished at once when the stabilizing time is 0
+     * (ARIA's default), else by the cycle once it has passed; and the sonar cycle the parameter file
+     * gives ({@link #getSonarCycle()}).
+     */
+    @Override
+    protected void welcomed(RobotState initial) {
+        events.openedMs = initial.timeMs();
+        if (sonarCycleMs > 0) {
+            request(new Command.SetSonarCycle(sonarCycleMs));
+        }
+        if (runningAsync && super.isConnected()) {
+            keepAlive(true);
+        }
+        events.isStabilizing = true;
+        events.stabilizingStartMs = initial.timeMs();
+        events.stabilizing.invoke(getName());
+        if (events.stabilizingTimeMs == 0) {
+            finishedConnection();
+        }
+    }
+
+    /**
+     * ARIA's {@code ArRobot::finishedConnection} (ArRobot.cpp): connected; the trip odometer restarts;
+     * the connect callbacks; the waiters.
+     */
+    private void finishedConnection() {
+        events.isStabilizing = false;
+        resetTripOdometer();
+        events.connected();
+        events.connect.invoke(getName());
+    }
+
+    // ---- connection callbacks and waits ----
+
+    /** @param functor run when the robot has connected (after stabilizing), last in the list */
+    public void addConnectCB(Runnable functor) {
+        addConnectCB(functor, ArListPos.LAST);
+    }
+
+    /**
+     * Adds a connect callback, as ARIA's {@code addConnectCB} (ArRobot.cpp).
+     *
+     * @param functor  run in the connecting thread when the robot has connected
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}; another is ignored with a log line
+     */
+    public void addConnectCB(Runnable functor, int position) {
+        events.connect.add(functor, position);
+    }
+
+    /** @param functor a connect callback to remove */
+    public void remConnectCB(Runnable functor) {
+        events.connect.remove(functor);
+    }
+
+    /** @param functor run when {@link #blockingConnect()} fails, last in the list */
+    public void addFailedConnectCB(Runnable functor) {
+        addFailedConnectCB(functor, ArListPos.LAST);
+    }
+
+    /** @param functor run when a connection fails @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST} */
+    public void addFailedConnectCB(Runnable functor, int position) {
+        events.failedConnect.add(functor, position);
+    }
+
+    /** @param functor a failed-connect callback to remove */
+    public void remFailedConnectCB(Runnable functor) {
+        events.failedConnect.remove(functor);
+    }
+
+    /** @param functor run when the robot leaves normally, last in the list */
+    public void addDisconnectNormallyCB(Runnable functor) {
+        addDisconnectNormallyCB(functor, ArListPos.LAST);
+    }
+
+    /**
+     * @param functor  run when the robot leaves normally: {@link #disconnect()}, or the Environment
+     *                 ended the run (seen at the program's next yield)
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
+     */
+    public void addDisconnectNormallyCB(Runnable functor, int position) {
+        events.disconnectNormally.add(functor, position);
+    }
+
+    /** @param functor a disconnect-normally callback to remove */
+    public void remDisconnectNormallyCB(Runnable functor) {
+        events.disconnectNormally.remove(functor);
+    }
+
+    /** @param functor run when the connection is lost or dropped, last in the list */
+    public void addDisconnectOnErrorCB(Runnable functor) {
+        addDisconnectOnErrorCB(functor, ArListPos.LAST);
+    }
+
+    /**
+     * @param functor  run when the connection is lost, or the Environment drops the robot (seen at
+     *                 the program's next yield), or {@link #dropConnection} is called
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
+     */
+    public void addDisconnectOnErrorCB(Runnable functor, int position) {
+        events.disconnectOnError.add(functor, position);
+    }
+
+    /** @param functor a disconnect-on-error callback to remove */
+    public void remDisconnectOnErrorCB(Runnable functor) {
+        events.disconnectOnError.remove(functor);
+    }
+
+    /** @param functor run when the robot's cycle stops, last in the list */
+    public void addRunExitCB(Runnable functor) {
+        addRunExitCB(functor, ArListPos.LAST);
+    }
+
+    /**
+     * @param functor  run once when a cycle started by {@link #run()} or {@link #runAsync()} stops:
+     *                 {@link #stopRunning}, or the robot leaves the run
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
+     */
+    public void addRunExitCB(Runnable functor, int position) {
+        events.runExit.add(functor, position);
+    }
+
+    /** @param functor a run-exit callback to remove */
+    public void remRunExitCB(Runnable functor) {
+        events.runExit.remove(functor);
+    }
+
+    /** @return the run-exit callbacks, in order (a copy) */
+    public List<Runnable> getRunExitListCopy() {
+        return events.runExit.copy();
+    }
+
+    /** @param functor run when the robot starts stabilizing after the Environment's welcome, last in the list */
+    public void addStabilizingCB(Runnable functor) {
+        addStabilizingCB(functor, ArListPos.LAST);
+    }
+
+    /**
+     * @param functor run when the robot starts stabilizing
+     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
+     */
+    public void addStabilizingCB(Runnable functor, int position) {
+        events.stabilizing.add(functor, position);
+    }
+
+    /** @param functor a stabilizing callback to remove */
+    public void remStabilizingCB(Runnable functor) {
+        events.stabilizing.remove(functor);
+    }
+
+    /** @return whether the robot is stabilizing: welcomed, but its stabilizing time has not passed */
+    public boolean isStabilizing() {
+        return events.isStabilizing;
+    }
+
+    /**
+     * @param mSecs how long after the welcome the robot stabilizes before it counts as connected,
+     *              simulated ms; 0 or less means 0 (ARIA's default), as in ARIA
+     */
+    public void setStabilizingTime(int mSecs) {
+        events.stabilizingTimeMs = Math.max(0, mSecs);
+    }
+
+    /** @return the stabilizing time, ms */
+    public int getStabilizingTime() {
+        return events.stabilizingTimeMs;
+    }
+
+    /** The states ARIA's waits end in. */
+    public enum WaitState {
+        /** The robot has connected. */
+        WAIT_CONNECTED,
+        /** The robot failed to connect. */
+        WAIT_FAILED_CONN,
+        /** The robot's cycle has stopped. */
+        WAIT_RUN_EXIT,
+        /** The wait reached its time limit. */
+        WAIT_TIMEDOUT,
+        /** The waiting thread was interrupted. */
+        WAIT_INTR,
+        /** The wait failed. */
+        WAIT_FAIL
+    }
+
+    /** @return as {@link #waitForConnect(long)} with no time limit */
+    public WaitState waitForConnect() {
+        return waitForConnect(0);
+    }
+
+    /**
+     * Waits until another thread has connected the robot, as ARIA's {@code ArRobot::waitForConnect}
+     * (ArRobot.cpp); before a connection there is no simulated time, so the wait is in wall-clock time.
+     *
+     * @param msecs at most this many ms; 0 for no limit
+     * @return {@link WaitState#WAIT_CONNECTED} at once if connected, or once connected (or woken by
+     *         {@link #wakeAllConnWaitingThreads()}, as in ARIA); {@link WaitState#WAIT_TIMEDOUT};
+     *         {@link WaitState#WAIT_INTR} if interrupted
+     */
+    public WaitState waitForConnect(long msecs) {
+        if (isConnected()) {
+            return WaitState.WAIT_CONNECTED;
+        }
+        return switch (events.await(ConnectionEvents.Kind.CONN, this::isConnected, msecs)) {
+            case 0 -> WaitState.WAIT_CONNECTED;
+            case 1 -> WaitState.WAIT_TIMEDOUT;
+            default -> WaitState.WAIT_INTR;
+        };
+    }
+
+    /** @return as {@link #waitForConnectOrConnFail(long)} with no time limit */
+    public WaitState waitForConnectOrConnFail() {
+        return waitForConnectOrConnFail(0);
+    }
+
+    /**
+     * As {@link #waitForConnect(long)}, also ending when a connection fails.
+     *
+     * @param msecs at most this many wall-clock ms; 0 for no limit
+     * @return {@link WaitState#WAIT_CONNECTED}, {@link WaitState#WAIT_FAILED_CONN} (failed, or woken
+     *         while not connected), {@link WaitState#WAIT_TIMEDOUT} or {@link WaitState#WAIT_INTR}
+     */
+    public WaitState waitForConnectOrConnFail(long msecs) {
+        if (isConnected()) {
+            return WaitState.WAIT_CONNECTED;
+        }
+        return switch (events.await(ConnectionEvents.Kind.CONN_OR_FAIL, this::isConnected, msecs)) {
+            case 0 -> isConnected() ? WaitState.WAIT_CONNECTED : WaitState.WAIT_FAILED_CONN;
+            case 1 -> WaitState.WAIT_TIMEDOUT;
+            default -> WaitState.WAIT_INTR;
+        };
+    }
+
+    /** Wakes every thread in {@link #waitForConnect}, {@link #waitForConnectOrConnFail} and {@link #waitForRunExit}. */
+    public void wakeAllWaitingThreads() {
+        wakeAllConnWaitingThreads();
+        wakeAllRunExitWaitingThreads();
+    }
+
+    /** Wakes the threads in {@link #waitForConnect} and {@link #waitForConnectOrConnFail}. */
+    public void wakeAllConnWaitingThreads() {
+        events.wakeConn();
+        events.wakeConnOrFail();
+    }
+
+    /** Wakes the threads in {@link #waitForConnectOrConnFail}. */
+    public void wakeAllConnOrFailWaitingThreads() {
+        events.wakeConnOrFail();
+    }
+
+    /** Wakes the threads in {@link #waitForRunExit}. */
+    public void wakeAllRunExitWaitingThreads() {
+        events.wakeRunExit();
+    }
+
+    /** @return the simulated time the Environment welcomed the robot (0 before) */
+    public ArTime getConnectionOpenedTime() {
+        return timeAt(events.openedMs);
+    }
+
+    /** @return the simulated time of the latest state the Environment sent (each step's state is ARIA's packet) */
+    public ArTime getLastPacketTime() {
+        return timeAt(state().timeMs());
+    }
+
+    /** @return the simulated time of the latest odometry: the latest state's, as every state carries the pose */
+    public ArTime getLastOdometryTime() {
+        return timeAt(state().timeMs());
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setConnectionTimeoutTime} (ArRobot.cpp), logged as ARIA logs it; 0 or less
+     * means 0. The value is answered by {@link #getConnectionTimeoutTime()}; the robot itself counts the
+     * Environment lost after the hardware's lost time ({@code robosim.hw.HardwareOptions}, 10 s of
+     * wall-clock silence by default), since simulated time stops when the Environment does.
+     *
+     * @param mSecs the timeout, ms
+     */
+    public void setConnectionTimeoutTime(int mSecs) {
+        LOG.info(() -> "robot " + getName() + ": ArRobot::setConnectionTimeoutTime: Setting timeout to "
+                + mSecs + " mSecs");
+        events.timeoutMs = Math.max(0, mSecs);
+    }
+
+    /** @return the connection timeout set, ms (ARIA's default 8000) */
+    public int getConnectionTimeoutTime() {
+        return events.timeoutMs;
+    }
+
+    /** @return an {@link ArTime} at a simulated time */
+    private static ArTime timeAt(long ms) {
+        ArTime t = new ArTime();
+        t.setSec(ms / 1000);
+        t.setMSec(ms % 1000);
+        return t;
+    }
+
+    /**
      * One robot cycle, run as each step's state arrives (while the robot's code is yielded): the
      * counter goes up, the sonar readings are taken, then the sensor-interpretation tasks, the
      * actions (resolved and sent, see {@link #addAction}) and the user tasks run, in ARIA's task
-     * order, all under the robot's lock, as ARIA's cycle does.
+     * order, all under the robot's lock, as ARIA's cycle does. Before them the pose histories take
+     * the cycle's poses ({@link #getPoseInterpPosition}) and a stabilizing robot whose stabilizing
+     * time has passed becomes connected; after them {@link #forceTryingToMove()} is undone and a
+     * cycle slower than {@link #getCycleWarningTime()} in wall-clock time is logged.
      */
     @Override
     protected void responded(RobotSensorResponse response) {
@@ -205,18 +686,35 @@ public class ArRobot extends AbstractRobot {
             if (cycleStopped) {
                 return;
             }
+            long began = System.nanoTime();
             counter++;
             RobotState s = response.state();
             SonarReading ring = s.get(SonarReading.PART);
             sonar.update(ring.ranges(), ring.fresh(), getPose(), counter, s.timeMs());
             odometer.update(s);
-            battery.update(s.get(BatteryReading.PART));
-            sensorInterpTasks.runAll(getName());
-            actions.cycle(s.timeMs());
-            userTasks.runAll(getName());
+            wheelEncoders.update(s);
+            logReceived(s);
+            battery.update(s.get(BatteryReading.PART), s.timeMs());
+            cycleStats.count(s.timeMs(), ring.ranges().length > 0);
+            long odometryMs = s.timeMs() - odometryDelayMs;
+            poseHistory.add(getPose(), odometryMs);
+            encoderPoseHistory.add(getEncoderPose(), odometryMs);
+            if (events.isStabilizing && s.timeMs() - events.stabilizingStartMs > events.stabilizingTimeMs) {
+                finishedConnection();
+            }
+            runTasks(s.timeMs());
+            forcedTryingToMove = false;
+            cycleStats.cycleTook(System.nanoTime() - began, getName());
         } finally {
             lock.unlock();
         }
+    }
+
+    /** The tasks of one cycle: sensor interpretation, the actions, the user tasks. */
+    private void runTasks(long timeMs) {
+        sensorInterpTasks.runAll(getName());
+        actions.cycle(timeMs);
+        userTasks.runAll(getName());
     }
 
     // ---- the cycle, tasks and the robot's lock ----
@@ -224,6 +722,97 @@ public class ArRobot extends AbstractRobot {
     /** @return the cycle counter: one more for every step's state received */
     public long getCounter() {
         return counter;
+    }
+
+    /** Adds one to the cycle counter, as ARIA's {@code ArRobot::incCounter} (ArRobot.h). */
+    public void incCounter() {
+        counter++;
+    }
+
+    /**
+     * Runs the robot's tasks once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task tree
+     * once, for a program that drives the cycle itself: the sensor-interpretation tasks, the actions
+     * (their commands queued for the next step) and the user tasks, under the robot's lock; then the
+     * counter goes up. No new state is read: that comes with each step.
+     */
+    public void loopOnce() {
+        underLock(() -> {
+            runTasks(simulatedMs());
+            counter++;
+        });
+    }
+
+    /**
+     * @return the cycle time, ms: the robot's cycle is the world's step (ARIA's cycle chained to its
+     *         packets), so the step length (100 before connecting, ARIA's default)
+     */
+    public int getCycleTime() {
+        return getStepMs();
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setCycleTime} (ArRobot.cpp): here the cycle is the world's step, one cycle per state the
+     * Environment sends, so the value is ignored with a log line; the world file sets the step.
+     *
+     * @param ms the cycle time ARIA would use
+     */
+    public void setCycleTime(int ms) {
+        LOG.info(() -> "robot " + getName() + ": setCycleTime(" + ms + "): the robot's cycle is the world's step of "
+                + getStepMs() + " ms; ignoring it");
+    }
+
+    /** @return the cycle warning time, ms (ARIA's default 250; 0 means no warnings) */
+    public int getCycleWarningTime() {
+        return cycleStats.warningMs;
+    }
+
+    /**
+     * @param ms a cycle whose tasks take longer than this, in wall-clock time, is logged (it holds
+     *           the whole simulation); 0 for never, as in ARIA
+     */
+    public void setCycleWarningTime(int ms) {
+        cycleStats.warningMs = ms;
+    }
+
+    /** @return whether the current cycle will not be logged as slow ({@link #setNoTimeWarningThisCycle}) */
+    public boolean getNoTimeWarningThisCycle() {
+        return cycleStats.noTimeWarningThisCycle;
+    }
+
+    /** @param noTimeWarningThisCycle whether the current cycle is not to be logged as slow; cleared after the cycle */
+    public void setNoTimeWarningThisCycle(boolean noTimeWarningThisCycle) {
+        cycleStats.noTimeWarningThisCycle = noTimeWarningThisCycle;
+    }
+
+    /**
+     * @return true: the cycle is chained to the states' arrival, each step's state starting one, as
+     *     ARIA's is by default
+     */
+    public boolean isCycleChained() {
+        return true;
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setCycleChained} (ArRobot.h): the cycle is always chained to the states here (there is no
+     * timer to run it between steps), so false is ignored with a log line.
+     *
+     * @param cycleChained whether the cycle follows the states
+     */
+    public void setCycleChained(boolean cycleChained) {
+        if (!cycleChained) {
+            LOG.info(() -> "robot " + getName()
+                    + ": setCycleChained(false): the cycle runs once per step's state; ignoring it");
+        }
+    }
+
+    /** @return the states the Environment sent in the last whole simulated second (ARIA's motor packets a second) */
+    public int getMotorPacCount() {
+        return cycleStats.motorPacCount(simulatedMs());
+    }
+
+    /** @return the states with sonar readings in the last whole simulated second (ARIA's sonar packets a second) */
+    public int getSonarPacCount() {
+        return cycleStats.sonarPacCount(simulatedMs());
     }
 
     /**
@@ -244,6 +833,48 @@ public class ArRobot extends AbstractRobot {
         return userTasks.remove(name);
     }
 
+    /** @param functor the body of the user task to remove @return whether it was there */
+    public boolean remUserTask(Runnable functor) {
+        return userTasks.remove(functor);
+    }
+
+    /** @param name a user task's name @return the task, or null (ARIA's {@code ArRobot::findUserTask} (ArRobot.cpp)) */
+    public ArSyncTask findUserTask(String name) {
+        return userTasks.find(name);
+    }
+
+    /** @param functor a user task's body @return the task, or null */
+    public ArSyncTask findUserTask(Runnable functor) {
+        return userTasks.find(functor);
+    }
+
+    /**
+     * @param name a task's name
+     * @return the sensor-interpretation or user task of that name (in that order, as ARIA's task
+     *         tree has them), or null
+     */
+    public ArSyncTask findTask(String name) {
+        ArSyncTask t = sensorInterpTasks.find(name);
+        return t != null ? t : userTasks.find(name);
+    }
+
+    /** @param functor a task's body @return the sensor-interpretation or user task with it, or null */
+    public ArSyncTask findTask(Runnable functor) {
+        ArSyncTask t = sensorInterpTasks.find(functor);
+        return t != null ? t : userTasks.find(functor);
+    }
+
+    /** Logs the user tasks in running order (ARIA's {@code ArRobot::logUserTasks} (ArRobot.cpp)). */
+    public void logUserTasks() {
+        userTasks.log(getName());
+    }
+
+    /** Logs every task of the cycle in running order: the sensor-interpretation tasks, then the user tasks. */
+    public void logAllTasks() {
+        sensorInterpTasks.log(getName());
+        userTasks.log(getName());
+    }
+
     /**
      * Adds a task run once per cycle right after the new readings are in, before the user tasks:
      * where range devices take their readings.
@@ -259,6 +890,11 @@ public class ArRobot extends AbstractRobot {
     /** @param name the sensor-interpretation task to remove @return whether it was there */
     public boolean remSensorInterpTask(String name) {
         return sensorInterpTasks.remove(name);
+    }
+
+    /** @param functor the body of the sensor-interpretation task to remove @return whether it was there */
+    public boolean remSensorInterpTask(Runnable functor) {
+        return sensorInterpTasks.remove(functor);
     }
 
     /** Takes the robot's lock, which the cycle holds while it updates the robot and runs its tasks. */
@@ -290,6 +926,7 @@ public class ArRobot extends AbstractRobot {
                     + " would stop its cycle; unlock() first");
         }
         super.sleepSimulated(ms);
+        noticeEnd();
     }
 
     /** @return whether the calling thread holds the robot's lock */
@@ -305,7 +942,7 @@ public class ArRobot extends AbstractRobot {
     public void runAsync() {
         cycleStopped = false;
         runningAsync = true;
-        if (isConnected()) {
+        if (super.isConnected()) {
             keepAlive(true);
         }
     }
@@ -341,11 +978,30 @@ public class ArRobot extends AbstractRobot {
         run();
     }
 
-    /** Waits, yielded, until the robot is disconnected. */
-    public void waitForRunExit() {
-        while (isConnected()) {
-            sleepSimulated(Long.MAX_VALUE / 4);
+    /** @return as {@link #waitForRunExit(long)} with no time limit */
+    public WaitState waitForRunExit() {
+        return waitForRunExit(0);
+    }
+
+    /**
+     * Waits, yielded, until the robot's cycle stops ({@link #stopRunning}, or the robot leaves the
+     * run), as ARIA's {@code ArRobot::waitForRunExit} (ArRobot.cpp).
+     *
+     * @param msecs at most this many simulated ms; 0 for no limit
+     * @return {@link WaitState#WAIT_RUN_EXIT} once the cycle has stopped (or the wait was woken by
+     *         {@link #wakeAllRunExitWaitingThreads()}, as in ARIA), else {@link WaitState#WAIT_TIMEDOUT}
+     */
+    public WaitState waitForRunExit(long msecs) {
+        long start = getSimTimeMs();
+        long wakes = events.runExitEvents();
+        while (super.isConnected() && !cycleStopped && events.runExitEvents() == wakes) {
+            if (msecs > 0 && getSimTimeMs() - start >= msecs) {
+                return WaitState.WAIT_TIMEDOUT;
+            }
+            sleepSimulated(getStepMs());
         }
+        noticeEnd();
+        return WaitState.WAIT_RUN_EXIT;
     }
 
     // ---- actions ----
@@ -410,6 +1066,156 @@ public class ArRobot extends AbstractRobot {
         return actions.lastDesired();
     }
 
+    /** @return what the resolver gave at the last cycle: ARIA's name for {@link #getActionDesired()} */
+    public ArActionDesired getLastActionResolverOutput() {
+        return getActionDesired();
+    }
+
+    /** @return the actions with their priorities, highest first: ARIA's action map, as {@link #getActionList()} */
+    public List<ArResolver.Entry> getActionMap() {
+        return getActionList();
+    }
+
+    /** Logs the active actions by priority, highest first, as ARIA's {@code logActions()}. */
+    public void logActions() {
+        logActions(false);
+    }
+
+    /**
+     * Logs the actions by priority, highest first, as ARIA's {@code ArRobot::logActions} (ArRobot.cpp): a
+     * priority line, then each action's name.
+     *
+     * @param logDeactivated whether the deactivated actions are listed too
+     */
+    public void logActions(boolean logDeactivated) {
+        StringBuilder b = new StringBuilder(logDeactivated
+                ? "The action list (" + getActionList().size() + " total):" : "The active action list:");
+        Integer last = null;
+        for (ArResolver.Entry e : getActionList()) {
+            if (!logDeactivated && !e.action().isActive()) {
+                continue;
+            }
+            if (last == null || last != e.priority()) {
+                b.append("\nPriority ").append(e.priority()).append(':');
+                last = e.priority();
+            }
+            b.append("\n  ").append(e.action().getName()).append(e.action().isActive() ? "" : " (deactivated)");
+        }
+        LOG.info(() -> "robot " + getName() + ": " + b);
+    }
+
+    /** @return whether each cycle logs every action's desire ({@link #setLogActions}) */
+    public boolean getLogActions() {
+        return actions.logActions();
+    }
+
+    /**
+     * @param ptz the robot's camera, for ARIA's {@code ArRobot::getPTZ} (ArRobot.h; an {@link ArPTZ}
+     *     is given the robot when made)
+     */
+    public void setPTZ(ArPTZ ptz) {
+        this.ptz = ptz;
+    }
+
+    /** @return the camera given to {@link #setPTZ}, or null */
+    public ArPTZ getPTZ() {
+        return ptz;
+    }
+
+    /** @return whether every motion command sent is logged */
+    public boolean getLogMovementSent() {
+        return extras.logMovementSent;
+    }
+
+    /** @param logMovementSent whether every motion command sent is logged, as ARIA's "Non-action ..." lines */
+    public void setLogMovementSent(boolean logMovementSent) {
+        extras.logMovementSent = logMovementSent;
+    }
+
+    /** @return whether every cycle's pose is logged */
+    public boolean getLogMovementReceived() {
+        return extras.logMovementReceived;
+    }
+
+    /** @param logMovementReceived whether every cycle logs the pose it received */
+    public void setLogMovementReceived(boolean logMovementReceived) {
+        extras.logMovementReceived = logMovementReceived;
+    }
+
+    /** @return whether every cycle's velocities are logged */
+    public boolean getLogVelocitiesReceived() {
+        return extras.logVelocitiesReceived;
+    }
+
+    /** @param logVelocitiesReceived whether every cycle logs the velocities and heading it received */
+    public void setLogVelocitiesReceived(boolean logVelocitiesReceived) {
+        extras.logVelocitiesReceived = logVelocitiesReceived;
+    }
+
+    /** @return whether every state's whole content is logged (ARIA's SIP contents) */
+    public boolean getLogSIPContents() {
+        return extras.logSipContents;
+    }
+
+    /** @param logSIP whether every cycle logs the whole state it received */
+    public void setLogSIPContents(boolean logSIP) {
+        extras.logSipContents = logSIP;
+    }
+
+    /** @return whether every state received is logged (its step and time) */
+    public boolean getPacketsReceivedTracking() {
+        return extras.packetsReceivedTracking;
+    }
+
+    /** @param packetsReceivedTracking whether every state received is logged, as ARIA tracks packets */
+    public void setPacketsReceivedTracking(boolean packetsReceivedTracking) {
+        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsReceivedTracking ? "" : "not ")
+                + "tracking packets received");
+        extras.packetsReceivedTracking = packetsReceivedTracking;
+    }
+
+    /** @return whether every request sent is logged */
+    public boolean getPacketsSentTracking() {
+        return extras.packetsSentTracking;
+    }
+
+    /** @param packetsSentTracking whether every request sent is logged, with ARIA's log line on change */
+    public void setPacketsSentTracking(boolean packetsSentTracking) {
+        LOG.info(() -> "robot " + getName() + ": ArRobot: " + (packetsSentTracking ? "" : "not ")
+                + "tracking packets sent");
+        extras.packetsSentTracking = packetsSentTracking;
+    }
+
+    /**
+     * Queues a request, logging it when {@link #setPacketsSentTracking} or (for motion) {@link
+     * #setLogMovementSent} says so.
+     */
+    @Override
+    protected void request(Command command) {
+        if (extras.packetsSentTracking || extras.logMovementSent && command instanceof Command.Motion) {
+            LOG.info(() -> "robot " + getName() + ": sent " + command);
+        }
+        super.request(command);
+    }
+
+    /** The logging a program turned on for each state received. */
+    private void logReceived(RobotState s) {
+        if (extras.packetsReceivedTracking) {
+            LOG.info(() -> "robot " + getName() + ": received the state of step " + s.step() + " at "
+                    + s.timeMs() + " ms");
+        }
+        if (extras.logSipContents) {
+            LOG.info(() -> "robot " + getName() + ": state " + s);
+        }
+        if (extras.logMovementReceived) {
+            LOG.info(() -> "robot " + getName() + ": pose " + getPose() + " (encoder " + getEncoderPose() + ")");
+        }
+        if (extras.logVelocitiesReceived) {
+            LOG.info(() -> "robot " + getName() + ": vel " + s.vel() + " rotVel " + s.rotVel() + " left " + s.leftVel()
+                    + " right " + s.rightVel() + " th " + getTh());
+        }
+    }
+
     /**
      * Gives motion back to the actions after direct motion commands, and forgets the actions' last
      * values so that what they want is sent again (ARIA's {@code clearDirectMotion}).
@@ -438,12 +1244,64 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
+     * Whether the robot is trying to move, as ARIA's state reflection decides it each cycle: a
+     * velocity asked of more than 0.5 mm/s or deg/s (directly or by the actions), a move not yet
+     * done, a heading more than 1° away; or {@link #forceTryingToMove()} in this cycle.
+     *
+     * @return whether the robot is trying to move
+     */
+    public boolean isTryingToMove() {
+        if (forcedTryingToMove) {
+            return true;
+        }
+        long now = simulatedMs();
+        boolean trans;
+        if (actions.transDirect(now)) {
+            trans = moveStart != null ? !isMoveDone() : transAsked > 0.5;
+        } else {
+            ArActionDesired d = actions.lastDesired();
+            trans = d.getVelStrength() > 0 && Math.abs(d.getVel()) > 0.5;
+        }
+        boolean rot;
+        if (actions.rotDirect(now)) {
+            Double target = headingTarget;
+            rot = target != null ? Math.abs(ArMath.subAngle(getTh(), target)) > 1 : rotAsked > 0.5;
+        } else {
+            ArActionDesired d = actions.lastDesired();
+            rot = d.getRotVelStrength() > 0 && Math.abs(d.getRotVel()) > 0.5
+                    || d.getDeltaHeadingStrength() > 0 && Math.abs(d.getDeltaHeading()) > 1;
+        }
+        return trans || rot;
+    }
+
+    /**
+     * Makes {@link #isTryingToMove()} true until the end of the current cycle, as ARIA's {@code
+     * ArRobot::forceTryingToMove} (ArRobot.h).
+     */
+    public void forceTryingToMove() {
+        forcedTryingToMove = true;
+    }
+
+    /**
+     * @return the state reflection's refresh time, ms (ARIA's default 500): ARIA resends an unchanged
+     *         motion command this often; the Environment keeps a command until the next, so nothing is
+     *         resent here
+     */
+    public int getStateReflectionRefreshTime() {
+        return extras.refreshMs;
+    }
+
+    /** @param msec the refresh time, ms; below 0 means 0, as in ARIA */
+    public void setStateReflectionRefreshTime(int msec) {
+        extras.refreshMs = Math.max(0, msec);
+    }
+
+    /**
      * @param heading a heading in the robot's frame (the one {@link #moveTo} set), degrees
      * @return the same heading in the encoder frame, in which the Environment turns
      */
     double encoderHeading(double heading) {
-        double frameTh = encoderTransform.getTh();
-        return frameTh == 0 ? heading : ArMath.subAngle(heading, frameTh);
+        return frames.stateHeading(heading);
     }
 
     private long simulatedMs() {
@@ -714,6 +1572,27 @@ public class ArRobot extends AbstractRobot {
         return lasers.size();
     }
 
+    /** @param name the name of a range device to detach (the first of that name) */
+    public void remRangeDevice(String name) {
+        ArRangeDevice d = rangeDevices.find(name);
+        if (d != null) {
+            rangeDevices.remove(d);
+        }
+    }
+
+    /** @param device a range device @return whether it is attached */
+    public boolean hasRangeDevice(ArRangeDevice device) {
+        return rangeDevices.list().contains(device);
+    }
+
+    /**
+     * @return the attached range devices, in the order attached (ARIA's {@code
+     *     ArRobot::getRangeDevices} (ArRobot.h))
+     */
+    public List<ArRangeDevice> getRangeDevices() {
+        return rangeDevices.list();
+    }
+
     /** @return the latest state, for the devices of this package */
     RobotState currentState() {
         return state();
@@ -736,6 +1615,7 @@ public class ArRobot extends AbstractRobot {
         Command.Move move = new Command.Move(distance);
         moveStart = getPose();
         moveDistance = distance;
+        transAsked = 0;
         request(move);
         actions.directTrans(simulatedMs());
     }
@@ -744,17 +1624,21 @@ public class ArRobot extends AbstractRobot {
     public void stop() {
         moveStart = null;
         headingTarget = null;
+        transAsked = 0;
+        rotAsked = 0;
         request(new Command.Stop());
         actions.stopped(simulatedMs());
     }
 
     /**
-     * @param velocity mm/s, rounded and clamped to the maximum translational velocity
+     * @param velocity mm/s, rounded and clamped to the maximum translational velocity, and backwards
+     *                 to {@link #getTransNegVelMax()}, as ARIA's state reflection clamps it
      * @throws IllegalArgumentException if it is not finite
      */
     public void setVel(double velocity) {
-        Command.SetVel vel = new Command.SetVel(Math.rint(velocity));
+        Command.SetVel vel = new Command.SetVel(Math.rint(Math.max(velocity, maxima.transNegVelMax())));
         moveStart = null;
+        transAsked = Math.abs(vel.vel());
         request(vel);
         actions.directTrans(simulatedMs());
     }
@@ -766,6 +1650,7 @@ public class ArRobot extends AbstractRobot {
     public void setRotVel(double velocity) {
         Command.SetRotVel rotVel = new Command.SetRotVel(velocity);
         headingTarget = null;
+        rotAsked = Math.abs(velocity);
         request(rotVel);
         actions.directRot(simulatedMs());
     }
@@ -781,6 +1666,8 @@ public class ArRobot extends AbstractRobot {
         Command.SetVel2 vel2 = new Command.SetVel2(leftVelocity, rightVelocity);
         moveStart = null;
         headingTarget = null;
+        transAsked = Math.max(Math.abs(leftVelocity), Math.abs(rightVelocity));
+        rotAsked = 0;
         request(vel2);
         actions.directTrans(simulatedMs());
         actions.directRot(simulatedMs());
@@ -813,8 +1700,8 @@ public class ArRobot extends AbstractRobot {
      * @throws IllegalArgumentException if it is not finite
      */
     public void setMaxTransVel(double velocity) {
-        Command.SetMaxTransVel limit = new Command.SetMaxTransVel(velocity);
-        maxTransVel = Math.max(0, Math.min(velocity, getParameters().maxVelocity()));
+        Command.SetMaxTransVel limit = new Command.SetMaxTransVel(Math.min(velocity, getAbsoluteMaxTransVel()));
+        maxTransVel = Math.max(0, Math.min(velocity, getAbsoluteMaxTransVel()));
         request(limit);
     }
 
@@ -823,8 +1710,8 @@ public class ArRobot extends AbstractRobot {
      * @throws IllegalArgumentException if it is not finite
      */
     public void setMaxRotVel(double velocity) {
-        Command.SetMaxRotVel limit = new Command.SetMaxRotVel(velocity);
-        maxRotVel = Math.max(0, Math.min(velocity, getParameters().maxRVelocity()));
+        Command.SetMaxRotVel limit = new Command.SetMaxRotVel(Math.min(velocity, getAbsoluteMaxRotVel()));
+        maxRotVel = Math.max(0, Math.min(velocity, getAbsoluteMaxRotVel()));
         request(limit);
     }
 
@@ -838,10 +1725,15 @@ public class ArRobot extends AbstractRobot {
      * value of 0 or less is ignored with a log line, as ARIA's {@code setTransVelMax} ignores it (the
      * original RoboSim's {@code setMaxTransVel} sets a zero limit).
      *
-     * @param vel the new limit, mm/s; capped at the parameter file's {@code MaxVelocity}
+     * @param vel the new limit, mm/s; capped at {@link #getAbsoluteMaxTransVel()} with ARIA's log line
      */
     public void setTransVelMax(double vel) {
         if (!DriveLimits.ignoresVelocity("setTransVelMax", vel, getName())) {
+            double abs = getAbsoluteMaxTransVel();
+            if (vel > abs) {
+                LOG.warning(() -> "robot " + getName() + ": ArRobot: setTransVelMax of " + vel
+                        + " is over the absolute max vel of " + abs + ", capping it");
+            }
             setMaxTransVel(vel);
         }
     }
@@ -854,10 +1746,15 @@ public class ArRobot extends AbstractRobot {
     /**
      * ARIA's name for the rotational velocity limit; a value of 0 or less is ignored with a log line.
      *
-     * @param vel the new limit, deg/s; capped at the parameter file's {@code MaxRVelocity}
+     * @param vel the new limit, deg/s; capped at {@link #getAbsoluteMaxRotVel()} with ARIA's log line
      */
     public void setRotVelMax(double vel) {
         if (!DriveLimits.ignoresVelocity("setRotVelMax", vel, getName())) {
+            double abs = getAbsoluteMaxRotVel();
+            if (vel > abs) {
+                LOG.warning(() -> "robot " + getName() + ": ArRobot: setRotVelMax of " + vel
+                        + " is over the absolute max vel of " + abs + ", capping it");
+            }
             setMaxRotVel(vel);
         }
     }
@@ -908,7 +1805,12 @@ public class ArRobot extends AbstractRobot {
     }
 
     private void setDriveLimit(Command.DriveLimit limit, double value) {
-        Command.SetDriveLimit c = driveLimits.set(limit, value, getName());
+        Command.SetDriveLimit c = driveLimits.set(limit, value, getName(), maxima.get(switch (limit) {
+            case TRANS_ACCEL -> Maxima.Absolute.TRANS_ACCEL;
+            case TRANS_DECEL -> Maxima.Absolute.TRANS_DECEL;
+            case ROT_ACCEL -> Maxima.Absolute.ROT_ACCEL;
+            case ROT_DECEL -> Maxima.Absolute.ROT_DECEL;
+        }));
         if (c != null) {
             request(c);
         }
@@ -917,6 +1819,236 @@ public class ArRobot extends AbstractRobot {
     /** @return the rotational limit, deg/s */
     public double getMaxRotVel() {
         return maxRotVel;
+    }
+
+    // ---- absolute maxima, the negative and lateral limits ----
+
+    /** @return the absolute maximum translational velocity, mm/s: the parameter file's {@code MaxVelocity} until set */
+    public double getAbsoluteMaxTransVel() {
+        return maxima.get(Maxima.Absolute.TRANS_VEL);
+    }
+
+    /**
+     * Sets the absolute maximum translational velocity, as ARIA's {@code ArRobot::setAbsoluteMaxTransVel} (ArRobot.cpp)
+     * (ArRobot.cpp): 0 or less is refused with a log line; over the top (the parameter file's
+     * {@code MaxVelocity}, what the Environment drives) is capped with a log line; a velocity limit
+     * above the new maximum comes down to it.
+     *
+     * @param maxVel mm/s
+     * @return false if refused
+     */
+    public boolean setAbsoluteMaxTransVel(double maxVel) {
+        Double v = maxima.set(Maxima.Absolute.TRANS_VEL, maxVel, getName());
+        if (v != null && getTransVelMax() > v) {
+            setTransVelMax(v);
+        }
+        return v != null;
+    }
+
+    /** @return the absolute maximum backwards velocity, mm/s, negative: −{@code MaxVelocity} until set */
+    public double getAbsoluteMaxTransNegVel() {
+        return maxima.get(Maxima.Absolute.TRANS_NEG_VEL);
+    }
+
+    /**
+     * As {@link #setAbsoluteMaxTransVel} for backwards (ARIA's {@code ArRobot::setAbsoluteMaxTransNegVel}
+     * (ArRobot.cpp)): 0 or more is refused, below −{@code MaxVelocity} capped, each with a log line; a
+     * {@link #getTransNegVelMax()} below the new maximum comes up to it.
+     *
+     * @param maxNegVel mm/s, negative
+     * @return false if refused
+     */
+    public boolean setAbsoluteMaxTransNegVel(double maxNegVel) {
+        return maxima.set(Maxima.Absolute.TRANS_NEG_VEL, maxNegVel, getName()) != null;
+    }
+
+    /** @return the absolute maximum translational acceleration, mm/s² (the Environment's largest until set) */
+    public double getAbsoluteMaxTransAccel() {
+        return maxima.get(Maxima.Absolute.TRANS_ACCEL);
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setAbsoluteMaxTransAccel} (ArRobot.cpp): 0 or less refused, over the Environment's largest
+     * capped, each with a log line; an acceleration above it comes down to it.
+     *
+     * @param maxAccel mm/s²
+     * @return false if refused
+     */
+    public boolean setAbsoluteMaxTransAccel(double maxAccel) {
+        return setAbsolute(Maxima.Absolute.TRANS_ACCEL, maxAccel, Command.DriveLimit.TRANS_ACCEL);
+    }
+
+    /** @return the absolute maximum translational deceleration, mm/s² */
+    public double getAbsoluteMaxTransDecel() {
+        return maxima.get(Maxima.Absolute.TRANS_DECEL);
+    }
+
+    /** @param maxDecel mm/s², as {@link #setAbsoluteMaxTransAccel} @return false if refused */
+    public boolean setAbsoluteMaxTransDecel(double maxDecel) {
+        return setAbsolute(Maxima.Absolute.TRANS_DECEL, maxDecel, Command.DriveLimit.TRANS_DECEL);
+    }
+
+    /** @return the absolute maximum rotational velocity, deg/s: the parameter file's {@code MaxRVelocity} until set */
+    public double getAbsoluteMaxRotVel() {
+        return maxima.get(Maxima.Absolute.ROT_VEL);
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setAbsoluteMaxRotVel} (ArRobot.cpp): 0 or less refused, over {@code
+     * MaxRVelocity} capped, each with a log line; a rotational limit above it comes down to it.
+     *
+     * @param maxVel deg/s
+     * @return false if refused
+     */
+    public boolean setAbsoluteMaxRotVel(double maxVel) {
+        Double v = maxima.set(Maxima.Absolute.ROT_VEL, maxVel, getName());
+        if (v != null && getRotVelMax() > v) {
+            setRotVelMax(v);
+        }
+        return v != null;
+    }
+
+    /** @return the absolute maximum rotational acceleration, deg/s² */
+    public double getAbsoluteMaxRotAccel() {
+        return maxima.get(Maxima.Absolute.ROT_ACCEL);
+    }
+
+    /** @param maxAccel deg/s², as {@link #setAbsoluteMaxTransAccel} @return false if refused */
+    public boolean setAbsoluteMaxRotAccel(double maxAccel) {
+        return setAbsolute(Maxima.Absolute.ROT_ACCEL, maxAccel, Command.DriveLimit.ROT_ACCEL);
+    }
+
+    /** @return the absolute maximum rotational deceleration, deg/s² */
+    public double getAbsoluteMaxRotDecel() {
+        return maxima.get(Maxima.Absolute.ROT_DECEL);
+    }
+
+    /** @param maxDecel deg/s², as {@link #setAbsoluteMaxTransAccel} @return false if refused */
+    public boolean setAbsoluteMaxRotDecel(double maxDecel) {
+        return setAbsolute(Maxima.Absolute.ROT_DECEL, maxDecel, Command.DriveLimit.ROT_DECEL);
+    }
+
+    private boolean setAbsolute(Maxima.Absolute which, double value, Command.DriveLimit limit) {
+        Double v = maxima.set(which, value, getName());
+        if (v != null && driveLimits.get(limit, getParameters()) > v) {
+            setDriveLimit(limit, v);
+        }
+        return v != null;
+    }
+
+    /**
+     * @return 0: the absolute maximum lateral velocity of a robot without lateral motion (a Pioneer's
+     *     config packet's)
+     */
+    public double getAbsoluteMaxLatVel() {
+        return maxima.get(Maxima.Absolute.LAT_VEL);
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setAbsoluteMaxLatVel} (ArRobot.cpp): 0 or less refused with a log line;
+     * anything else capped to the top, 0 for a robot without lateral motion, with a log line.
+     *
+     * @param maxVel mm/s
+     * @return false if refused
+     */
+    public boolean setAbsoluteMaxLatVel(double maxVel) {
+        return maxima.set(Maxima.Absolute.LAT_VEL, maxVel, getName()) != null;
+    }
+
+    /** @return 0: the absolute maximum lateral acceleration of a robot without lateral motion */
+    public double getAbsoluteMaxLatAccel() {
+        return maxima.get(Maxima.Absolute.LAT_ACCEL);
+    }
+
+    /** @param maxAccel mm/s², as {@link #setAbsoluteMaxLatVel} @return false if refused */
+    public boolean setAbsoluteMaxLatAccel(double maxAccel) {
+        return maxima.set(Maxima.Absolute.LAT_ACCEL, maxAccel, getName()) != null;
+    }
+
+    /** @return 0: the absolute maximum lateral deceleration of a robot without lateral motion */
+    public double getAbsoluteMaxLatDecel() {
+        return maxima.get(Maxima.Absolute.LAT_DECEL);
+    }
+
+    /** @param maxDecel mm/s², as {@link #setAbsoluteMaxLatVel} @return false if refused */
+    public boolean setAbsoluteMaxLatDecel(double maxDecel) {
+        return maxima.set(Maxima.Absolute.LAT_DECEL, maxDecel, getName()) != null;
+    }
+
+    /** @return the backwards velocity limit, mm/s, negative: −{@code MaxVelocity} until set */
+    public double getTransNegVelMax() {
+        return maxima.transNegVelMax();
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setTransNegVelMax} (ArRobot.cpp): 0 or more is ignored, below {@link
+     * #getAbsoluteMaxTransNegVel()} is capped, each with ARIA's log line. {@link #setVel} clamps backwards
+     * velocities to it.
+     *
+     * @param negVel mm/s, negative
+     */
+    public void setTransNegVelMax(double negVel) {
+        maxima.setTransNegVelMax(negVel, getName());
+    }
+
+    /** @return false: RoboSim's robots (Pioneers, as the parameter files give them) have no lateral motion */
+    public boolean hasLatVel() {
+        return false;
+    }
+
+    /** @return 0: the lateral velocity of a robot without lateral motion */
+    public double getLatVel() {
+        return 0;
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setLatVel} (ArRobot.cpp): a robot without lateral motion ({@link
+     * #hasLatVel()} false) is sent nothing, as ARIA's state reflection sends no lateral command to it.
+     *
+     * @param latVelocity mm/s
+     */
+    public void setLatVel(double latVelocity) {
+        LOG.fine(() -> "robot " + getName() + ": setLatVel(" + latVelocity + "): the robot has no lateral motion");
+    }
+
+    /** @return the lateral velocity limit: 0 for a robot without lateral motion */
+    public double getLatVelMax() {
+        return maxima.latVelMax();
+    }
+
+    /** @param vel mm/s: 0 or less ignored, over the absolute maximum (0) capped, logged at ARIA's verbose level */
+    public void setLatVelMax(double vel) {
+        maxima.setLateral(Maxima.Absolute.LAT_VEL, vel, getName());
+    }
+
+    /** @return the lateral acceleration: 0 for a robot without lateral motion */
+    public double getLatAccel() {
+        return maxima.latAccel();
+    }
+
+    /** @param acc mm/s², as {@link #setLatVelMax} */
+    public void setLatAccel(double acc) {
+        maxima.setLateral(Maxima.Absolute.LAT_ACCEL, acc, getName());
+    }
+
+    /** @return the lateral deceleration: 0 for a robot without lateral motion */
+    public double getLatDecel() {
+        return maxima.latDecel();
+    }
+
+    /** @param decel mm/s², as {@link #setLatVelMax} */
+    public void setLatDecel(double decel) {
+        maxima.setLateral(Maxima.Absolute.LAT_DECEL, decel, getName());
+    }
+
+    /** @return true: the velocity limits are sent to the Environment, as a Pioneer's are ({@code SettableVelMaxes}) */
+    public boolean hasSettableVelMaxes() {
+        return true;
+    }
+
+    /** @return true: the accelerations are sent to the Environment, as a Pioneer's are ({@code SettableAccsDecs}) */
+    public boolean hasSettableAccsDecs() {
+        return true;
     }
 
     /** @return whether the last move is done, within {@link #getMoveDoneDist()} mm */
@@ -1000,7 +2132,23 @@ public class ArRobot extends AbstractRobot {
      *         into the frame {@link #moveTo} set, as ARIA's encoder transform carries it
      */
     public ArPose getPose() {
-        return encoderTransform.doTransform(getEncoderPose());
+        return frames.global(state());
+    }
+
+    /** @param pose a pose @return the distance from the robot's pose to it, mm */
+    public double findDistanceTo(ArPose pose) {
+        return getPose().findDistanceTo(pose);
+    }
+
+    /** @param pose a pose @return the angle from the robot's position to it, degrees */
+    public double findAngleTo(ArPose pose) {
+        return getPose().findAngleTo(pose);
+    }
+
+    /** @param pose a pose @return how far the robot must turn to face it, degrees in (−180, 180] */
+    public double findDeltaHeadingTo(ArPose pose) {
+        ArPose p = getPose();
+        return ArMath.subAngle(p.findAngleTo(pose), p.getTh());
     }
 
     /** @return translational velocity, (left + right) / 2, mm/s */
@@ -1044,6 +2192,16 @@ public class ArRobot extends AbstractRobot {
     /** @return the simulated seconds since the program connected, whole */
     public long getOdometerTime() {
         return odometer.seconds();
+    }
+
+    /** @return {@link #getOdometerDistance()} in metres */
+    public double getOdometerDistanceMeters() {
+        return getOdometerDistance() / 1000.0;
+    }
+
+    /** @return {@link #getOdometerTime()} in minutes, with the fraction */
+    public double getOdometerTimeMinutes() {
+        return getOdometerTime() / 60.0;
     }
 
     /** @return the distance travelled since {@link #resetTripOdometer()} (or since connecting), mm */
@@ -1120,6 +2278,111 @@ public class ArRobot extends AbstractRobot {
         return getParameters().robotLengthRear();
     }
 
+    /** @return ARIA's {@code RobotDiagonal} default, 120 mm (RoboSim's parameters do not carry the key) */
+    public double getRobotDiagonal() {
+        return 120;
+    }
+
+    /**
+     * @return the robot's name as the robot reports it (ARIA's {@code ArRobot::getRobotName}
+     *     (ArRobot.h)): its name in the world
+     */
+    public String getRobotName() {
+        return getName();
+    }
+
+    /**
+     * @return the robot's class from its parameters, for example {@code Pioneer} (ARIA's {@code
+     *     ArRobot::getRobotType} (ArRobot.h))
+     */
+    public String getRobotType() {
+        return getParameters().robotClass();
+    }
+
+    /**
+     * @return the robot's subclass from its parameters, for example {@code p3dx} (ARIA's {@code
+     *     ArRobot::getRobotSubType} (ArRobot.h))
+     */
+    public String getRobotSubType() {
+        return getParameters().subclass();
+    }
+
+    /** @return the empty string: a simulated robot has no serial number (ARIA's answer without a config packet) */
+    public String getRobotSerialNumber() {
+        return "";
+    }
+
+    /**
+     * @return the robot's parameters, the values its parameter file gave (ARIA's {@code ArRobotParams}:
+     *         size, speeds, accelerations, sonar units, laser mount)
+     */
+    public RobotParameters getRobotParams() {
+        return getParameters();
+    }
+
+    /**
+     * Gives the robot other parameters before it connects, as ARIA's {@code ArRobot::setRobotParams}
+     * (ArRobot.cpp); once it is connected the Environment has its body, so they are refused with a log
+     * line.
+     *
+     * @param params the parameters
+     */
+    public void setRobotParams(RobotParameters params) {
+        if (super.isConnected()) {
+            LOG.warning(() -> "robot " + getName()
+                    + ": setRobotParams: the robot is connected; its parameters are fixed");
+            return;
+        }
+        relocate(getName(), getHost(), getPort(), params);
+    }
+
+    /**
+     * Reads a parameter file for the robot before it connects, as ARIA's {@code ArRobot::loadParamFile} (ArRobot.cpp):
+     * its body, speeds, sonar units, bump rings and sonar cycle.
+     *
+     * @param file a path, or a shipped name such as {@code p3at}
+     * @return false, with a log line, if the file cannot be read or the robot is connected
+     */
+    public boolean loadParamFile(String file) {
+        if (super.isConnected()) {
+            LOG.warning(() -> "robot " + getName() + ": loadParamFile(" + file
+                    + "): the robot is connected; its parameters are fixed");
+            return false;
+        }
+        try {
+            RobotParameters p = RobotParameterFiles.load(file);
+            BumperParameters b = RobotParameterFiles.bumpers(file);
+            int cycle = RobotParameterFiles.sonarCycle(file);
+            ConversionFactors f = RobotParameterFiles.conversionFactors(file);
+            relocate(getName(), getHost(), getPort(), p);
+            bumpers = b;
+            sonarCycleMs = cycle;
+            wheelEncoders = new WheelEncoders(f.distConvFactor());
+            return true;
+        } catch (RuntimeException e) {
+            LOG.warning(() -> "robot " + getName() + ": ArRobot::loadParamFile: Could not load " + file
+                    + ": " + e.getMessage());
+            return false;
+        }
+    }
+
+    /**
+     * Renames the robot before it connects, as ARIA's {@code ArRobot::setName} (ArRobot.cpp); null gives
+     * ARIA's default name ({@code robot}, {@code robot2}, ...). Once connected the world knows it by its
+     * name, so the rename is refused with a log line.
+     *
+     * @param name the new name, or null
+     */
+    public void setName(String name) {
+        if (super.isConnected()) {
+            LOG.warning(() -> "robot " + getName() + ": setName(" + name
+                    + "): the robot is connected under its name; ignoring it");
+            return;
+        }
+        // the parameters stay, and with them the limits set
+        super.relocate(name != null ? name : defaultName(), getHost(), getPort(), getParameters());
+    }
+
     /**
      * @return whether the left motor is stalled: bit 0 of {@link #getStallValue()}, as ARIA's
      *         {@code ArRobot.h} reads it (RoboSim stalls both wheels together)
@@ -1139,17 +2402,278 @@ public class ArRobot extends AbstractRobot {
     // ---- the pose's frame, range-device queries, stall and bumpers, battery, stopRunning ----
 
     /**
-     * @return the pose the robot's encoders give (the Environment's odometry), which
-     *         {@link #moveTo} does not change; a new object
+     * @return the pose the robot's encoders give (the Environment's odometry, re-based by
+     *         {@link #setEncoderPose} and {@link #setDeadReconPose}), which {@link #moveTo} does not
+     *         change; a new object
      */
     public ArPose getEncoderPose() {
-        RobotState s = state();
-        return new ArPose(s.x(), s.y(), s.th());
+        return frames.encoder(state());
+    }
+
+    /** @return the encoder pose's x, mm */
+    public double getEncoderX() {
+        return getEncoderPose().getX();
+    }
+
+    /** @return the encoder pose's y, mm */
+    public double getEncoderY() {
+        return getEncoderPose().getY();
+    }
+
+    /** @return the encoder pose's heading, degrees */
+    public double getEncoderTh() {
+        return getEncoderPose().getTh();
+    }
+
+    /**
+     * @return the raw encoder pose: the Environment's odometry before ARIA's encoder correction (of
+     *         which RoboSim has none), the same as {@link #getEncoderPose()} until either is set
+     */
+    public ArPose getRawEncoderPose() {
+        return frames.raw(state());
+    }
+
+    /**
+     * Sets the raw encoder pose, as ARIA's {@code ArRobot::setRawEncoderPose} (ArRobot.h): the robot's
+     * motion is added to it from here, and the encoder pose is not changed.
+     *
+     * @param rawEncoderPose the new raw pose
+     */
+    public void setRawEncoderPose(ArPose rawEncoderPose) {
+        underLock(() -> frames.setRaw(state(), rawEncoderPose));
+    }
+
+    /**
+     * Sets the encoder pose, as ARIA's {@code ArRobot::setEncoderPose} (ArRobot.h): the robot's motion is
+     * added to it from here; the encoder transform is kept, so {@link #getPose()} moves with it.
+     *
+     * @param encoderPose the new encoder pose
+     */
+    public void setEncoderPose(ArPose encoderPose) {
+        underLock(() -> frames.setEncoder(state(), encoderPose));
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setDeadReconPose} (ArRobot.cpp): the encoder pose becomes {@code pose} and
+     * the encoder transform changes so that {@link #getPose()} stays where it is; the
+     * set-encoder-transform callbacks run.
+     *
+     * @param pose the new encoder (dead-reckoning) pose
+     */
+    public void setDeadReconPose(ArPose pose) {
+        underLock(() -> {
+            ArPose global = getPose();
+            frames.setEncoder(state(), pose);
+            frames.setEncoderTransform(new ArTransform(pose, global));
+        });
+        events.setEncoderTransform.invoke(getName());
     }
 
     /** @return the transform from the encoder pose to {@link #getPose()} (the identity until {@link #moveTo}) */
     public ArTransform getEncoderTransform() {
-        return encoderTransform;
+        return frames.encoderTransform();
+    }
+
+    /**
+     * ARIA's {@code setEncoderTransform(deadReconPos, globalPos)}: {@code deadReconPos} in the encoder
+     * frame is {@code globalPos} in the global one; the set-encoder-transform callbacks run. Unlike
+     * {@link #moveTo}, the range devices' readings are not moved.
+     *
+     * @param deadReconPos a pose in the encoder frame
+     * @param globalPos    where it is in the global frame
+     */
+    public void setEncoderTransform(ArPose deadReconPos, ArPose globalPos) {
+        setEncoderTransform(new ArTransform(deadReconPos, globalPos));
+    }
+
+    /** @param transformPos the global pose of the encoder frame's origin (ARIA's {@code setEncoderTransform(pose)}) */
+    public void setEncoderTransform(ArPose transformPos) {
+        setEncoderTransform(new ArTransform(new ArPose(0, 0, 0), transformPos));
+    }
+
+    /** @param transform the new encoder transform; the set-encoder-transform callbacks run */
+    public void setEncoderTransform(ArTransform transform) {
+        underLock(() -> frames.setEncoderTransform(transform));
+        events.setEncoderTransform.invoke(getName());
+    }
+
+    /**
+     * @param functor run whenever the encoder transform changes ({@link #moveTo}, {@link
+     *     #setEncoderTransform}, {@link #setDeadReconPose})
+     */
+    public void addSetEncoderTransformCB(Runnable functor) {
+        addSetEncoderTransformCB(functor, 50);
+    }
+
+    /**
+     * @param functor  run whenever the encoder transform changes
+     * @param position ARIA's list position: higher runs first (ARIA's {@code ArCallbackList}); here
+     *                 every callback is added at the end, in the order added
+     */
+    public void addSetEncoderTransformCB(Runnable functor, int position) {
+        events.setEncoderTransform.add(functor, ArListPos.LAST);
+    }
+
+    /** @param functor a set-encoder-transform callback to remove */
+    public void remSetEncoderTransformCB(Runnable functor) {
+        events.setEncoderTransform.remove(functor);
+    }
+
+    /** @return the transform from the robot's frame (x forward) to the global frame, at the robot's pose */
+    public ArTransform getToGlobalTransform() {
+        return new ArTransform(new ArPose(0, 0, 0), getPose());
+    }
+
+    /** @return the transform from the global frame to the robot's frame */
+    public ArTransform getToLocalTransform() {
+        return new ArTransform(getPose(), new ArPose(0, 0, 0));
+    }
+
+    /**
+     * Moves the readings of the range devices and the sonar ring by a transform, as ARIA's
+     * {@code applyTransform}; the robot's pose is not changed.
+     *
+     * @param trans        the transform
+     * @param doCumulative whether the cumulative buffers move too
+     */
+    public void applyTransform(ArTransform trans, boolean doCumulative) {
+        underLock(() -> {
+            rangeDevices.applyTransform(trans, doCumulative);
+            sonar.applyTransform(trans);
+        });
+    }
+
+    /** @param trans the transform, applied to the cumulative buffers too */
+    public void applyTransform(ArTransform trans) {
+        applyTransform(trans, true);
+    }
+
+    /**
+     * The global pose at a past (or a little future) simulated time, from the poses of the latest
+     * cycles, as ARIA's {@code ArRobot::getPoseInterpPosition} (ArRobot.h; ArInterpolation's answers).
+     *
+     * @param timeStamp the time
+     * @param position  set to the pose, when the answer is 0 or 1
+     * @return 1 interpolated, 0 predicted, −1 too far ahead to predict, −2 too old, −3 too few readings
+     */
+    public int getPoseInterpPosition(ArTime timeStamp, ArPose position) {
+        return poseHistory.pose(timeStamp.getTimeMs(), position);
+    }
+
+    /** As {@link #getPoseInterpPosition}, for the encoder pose. */
+    public int getEncoderPoseInterpPosition(ArTime timeStamp, ArPose position) {
+        return encoderPoseHistory.pose(timeStamp.getTimeMs(), position);
+    }
+
+    /** @param numReadings how many cycles' global poses {@link #getPoseInterpPosition} keeps (ARIA's 100) */
+    public void setPoseInterpNumReadings(int numReadings) {
+        poseHistory.setSize(numReadings);
+    }
+
+    /** @return how many cycles' global poses are kept */
+    public int getPoseInterpNumReadings() {
+        return poseHistory.size();
+    }
+
+    /** @param numReadings how many cycles' encoder poses {@link #getEncoderPoseInterpPosition} keeps (ARIA's 100) */
+    public void setEncoderPoseInterpNumReadings(int numReadings) {
+        encoderPoseHistory.setSize(numReadings);
+    }
+
+    /** @return how many cycles' encoder poses are kept */
+    public int getEncoderPoseInterpNumReadings() {
+        return encoderPoseHistory.size();
+    }
+
+    /**
+     * ARIA's {@code ArRobot::applyEncoderOffset} (ArRobot.cpp): a pose known at one time carried to
+     * another by the motion the encoders saw in between (both encoder poses interpolated, then carried
+     * into the global frame by the current encoder transform).
+     *
+     * @param from     the pose
+     * @param fromTime when {@code from} held
+     * @param to       the time to carry it to
+     * @param result   set to {@code from} plus the motion, when the answer is 0 or more
+     * @return the answer of the {@code to} interpolation, or the first failing one (below 0)
+     */
+    public int applyEncoderOffset(ArPose from, ArTime fromTime, ArTime to, ArPose result) {
+        ArPose encFrom = new ArPose();
+        ArPose encTo = new ArPose();
+        int retFrom = getEncoderPoseInterpPosition(fromTime, encFrom);
+        if (retFrom < 0) {
+            return retFrom;
+        }
+        int retTo = getEncoderPoseInterpPosition(to, encTo);
+        if (retTo < 0) {
+            return retTo;
+        }
+        ArTransform t = getEncoderTransform();
+        ArPose a = t.doTransform(encFrom);
+        ArPose b = t.doTransform(encTo);
+        if (result != null) {
+            result.setPose(from.getX() + b.getX() - a.getX(), from.getY() + b.getY() - a.getY(),
+                    ArMath.addAngle(from.getTh(), ArMath.subAngle(b.getTh(), a.getTh())));
+        }
+        return retTo;
+    }
+
+    /**
+     * @return how many ms the odometry lags the state it comes with (0, ARIA's default): the histories
+     *     are stamped that much earlier
+     */
+    public int getOdometryDelay() {
+        return odometryDelayMs;
+    }
+
+    /** @param msec how many ms the odometry lags the state it comes with */
+    public void setOdometryDelay(int msec) {
+        odometryDelayMs = msec;
+    }
+
+    /**
+     * Asks for encoder packets, as ARIA's {@code ArRobot::requestEncoderPackets} (ArRobot.cpp): from the next cycle on,
+     * {@link #getLeftEncoder()} and {@link #getRightEncoder()} count each wheel's travel in ticks of
+     * the parameter file's {@code DistConvFactor}.
+     */
+    public void requestEncoderPackets() {
+        encoders().setRequested(true);
+    }
+
+    /** Stops the encoder packets: the counts keep their values. */
+    public void stopEncoderPackets() {
+        encoders().setRequested(false);
+    }
+
+    /** @return whether encoder packets are requested */
+    public boolean haveRequestedEncoderPackets() {
+        return encoders().requested();
+    }
+
+    /** @return the left wheel's encoder count, ticks (0 until encoder packets are requested) */
+    public long getLeftEncoder() {
+        return encoders().left();
+    }
+
+    /** @return the right wheel's encoder count, ticks (0 until encoder packets are requested) */
+    public long getRightEncoder() {
+        return encoders().right();
+    }
+
+    private WheelEncoders encoders() {
+        return wheelEncoders;
+    }
+
+    /**
+     * @return ARIA's pose interpolation functor: {@link #getPoseInterpPosition} as a function of the
+     *         time and the pose to set, answering its code
+     */
+    public java.util.function.BiFunction<ArTime, ArPose, Integer> getPoseInterpPositionCallback() {
+        return this::getPoseInterpPosition;
+    }
+
+    /** @return {@link #getEncoderPoseInterpPosition} as a function, as {@link #getPoseInterpPositionCallback()} */
+    public java.util.function.BiFunction<ArTime, ArPose, Integer> getEncoderPoseInterpPositionCallback() {
+        return this::getEncoderPoseInterpPosition;
     }
 
     /**
@@ -1195,20 +2719,21 @@ public class ArRobot extends AbstractRobot {
      * @param doCumulative whether the range devices' cumulative buffers move too
      */
     public void moveTo(ArPose to, ArPose from, boolean doCumulative) {
-        rebase(new ArTransform(encoderTransform.doInvTransform(from), to), doCumulative);
+        rebase(new ArTransform(frames.encoderTransform().doInvTransform(from), to), doCumulative);
     }
 
     private void rebase(ArTransform newEncoderTransform, boolean doCumulative) {
         lock.lock();
         try {
             ArPose before = getPose();
-            encoderTransform = newEncoderTransform;
+            frames.setEncoderTransform(newEncoderTransform);
             ArTransform moved = new ArTransform(before, getPose());
             rangeDevices.applyTransform(moved, doCumulative);
             sonar.applyTransform(moved);
         } finally {
             lock.unlock();
         }
+        events.setEncoderTransform.invoke(getName());
     }
 
     /**
@@ -1410,9 +2935,12 @@ public class ArRobot extends AbstractRobot {
         return underLock(() -> battery.realVoltage());
     }
 
-    /** @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()} */
+    /**
+     * @return the latest real battery voltage, volts: the same as {@link #getBatteryVoltageNow()}
+     *     unless {@link #setBatteryInfo} gave another
+     */
     public double getRealBatteryVoltageNow() {
-        return getBatteryVoltageNow();
+        return underLock(() -> battery.realVoltageNow());
     }
 
     /** @return whether the robot reports its state of charge: once a reading above 0 has come */
@@ -1456,6 +2984,297 @@ public class ArRobot extends AbstractRobot {
         underLock(() -> battery.setRealAverageOf(numToAverage));
     }
 
+    // ---- flags, IO, charge and temperature, as far as the simulation has them ----
+
+    /**
+     * ARIA's flags word from the latest state: bit 0 the motors enabled, bits 1–4 the sonars on
+     * (ARIA's legacy sonar bits), bit 5 the e-stop (never pressed in the simulation), bit 10 the
+     * charger's power (never: no charger is simulated).
+     *
+     * @return the flags
+     */
+    public int getFlags() {
+        int f = areMotorsEnabled() ? 1 : 0;
+        if (sonarEnabled || autonomousDrivingSonar) {
+            f |= 0x1e;
+        }
+        return f;
+    }
+
+    /** @return 0: the simulated robot reports no faults */
+    public int getFaultFlags() {
+        return 0;
+    }
+
+    /** @return false: the simulated robot sends no fault flags */
+    public boolean hasFaultFlags() {
+        return false;
+    }
+
+    /** @return 0: the simulated robot sends no third flags word */
+    public int getFlags3() {
+        return 0;
+    }
+
+    /** @return false: the simulated robot sends no third flags word */
+    public boolean hasFlags3() {
+        return false;
+    }
+
+    /** @return whether the legacy sonar bits (1–4) of {@link #getFlags()} are set */
+    public boolean areSonarsEnabledLegacy() {
+        return (getFlags() & 0x1e) != 0;
+    }
+
+    /** @return false: the simulation has no e-stop (bit 5 of {@link #getFlags()}) */
+    public boolean isEStopPressed() {
+        return (getFlags() & 0x20) != 0;
+    }
+
+    /** @return as {@link #isEStopPressed()} */
+    public boolean getEstop() {
+        return isEStopPressed();
+    }
+
+    /** @return 0: no compass is simulated */
+    public double getCompass() {
+        return 0;
+    }
+
+    /** @return 0: no analog port is simulated */
+    public int getAnalogPortSelected() {
+        return 0;
+    }
+
+    /** @return 0: no analog input is simulated */
+    public int getAnalog() {
+        return 0;
+    }
+
+    /** @return 0: no digital inputs are simulated */
+    public int getDigIn() {
+        return 0;
+    }
+
+    /** @return 0: no digital outputs are simulated */
+    public int getDigOut() {
+        return 0;
+    }
+
+    /**
+     * Asks for IO packets, as ARIA's {@code ArRobot::requestIOPackets} (ArRobot.cpp); the simulation
+     * has no IO, so none come.
+     */
+    public void requestIOPackets() {
+        extras.ioRequested = true;
+    }
+
+    /** Stops asking for IO packets. */
+    public void stopIOPackets() {
+        extras.ioRequested = false;
+    }
+
+    /** @return whether {@link #requestIOPackets()} was called (and not stopped) */
+    public boolean haveRequestedIOPackets() {
+        return extras.ioRequested;
+    }
+
+    /** @return 0: no IO packet has come, so no analog inputs are known */
+    public int getIOAnalogSize() {
+        return 0;
+    }
+
+    /** @return 0: no digital inputs are known */
+    public int getIODigInSize() {
+        return 0;
+    }
+
+    /** @return 0: no digital outputs are known */
+    public int getIODigOutSize() {
+        return 0;
+    }
+
+    /** @param num an analog input @return 0, as ARIA answers for an input it has no reading of */
+    public int getIOAnalog(int num) {
+        return 0;
+    }
+
+    /** @param num an analog input @return 0 V */
+    public double getIOAnalogVoltage(int num) {
+        return 0;
+    }
+
+    /** @param num a digital input bank @return 0, as ARIA answers for a bank outside the IO packet */
+    public int getIODigIn(int num) {
+        return 0;
+    }
+
+    /** @param num a digital output bank @return 0 */
+    public int getIODigOut(int num) {
+        return 0;
+    }
+
+    /** @return the time of the last IO packet: the connection's start, as none comes */
+    public ArTime getIOPacketTime() {
+        return timeAt(events.openedMs);
+    }
+
+    /** @return false: the parameter files give RoboSim's robots no table-sensing IR */
+    public boolean hasTableSensingIR() {
+        return false;
+    }
+
+    /** @return false: ARIA answers false for a robot without table-sensing IR */
+    public boolean isLeftTableSensingIRTriggered() {
+        return false;
+    }
+
+    /** @return false, as {@link #isLeftTableSensingIRTriggered()} */
+    public boolean isRightTableSensingIRTriggered() {
+        return false;
+    }
+
+    /** @return false: ARIA answers false for a robot without table-sensing IR (its break beams) */
+    public boolean isLeftBreakBeamTriggered() {
+        return false;
+    }
+
+    /** @return false, as {@link #isLeftBreakBeamTriggered()} */
+    public boolean isRightBreakBeamTriggered() {
+        return false;
+    }
+
+    /** A robot's charge state, with ARIA's codes. */
+    public enum ChargeState {
+        /** Not known: ARIA's answer for a robot that does not report it. */
+        CHARGING_UNKNOWN(255, "Unknown"),
+        /** Not charging. */
+        CHARGING_NOT(0, "Not"),
+        /** Bulk charge. */
+        CHARGING_BULK(1, "Bulk"),
+        /** Overcharge. */
+        CHARGING_OVERCHARGE(2, "Overcharge"),
+        /** Float charge. */
+        CHARGING_FLOAT(3, "Float"),
+        /** Balancing. */
+        CHARGING_BALANCE(4, "Balance");
+
+        private final int code;
+        private final String label;
+
+        ChargeState(int code, String label) {
+            this.code = code;
+            this.label = label;
+        }
+
+        /** @return ARIA's number for the state */
+        public int code() {
+            return code;
+        }
+    }
+
+    /**
+     * @return the charge state a program set ({@link #setChargeState}), else CHARGING_UNKNOWN: no
+     *     charger is simulated
+     */
+    public ChargeState getChargeState() {
+        ChargeState c = extras.chargeState;
+        return c != null ? c : ChargeState.CHARGING_UNKNOWN;
+    }
+
+    /** @return ARIA's name of {@link #getChargeState()}: Unknown, Not, Bulk, Overcharge, Float or Balance */
+    public String getChargeStateName() {
+        return getChargeState().label;
+    }
+
+    /** @param chargeState the charge state {@link #getChargeState()} answers from now on (ARIA's override) */
+    public void setChargeState(ChargeState chargeState) {
+        extras.chargeState = chargeState;
+    }
+
+    /** @return what {@link #setIsChargerPowerGood} set, else bit 10 of {@link #getFlags()}: false */
+    public boolean isChargerPowerGood() {
+        Boolean b = extras.chargerPowerGood;
+        return b != null ? b : (getFlags() & 0x400) != 0;
+    }
+
+    /** @param onCharger what {@link #isChargerPowerGood()} answers from now on (ARIA's override) */
+    public void setIsChargerPowerGood(boolean onCharger) {
+        extras.chargerPowerGood = onCharger;
+    }
+
+    /**
+     * Sets the state of charge, as ARIA's {@code ArRobot::setStateOfCharge} (ArRobot.cpp): the robot has
+     * one from now on; a reading with a state of charge from the Environment replaces it.
+     *
+     * @param stateOfCharge percent
+     */
+    public void setStateOfCharge(double stateOfCharge) {
+        underLock(() -> battery.setStateOfCharge(stateOfCharge, simulatedMs()));
+    }
+
+    /** @return the simulated time the state of charge was last set or read (0 before) */
+    public ArTime getStateOfChargeSetTime() {
+        return timeAt(underLock(() -> battery.stateOfChargeSetMs()));
+    }
+
+    /** @return the state of charge below which the robot counts as low, percent (ARIA's default 0) */
+    public double getStateOfChargeLow() {
+        return extras.stateOfChargeLow;
+    }
+
+    /** @param stateOfChargeLow percent */
+    public void setStateOfChargeLow(double stateOfChargeLow) {
+        extras.stateOfChargeLow = stateOfChargeLow;
+    }
+
+    /** @return the state of charge at which the robot shuts down, percent (ARIA's default 0) */
+    public double getStateOfChargeShutdown() {
+        return extras.stateOfChargeShutdown;
+    }
+
+    /** @param stateOfChargeShutdown percent */
+    public void setStateOfChargeShutdown(double stateOfChargeShutdown) {
+        extras.stateOfChargeShutdown = stateOfChargeShutdown;
+    }
+
+    /**
+     * ARIA's {@code ArRobot::setIgnoreMicroControllerBatteryInfo} (ArRobot.cpp): when true, the battery readings of the
+     * Environment's states are ignored, so that {@link #setBatteryInfo} (an external battery's
+     * readings) alone sets the voltages and state of charge.
+     *
+     * @param ignore whether to ignore the state's battery readings
+     */
+    public void setIgnoreMicroControllerBatteryInfo(boolean ignore) {
+        underLock(() -> battery.setIgnoreReadings(ignore));
+    }
+
+    /**
+     * Gives a battery reading, as ARIA's {@code ArRobot::setBatteryInfo} (ArRobot.cpp) does for an
+     * external battery: both voltages join their averages; the state of charge is set if given.
+     *
+     * @param realBatteryVoltage       volts
+     * @param normalizedBatteryVoltage volts on the 12 V scale
+     * @param haveStateOfCharge        whether {@code stateOfCharge} is given
+     * @param stateOfCharge            percent
+     */
+    public void setBatteryInfo(double realBatteryVoltage, double normalizedBatteryVoltage, boolean haveStateOfCharge,
+                               double stateOfCharge) {
+        long now = simulatedMs();
+        underLock(() -> battery.setInfo(realBatteryVoltage, normalizedBatteryVoltage, haveStateOfCharge,
+                stateOfCharge, now));
+    }
+
+    /** @return false: no temperature is simulated (ARIA's answer for a robot that reports −128) */
+    public boolean hasTemperature() {
+        return getTemperature() != -128;
+    }
+
+    /** @return −128, ARIA's value for no temperature reading */
+    public int getTemperature() {
+        return -128;
+    }
+
     /**
      * Stops the robot's cycle and disconnects, as ARIA's {@code stopRunning()}: a {@link #run()} in
      * another thread returns.
@@ -1468,30 +3287,20 @@ public class ArRobot extends AbstractRobot {
      * Stops the robot's cycle (ARIA's {@code stopRunning(doDisconnect)}): from the next state on, the
      * counter stops, the sonar readings, odometers and range devices are no longer updated and no
      * task runs, until {@link #runAsync()} starts the cycle again. The pose and velocities still
-     * follow the Environment's state.
+     * follow the Environment's state. If the cycle was running ({@link #run()}, {@link #runAsync()})
+     * the run-exit callbacks run, after the disconnect-normally ones when disconnecting, as in ARIA.
      *
      * @param doDisconnect whether to leave the run too
      */
     public void stopRunning(boolean doDisconnect) {
         cycleStopped = true;
-        runningAsync = false;
-        if (isConnected()) {
+        if (super.isConnected()) {
             keepAlive(false);
         }
         if (doDisconnect) {
             disconnect();
         }
-    }
-
-    /**
-     * Asks the Environment to fire the sonar ring in sequence when the parameter file gives a
-     * {@code SonarCycle} (see {@link #getSonarCycle()}).
-     */
-    @Override
-    protected void welcomed(RobotState initial) {
-        if (sonarCycleMs > 0) {
-            request(new Command.SetSonarCycle(sonarCycleMs));
-        }
+        loopExited();
     }
 
     /**
@@ -1571,12 +3380,14 @@ public class ArRobot extends AbstractRobot {
     /** Turns the sonars on (they are on after connecting). */
     public void enableSonar() {
         sonarEnabled = true;
+        autonomousDrivingSonar = false;
         request(new Command.SetSonar(true));
     }
 
     /** Turns the sonars off: no new readings arrive until {@link #enableSonar()}. */
     public void disableSonar() {
         sonarEnabled = false;
+        autonomousDrivingSonar = false;
         request(new Command.SetSonar(false));
     }
 
@@ -1606,5 +3417,96 @@ public class ArRobot extends AbstractRobot {
      */
     public int getClosestSonarNumber(double startAngle, double endAngle) {
         return sonar.closest(startAngle, endAngle);
+    }
+
+    /**
+     * Turns the sonars on as ARIA's {@code ArRobot::enableAutonomousDrivingSonar} (ArRobot.cpp) does: ARIA
+     * then fires the sonar boards only while the robot drives; RoboSim's Pioneer has no such boards, so
+     * the whole ring fires. {@link #areSonarsEnabled()} is false and {@link
+     * #areAutonomousDrivingSonarsEnabled()} true, as in ARIA.
+     */
+    public void enableAutonomousDrivingSonar() {
+        sonarEnabled = false;
+        autonomousDrivingSonar = true;
+        request(new Command.SetSonar(true));
+    }
+
+    /**
+     * @return whether {@link #enableAutonomousDrivingSonar()} turned the sonars on (and they were not
+     *     turned off since)
+     */
+    public boolean areAutonomousDrivingSonarsEnabled() {
+        return autonomousDrivingSonar;
+    }
+
+    /**
+     * Adds a sonar board as ARIA's {@code ArRobot::addSonar} (ArRobot.cpp): a range device kept by number
+     * (ARIA's MTX sonar boards; a RoboSim program may list its {@link ArSonarDevice} here).
+     *
+     * @param sonar       the board
+     * @param sonarNumber its number
+     * @return false, with a log line, for null or a number another board has; true if added or already there
+     */
+    public boolean addSonar(ArRangeDevice sonar, int sonarNumber) {
+        if (sonar == null) {
+            LOG.info(() -> "robot " + getName()
+                    + ": ArRobot::addSonar: Tried to add NULL sonar board as sonar number " + sonarNumber);
+            return false;
+        }
+        synchronized (sonarBoards) {
+            ArRangeDevice there = sonarBoards.get(sonarNumber);
+            if (there == sonar) {
+                return true;
+            }
+            if (there != null) {
+                LOG.info(() -> "robot " + getName() + ": ArRobot::addSonar: Tried to add sonar board " + sonar.getName()
+                        + " as sonar number " + sonarNumber + " but there is already a sonar of that number (called "
+                        + there.getName() + ")");
+                return false;
+            }
+            sonarBoards.put(sonarNumber, sonar);
+            return true;
+        }
+    }
+
+    /** @param sonar a board to remove @return false, with a log line, if it is null or not there */
+    public boolean remSonar(ArRangeDevice sonar) {
+        if (sonar == null) {
+            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Passed NULL sonar board to remove");
+            return false;
+        }
+        boolean removed = sonarBoards.values().remove(sonar);
+        if (!removed) {
+            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board "
+                    + sonar.getName() + " to remove");
+        }
+        return removed;
+    }
+
+    /** @param sonarNumber a board's number @return false, with a log line, if none has it */
+    public boolean remSonar(int sonarNumber) {
+        if (sonarBoards.remove(sonarNumber) == null) {
+            LOG.info(() -> "robot " + getName() + ": ArRobot::remSonar: Could not find sonar board "
+                    + sonarNumber + " to remove");
+            return false;
+        }
+        return true;
+    }
+
+    /** @param sonarNumber a board's number @return the board, or null */
+    public ArRangeDevice findSonar(int sonarNumber) {
+        return sonarBoards.get(sonarNumber);
+    }
+
+    /** @return the sonar boards by number, in number order (a copy) */
+    public Map<Integer, ArRangeDevice> getSonarMap() {
+        synchronized (sonarBoards) {
+            return Collections.unmodifiableMap(new TreeMap<>(sonarBoards));
+        }
+    }
+
+    /** @param device a board @return whether it was added with {@link #addSonar} */
+    public boolean hasSonar(ArRangeDevice device) {
+        return sonarBoards.containsValue(device);
     }
 }

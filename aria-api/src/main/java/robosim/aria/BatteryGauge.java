@@ -20,16 +20,58 @@ final class BatteryGauge {
     private double stateOfCharge;
     private boolean haveStateOfCharge;
 
-    /** @param b a state's battery reading; null (a robot server that does not say) changes nothing */
-    void update(BatteryReading b) {
-        if (b == null) {
+    private boolean ignoreReadings;
+    private long stateOfChargeSetMs;
+    private double realNow = BEFORE_FIRST_READING;
+
+    /**
+     * @param b      a state's battery reading; null (a robot server that does not say) changes nothing,
+     *               nor does any while {@link #setIgnoreReadings} holds
+     * @param timeMs the state's simulated time
+     */
+    void update(BatteryReading b, long timeMs) {
+        if (b == null || ignoreReadings) {
             return;
         }
         now = b.volts();
+        realNow = now;
         average.add(now);
         realAverage.add(now);
         stateOfCharge = b.stateOfCharge();
         haveStateOfCharge |= stateOfCharge > 0; // as ARIA: a charge of 0 is a robot that does not report one
+        if (stateOfCharge > 0) {
+            stateOfChargeSetMs = timeMs;
+        }
+    }
+
+    /** ARIA's {@code setStateOfCharge}: the robot has one from now on. */
+    void setStateOfCharge(double soc, long timeMs) {
+        haveStateOfCharge = true;
+        stateOfCharge = soc;
+        stateOfChargeSetMs = timeMs;
+    }
+
+    long stateOfChargeSetMs() {
+        return stateOfChargeSetMs;
+    }
+
+    void setIgnoreReadings(boolean ignore) {
+        ignoreReadings = ignore;
+    }
+
+    /** ARIA's {@code setBatteryInfo}: an external battery's reading. */
+    void setInfo(double real, double normalized, boolean haveSoc, double soc, long timeMs) {
+        realNow = real;
+        realAverage.add(real);
+        now = normalized;
+        average.add(normalized);
+        if (haveSoc) {
+            setStateOfCharge(soc, timeMs);
+        }
+    }
+
+    double realVoltageNow() {
+        return realNow;
     }
 
     double voltage() {

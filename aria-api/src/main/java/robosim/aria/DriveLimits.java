@@ -11,8 +11,8 @@ import robosim.protocol.RobotParameters;
  * The acceleration and deceleration limits an {@link ArRobot} program set, with ARIA's rules for
  * setting them (ARIA's {@code src/ArRobot.cpp}, {@code setTransAccel} and its kin): a value of 0 or
  * less is ignored with a log line, and one over the absolute maximum is capped to it. The absolute
- * maximum is the Environment's ({@link RobotParameters#MAX_ACCELERATION}), so a getter answers what
- * the drive uses. Until a program sets one, each limit is the parameter file's.
+ * maximum starts as the Environment's ({@link RobotParameters#MAX_ACCELERATION}), so a getter answers
+ * what the drive uses, and a program may lower it ({@code ArRobot#setAbsoluteMaxTransAccel}). Until a program sets one, each limit is the parameter file's.
  */
 final class DriveLimits {
     private static final Logger LOG = Logger.getLogger(ArRobot.class.getName());
@@ -41,18 +41,19 @@ final class DriveLimits {
      * @param limit which limit
      * @param value the value a program gave
      * @param robot the robot's name, for the log line
+     * @param max   the absolute maximum ({@code ArRobot#getAbsoluteMaxTransAccel} and its kin)
      * @return the command that sets it, or null when ARIA's rule ignores the value
      */
-    synchronized Command.SetDriveLimit set(DriveLimit limit, double value, String robot) {
+    synchronized Command.SetDriveLimit set(DriveLimit limit, double value, String robot, double max) {
         if (!(value > 0)) {
             LOG.warning(() -> "robot " + robot + ": " + setter(limit) + " of " + value
                     + " is not above 0; ignoring it, as ARIA does");
             return null;
         }
-        double v = Math.min(value, RobotParameters.MAX_ACCELERATION);
+        double v = Math.min(value, max);
         if (v < value) {
             LOG.warning(() -> "robot " + robot + ": " + setter(limit) + " of " + value + " is over the absolute maximum of "
-                    + RobotParameters.MAX_ACCELERATION + "; capping it, as ARIA does");
+                    + max + "; capping it, as ARIA does");
         }
         set.put(limit, v);
         return new Command.SetDriveLimit(limit, v);

@@ -39,6 +39,43 @@ final class TaskList {
     }
 
 
+    /** @return the task of that name, or null */
+    synchronized ArSyncTask find(String name) {
+        return tasks.stream().filter(t -> t.name().equals(name)).findFirst().map(this::view).orElse(null);
+    }
+
+    /** @return the first task with that body, or null */
+    synchronized ArSyncTask find(Runnable body) {
+        return tasks.stream().filter(t -> t.body() == body).findFirst().map(this::view).orElse(null);
+    }
+
+    /** @return whether a task with that body was there; the first is removed */
+    synchronized boolean remove(Runnable body) {
+        for (int i = 0; i < tasks.size(); i++) {
+            if (tasks.get(i).body() == body) {
+                tasks.remove(i);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** @return the tasks in running order */
+    synchronized java.util.List<ArSyncTask> list() {
+        return tasks.stream().map(this::view).toList();
+    }
+
+    /** Logs the list's tasks in running order, one a line, as ARIA's {@code ArSyncTask::log} does. */
+    void log(String robot) {
+        List<ArSyncTask> all = list();
+        LOG.info(() -> "robot " + robot + ": " + kind + " tasks (" + all.size() + "):"
+                + all.stream().map(t -> "\n  " + t).reduce("", String::concat));
+    }
+
+    private ArSyncTask view(Task t) {
+        return new ArSyncTask(t.name(), t.position(), t.body(), kind);
+    }
+
     void runAll(String robot) {
         List<Task> snapshot;
         synchronized (this) {

@@ -118,7 +118,7 @@ class ArActionRatioInputTest {
     void activatingAnInactiveInputZeroesTheRatiosAndCallsTheCallbacks() {
         List<String> calls = new ArrayList<>();
         input.addActivateCallback(() -> calls.add("last"));
-        input.addActivateCallback(() -> calls.add("first"), ArListPos.Pos.FIRST);
+        input.addActivateCallback(() -> calls.add("first"), ArListPos.FIRST);
         input.setRatios(50, 50, 50);
         input.activate();
         assertEquals(List.of(), calls, "already active: nothing");
