@@ -5,7 +5,7 @@ package robosim.aria;
  * in a simulator that has none: {@link #init()} finds no joystick and returns false,
  * {@link #haveJoystick()} stays false, no button is pressed, and the stick reads centred (0 on each
  * axis). This is what ARIA's handler reports on a computer without {@code /dev/input/js0}, so the
- * actions that read a joystick ({@link ArActionJoydrive}, {@link ArRatioInputJoydrive}) behave as
+ * actions that read a joystick ({@link ArActionJoydrive}, {@code ArRatioInputJoydrive}) behave as
  * ARIA's do there: they want nothing.
  *
  * <p>The calibration calls (start, end, stats) and the speeds keep their values as ARIA's do; with
