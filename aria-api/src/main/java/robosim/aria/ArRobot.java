@@ -354,7 +354,8 @@ public class ArRobot extends AbstractRobot {
         if (end != null && end.kind().isFailure()) {
             events.dropReason = end.describe();
             events.dropUserReason = end.reason();
-            LOG.warning(() -> "robot " + getName() + ": " + events.dropReason);
+            // the program's launcher, or its RunEnd, says so to the user: logged here only for detail
+            LOG.fine(() -> "robot " + getName() + ": " + events.dropReason);
             events.disconnectOnError.invoke(getName());
         } else {
             events.disconnectNormally.invoke(getName());
