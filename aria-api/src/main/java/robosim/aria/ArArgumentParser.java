@@ -165,21 +165,7 @@ public class ArArgumentParser {
      */
     public boolean checkParameterArgumentInteger(String argument, int[] dest, boolean[] wasReallySet,
                                                  boolean returnFirst) {
-        String value = taken(argument, wasReallySet, returnFirst);
-        if (value == null) {
-            return true;
-        }
-        if (value.isEmpty()) {
-            return false;
-        }
-        try {
-            dest[0] = Integer.parseInt(value);
-            return true;
-        } catch (NumberFormatException e) {
-            ArLog.log(ArLog.Normal, "Argument given to %s was not an integer it was the string %s", argument, value);
-            reallySet(wasReallySet, false);
-            return false;
-        }
+        return number(argument, wasReallySet, returnFirst, "an integer", v -> dest[0] = Integer.parseInt(v));
     }
 
     /**
@@ -200,6 +186,12 @@ public class ArArgumentParser {
      */
     public boolean checkParameterArgumentDouble(String argument, double[] dest, boolean[] wasReallySet,
                                                 boolean returnFirst) {
+        return number(argument, wasReallySet, returnFirst, "a double", v -> dest[0] = Double.parseDouble(v));
+    }
+
+    /** Takes a number argument: {@code set} parses and keeps it, throwing if it is not one (logged as ARIA's). */
+    private boolean number(String argument, boolean[] wasReallySet, boolean returnFirst, String kind,
+                           java.util.function.Consumer<String> set) {
         String value = taken(argument, wasReallySet, returnFirst);
         if (value == null) {
             return true;
@@ -208,10 +200,10 @@ public class ArArgumentParser {
             return false;
         }
         try {
-            dest[0] = Double.parseDouble(value);
+            set.accept(value);
             return true;
         } catch (NumberFormatException e) {
-            ArLog.log(ArLog.Normal, "Argument given to %s was not a double it was the string %s", argument, value);
+            ArLog.log(ArLog.Normal, "Argument given to %s was not %s it was the string %s", argument, kind, value);
             reallySet(wasReallySet, false);
             return false;
         }

@@ -17,26 +17,6 @@ import robosim.protocol.Command;
  * how direct motion commands and actions take turns.
  */
 class ActionDriverTest {
-    /** A robot that keeps what it would send instead of sending it. */
-    private static final class Recording extends ArRobot {
-        final List<Command> sent = new ArrayList<>();
-
-        Recording() {
-            super("r", "127.0.0.1", 5000, Cycles.p3dx());
-        }
-
-        @Override
-        protected void request(Command command) {
-            sent.add(command);
-        }
-
-        List<Command> take() {
-            List<Command> c = List.copyOf(sent);
-            sent.clear();
-            return c;
-        }
-    }
-
     private static ArAction wanting(String name, Consumer<ArActionDesired> wish) {
         return new ArAction(name) {
             @Override
@@ -48,7 +28,7 @@ class ActionDriverTest {
         };
     }
 
-    private final Recording robot = new Recording();
+    private final RecordingRobot robot = new RecordingRobot();
     private long time;
 
     private List<Command> cycle() {

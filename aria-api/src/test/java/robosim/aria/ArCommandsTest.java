@@ -17,23 +17,9 @@ import robosim.protocol.Command;
 /** An ARIA program's direct commands (comInt and the like) carried out by the calls that do the same. */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
 class ArCommandsTest {
-    /** A robot that keeps what it would send instead of sending it. */
-    private static final class Recording extends ArRobot {
-        final List<Command> sent = new ArrayList<>();
-
-        Recording() {
-            super("r", "127.0.0.1", 5000, Cycles.p3dx());
-        }
-
-        @Override
-        protected void request(Command command) {
-            sent.add(command);
-        }
-    }
-
     @Test
     void motionCommandsAreTheCallsThatDoTheSame() {
-        Recording robot = new Recording();
+        RecordingRobot robot = new RecordingRobot();
         assertTrue(robot.comInt(ArCommands.VEL, 300));
         assertTrue(robot.comInt(ArCommands.RVEL, -20));
         assertTrue(robot.comInt(ArCommands.MOVE, 1000));
@@ -52,7 +38,7 @@ class ArCommandsTest {
         ByteArrayOutputStream log = new ByteArrayOutputStream();
         ArLog.setStream(new PrintStream(log, true, StandardCharsets.UTF_8));
         try {
-            Recording robot = new Recording();
+            RecordingRobot robot = new RecordingRobot();
             assertTrue(robot.comInt(ArCommands.SOUNDTOG, 0));
             assertTrue(robot.comStr(ArCommands.SAY, "beep"));
             assertTrue(robot.sent.isEmpty());
