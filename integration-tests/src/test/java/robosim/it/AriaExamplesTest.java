@@ -20,6 +20,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.examples.aria.ActionExample;
 import robosim.examples.aria.LaserConnect;
+import robosim.examples.aria.RobotConnectionCallbacks;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
 import robosim.examples.aria.TwoRobotWander;
@@ -283,6 +284,28 @@ class AriaExamplesTest {
             assertTrue(r1.distance() > 2000, "r1: " + r1);
             assertTrue(r2.distance() > r1.distance() + 1000, "r2 went on: " + r2 + " / " + r1);
             assertEquals(0, r1.collisions() + r2.collisions(), r1 + " / " + r2);
+        }
+    }
+
+    @Test
+    void robotConnectionCallbacksRunAtTheirMomentsAndTheSonarIsTurnedOff() throws Exception {
+        try (ThreadedRun run = new ThreadedRun(LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml"),
+                1, 600)) {
+            Future<Ran> r1 = run.robot(() -> run(RobotConnectionCallbacks::main, "r1", "127.0.0.1",
+                    String.valueOf(run.port())));
+            Future<Ran> r2 = run.robot(() -> run(RobotConnectionCallbacks::main, "r2", "127.0.0.1",
+                    String.valueOf(run.port())));
+            Ran ran = r1.get(90, TimeUnit.SECONDS);
+            r2.get(90, TimeUnit.SECONDS);
+            RunReport report = run.await();
+            // the connect callback first, then the program; stopRunning disconnects, and the
+            // disconnect callback exits 0 before the program's own exit
+            assertTrue(ran.out().startsWith("Connecting robot r1 to the RoboSim Environment at 127.0.0.1:"), ran.out());
+            assertTrue(ran.out().contains("ConnHandler: Connected. Turning off sonar,\nrobotConnectionCallbacks:"
+                    + " Connected.\nSleeping for 10 seconds...\n...requesting that the robot thread exit, then"
+                    + " shutting down ARIA and exiting.\n"), ran.out());
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(report.steps() >= 100 && report.steps() < 115, "10 s of 100 ms steps: " + report.steps());
         }
     }
 }
