@@ -21,6 +21,7 @@ import robosim.env.net.RunReport;
 import robosim.examples.aria.ActionExample;
 import robosim.examples.aria.LaserConnect;
 import robosim.examples.aria.RobotConnectionCallbacks;
+import robosim.examples.aria.RobotSyncTaskExample;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
 import robosim.examples.aria.TwoRobotWander;
@@ -306,6 +307,35 @@ class AriaExamplesTest {
                     + " shutting down ARIA and exiting.\n"), ran.out());
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(report.steps() >= 100 && report.steps() < 115, "10 s of 100 ms steps: " + report.steps());
+        }
+    }
+
+    @Test
+    void robotSyncTaskExamplesTaskPrintsTheStateEveryCycleUntilTheRunEnds() throws Exception {
+        try (ThreadedRun run = new ThreadedRun(LocalEnvironment.root().resolve("testLoadFiles/environment/empty-room.xml"),
+                1, 50)) {
+            java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
+            Future<Ran> r1;
+            Future<Ran> r2;
+            java.io.PrintStream out = System.out;
+            synchronized (System.class) {
+                System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+                try {
+                    r1 = run.robot(() -> run(RobotSyncTaskExample::main, "r1", "127.0.0.1", String.valueOf(run.port())));
+                    r2 = run.robot(() -> run(RobotSyncTaskExample::main, "r2", "127.0.0.1", String.valueOf(run.port())));
+                    run.await();
+                    r1.get(60, TimeUnit.SECONDS);
+                    r2.get(60, TimeUnit.SECONDS);
+                } finally {
+                    System.setOut(out);
+                }
+            }
+            String text = printed.toString(StandardCharsets.UTF_8);
+            // a line each cycle for each robot (r1 at 1500, 1500, 45°; r2 at 4500, 4500, -135°), then the goodbyes
+            assertTrue(text.contains("\rx 1500.0  y 1500.0  th    45.0 vel     0.0 mpacs"), text);
+            assertTrue(text.contains("\rx 4500.0  y 4500.0  th  -135.0 vel     0.0 mpacs"), text);
+            assertTrue(text.split("\r").length > 60, "a line a cycle, 50 steps each: " + text.split("\r").length);
+            assertEquals(2, text.split("Disconnected. Goodbye.", -1).length - 1, text);
         }
     }
 }
