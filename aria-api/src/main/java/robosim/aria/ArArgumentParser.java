@@ -215,7 +215,19 @@ public class ArArgumentParser {
      * @return false if it was given without a value or with another (logged)
      */
     public boolean checkParameterArgumentBool(String argument, boolean[] dest) {
-        String value = taken(argument, null, false);
+        return checkParameterArgumentBool(argument, dest, null, false);
+    }
+
+    /**
+     * @param argument     the argument
+     * @param dest         its value goes in {@code dest[0]} when given: true, false, 1 or 0
+     * @param wasReallySet {@code wasReallySet[0]} says whether it was given, or null
+     * @param returnFirst  take the first one given
+     * @return false if it was given without a value or with another (logged)
+     */
+    public boolean checkParameterArgumentBool(String argument, boolean[] dest, boolean[] wasReallySet,
+                                              boolean returnFirst) {
+        String value = taken(argument, wasReallySet, returnFirst);
         if (value == null) {
             return true;
         }
@@ -230,6 +242,7 @@ public class ArArgumentParser {
         if (!value.isEmpty()) {
             ArLog.log(ArLog.Normal, "Argument given to %s was not a bool (true, false, 1, 0) it was the string %s",
                     argument, value);
+            reallySet(wasReallySet, false);
         }
         return false;
     }

@@ -1,73 +1,76 @@
 package robosim.aria;
 
+import robosim.pioneer.Commands;
+
 /**
  * ARIA's {@code ArCommands}: the numbers of the Pioneer's client commands (ArCommands.h), for
  * {@link ArRobot#comInt}, {@link ArRobot#com} and the like, as ARIA programs send them directly
- * ({@code robot.comInt(ArCommands.SOUNDTOG, 0)}). {@link ArRobot#comInt} says which it simulates.
+ * ({@code robot.comInt(ArCommands.SOUNDTOG, 0)}); the numbers the Pioneer protocol module knows come from
+ * {@link Commands}. {@link ArRobot#comInt} says which it simulates.
  */
 public final class ArCommands {
     /** Keeps the connection alive. */
-    public static final int PULSE = 0;
+    public static final int PULSE = Commands.PULSE;
     /** Starts the controller. */
-    public static final int OPEN = 1;
+    public static final int OPEN = Commands.OPEN;
     /** Closes the connection. */
-    public static final int CLOSE = 2;
+    public static final int CLOSE = Commands.CLOSE;
     /** Sets the sonar polling sequence. */
-    public static final int POLLING = 3;
+    public static final int POLLING = Commands.POLLING;
     /** Enables (1) or disables (0) the motors. */
-    public static final int ENABLE = 4;
+    public static final int ENABLE = Commands.ENABLE;
     /** Sets the translational acceleration (positive) or deceleration (negative), mm/s². */
-    public static final int SETA = 5;
+    public static final int SETA = Commands.SETA;
     /** Sets the maximum translational velocity, mm/s. */
-    public static final int SETV = 6;
+    public static final int SETV = Commands.SETV;
     /** Resets the odometry to 0, 0, 0. */
-    public static final int SETO = 7;
+    public static final int SETO = Commands.SETO;
     /** Moves this far, mm. */
-    public static final int MOVE = 8;
+    public static final int MOVE = Commands.MOVE;
     /** Rotates at this velocity, deg/s (the original's). */
-    public static final int ROTATE = 9;
+    public static final int ROTATE = Commands.ROTATE;
     /** Sets the maximum rotational velocity, deg/s. */
-    public static final int SETRV = 10;
+    public static final int SETRV = Commands.SETRV;
     /** Sets the translational velocity, mm/s. */
-    public static final int VEL = 11;
+    public static final int VEL = Commands.VEL;
     /** Turns to this heading, degrees. */
-    public static final int HEAD = 12;
+    public static final int HEAD = Commands.HEAD;
     /** Turns by this much, degrees. */
-    public static final int DHEAD = 13;
+    public static final int DHEAD = Commands.DHEAD;
     /** Plays a tune (a string). */
-    public static final int SAY = 15;
+    public static final int SAY = Commands.SAY;
     /** Requests joystick packets. */
     public static final int JOYINFO = 17;
     /** Requests a configuration packet. */
-    public static final int CONFIG = 18;
+    public static final int CONFIG = Commands.CONFIG;
     /** Requests encoder packets. */
-    public static final int ENCODER = 19;
+    public static final int ENCODER = Commands.ENCODER;
     /** Sets the rotational velocity's direction. */
     public static final int SETRVDIR = 20;
     /** Sets the rotational velocity, deg/s. */
-    public static final int RVEL = 21;
+    public static final int RVEL = Commands.RVEL;
     /** Turns by this much from the controller's heading, degrees. */
     public static final int DCHEAD = 22;
     /** Sets the rotational acceleration (positive) or deceleration (negative), deg/s². */
-    public static final int SETRA = 23;
+    public static final int SETRA = Commands.SETRA;
     /** Enables (1) or disables (0) the sonar. */
-    public static final int SONAR = 28;
+    public static final int SONAR = Commands.SONAR;
     /** Stops the robot. */
-    public static final int STOP = 29;
+    public static final int STOP = Commands.STOP;
     /** Sets the digital outputs. */
     public static final int DIGOUT = 30;
     /** Sets the wheels' velocities: left in the high byte, right in the low, in 2 cm/s. */
-    public static final int VEL2 = 32;
+    public static final int VEL2 = Commands.VEL2;
     /** A gripper command. */
-    public static final int GRIPPER = 33;
+    public static final int GRIPPER = Commands.GRIPPER;
     /** Selects the analog port. */
     public static final int ADSEL = 35;
     /** The gripper's value. */
-    public static final int GRIPPERVAL = 36;
+    public static final int GRIPPERVAL = Commands.GRIPPERVAL;
     /** Requests gripper packets. */
     public static final int GRIPPERPACREQUEST = 37;
     /** Requests IO packets. */
-    public static final int IOREQUEST = 40;
+    public static final int IOREQUEST = Commands.IOREQUEST;
     /** Sends to the PTU. */
     public static final int PTUPOS = 41;
     /** Sends to the second serial port. */
@@ -75,7 +78,7 @@ public final class ArCommands {
     /** Reads from the second serial port. */
     public static final int GETAUX = 43;
     /** Stops at a bump. */
-    public static final int BUMPSTALL = 44;
+    public static final int BUMPSTALL = Commands.BUMPSTALL;
     /** The TCM2 compass. */
     public static final int TCM2 = 45;
     /** Drives by the joystick. */
@@ -89,13 +92,13 @@ public final class ArCommands {
     /** The second auxiliary port's baud rate. */
     public static final int AUX2BAUD = 52;
     /** Emergency stop. */
-    public static final int ESTOP = 55;
+    public static final int ESTOP = Commands.ESTOP;
     /** The stall's setting. */
     public static final int ESTALL = 56;
     /** Requests gyro packets. */
     public static final int GYRO = 58;
     /** Battery information. */
-    public static final int BATTERYINFO = 62;
+    public static final int BATTERYINFO = Commands.BATTERYINFO;
     /** The simulator's exit. */
     public static final int ENDSIM = 62;
     /** The simulator's step. */

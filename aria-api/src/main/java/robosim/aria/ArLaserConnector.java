@@ -179,8 +179,8 @@ public class ArLaserConnector {
                 && from.checkParameterArgumentString("-lpt" + s, portType)
                 && from.checkParameterArgumentInteger("-remoteLaserTcpPort" + s, tcp)
                 && from.checkParameterArgumentInteger("-rltp" + s, tcp)
-                && bool(from, "-laserFlipped" + s, flipped, flippedSet)
-                && bool(from, "-lf" + s, flipped, flippedSet)
+                && from.checkParameterArgumentBool("-laserFlipped" + s, flipped, flippedSet, false)
+                && from.checkParameterArgumentBool("-lf" + s, flipped, flippedSet, false)
                 && from.checkParameterArgumentDouble("-laserMaxRange" + s, maxRange, maxRangeSet, false)
                 && from.checkParameterArgumentDouble("-lmr" + s, maxRange, maxRangeSet, false)
                 && from.checkParameterArgumentString("-laserDegrees" + s, degrees)
@@ -217,24 +217,6 @@ public class ArLaserConnector {
         d.startingBaud = startingBaud[0];
         d.autoBaud = autoBaud[0];
         d.ignore = ignore[0];
-        return true;
-    }
-
-    private static boolean bool(ArArgumentParser from, String name, boolean[] value, boolean[] set) {
-        String given = from.checkParameterArgument(name);
-        if (given == null) {
-            return true;
-        }
-        if (given.equalsIgnoreCase("true") || given.equals("1")) {
-            value[0] = true;
-        } else if (given.equalsIgnoreCase("false") || given.equals("0")) {
-            value[0] = false;
-        } else {
-            ArLog.log(ArLog.Normal, given.isEmpty() ? "No argument given to " + name
-                    : "Argument given to " + name + " was not a bool (true, false, 1, 0) it was the string " + given);
-            return false;
-        }
-        set[0] = true;
         return true;
     }
 

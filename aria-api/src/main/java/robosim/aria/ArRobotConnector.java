@@ -1,8 +1,5 @@
 package robosim.aria;
 
-import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 
 /**
  * ARIA's {@code ArRobotConnector}: connects an {@link ArRobot} where the command line says, so that
@@ -33,8 +30,6 @@ public class ArRobotConnector {
     public static final String DEFAULT_HOST = "localhost";
     /** The TCP port ARIA looks for a robot server on: MobileSim's and the first Pioneer port's. */
     public static final int DEFAULT_PORT = 8101;
-    /** How long the connector waits for a Pioneer robot server's TCP port to answer, ms. */
-    private static final int PROBE_MS = 5000;
 
     private final ArArgumentParser parser;
     private ArRobot robot;
@@ -205,7 +200,7 @@ public class ArRobotConnector {
         }
         String host = remoteHost != null ? remoteHost : DEFAULT_HOST;
         ArLog.log(ArLog.Normal, "Connnecting to robot using TCP connection to %s:%d...", host, remoteRobotTcpPort);
-        if (!listening(host, remoteRobotTcpPort)) {
+        if (!new ArTcpConnection().openSimple(host, remoteRobotTcpPort)) {
             // ARIA opens the TCP connection here, and gives up at once when nobody answers
             if (remoteHost != null) {
                 ArLog.log(ArLog.Terse, "Could not connect robot to remote host %s, port %d.", remoteHost,
@@ -222,16 +217,6 @@ public class ArRobotConnector {
         which.usePioneerServer(which.getName(), host, remoteRobotTcpPort);
         usingSim = remoteHost == null || (remoteIsSim && !remoteIsNotSim);
         return true;
-    }
-
-    /** Whether a TCP connection to the address opens within {@value #PROBE_MS} ms; it is closed at once. */
-    private static boolean listening(String host, int port) {
-        try (Socket probe = new Socket()) {
-            probe.connect(new InetSocketAddress(host, port), PROBE_MS);
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
     }
 
     /** @return whether the robot connected, as {@link #connectRobot(ArRobot)} */

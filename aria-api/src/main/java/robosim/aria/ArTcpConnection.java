@@ -87,6 +87,15 @@ public class ArTcpConnection extends ArDeviceConnection {
         return open() == 0;
     }
 
+    /**
+     * @param hostName the host; null for localhost
+     * @param tcpPort  the port
+     * @return whether something answers there (ARIA's {@code openSimple} after {@code setPort})
+     */
+    public boolean openSimple(String hostName, int tcpPort) {
+        return open(hostName, tcpPort) == 0;
+    }
+
     @Override
     public String getOpenMessage(int messageNumber) {
         return switch (messageNumber) {

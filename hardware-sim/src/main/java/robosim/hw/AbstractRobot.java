@@ -568,8 +568,9 @@ public abstract class AbstractRobot {
         }
         long wake = hw.timeMs() + Math.max(ms, 1);
         java.util.Set<AbstractRobot> mine = CONNECTED_BY.get();
-        java.util.List<HardwareSimulator> parked = new java.util.ArrayList<>();
+        java.util.List<HardwareSimulator> parked = java.util.List.of();
         if (mine != null && mine.size() > 1) {
+            parked = new java.util.ArrayList<>();
             // the thread is the code of other robots too: they go on while it sleeps on this one
             for (AbstractRobot other : mine) {
                 HardwareSimulator o = other.hardware;
