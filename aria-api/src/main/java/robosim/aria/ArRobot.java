@@ -103,6 +103,8 @@ public class ArRobot extends AbstractRobot {
     private volatile BumperParameters bumpers = BumperParameters.ARIA_DEFAULTS;
     private volatile boolean cycleStopped;
     private volatile int sonarCycleMs;
+    /** Whether an ARIA connector connects the robot, which then logs ARIA's connection lines. */
+    private volatile boolean ariaConnectionLines;
 
     /** Robots made without a name, for ARIA's default names: robot, robot2, robot3, ... */
     private static final AtomicInteger UNNAMED = new AtomicInteger();
@@ -294,7 +296,11 @@ public class ArRobot extends AbstractRobot {
     @Override
     public boolean disconnect() {
         if (events.claimEnd()) {
-            LOG.info(() -> "robot " + getName() + ": Disconnecting from robot.");
+            if (ariaConnectionLines) {
+                ArLog.log(ArLog.Terse, "Disconnecting from robot.");
+            } else {
+                LOG.info(() -> "robot " + getName() + ": Disconnecting from robot.");
+            }
             events.disconnectNormally.invoke(getName());
             super.disconnect();
             loopExited();
@@ -381,6 +387,9 @@ public class ArRobot extends AbstractRobot {
      */
     @Override
     protected void welcomed(RobotState initial) {
+        if (ariaConnectionLines) {
+            logConnected();
+        }
         events.openedMs = initial.timeMs();
         if (sonarCycleMs > 0) {
             request(new Command.SetSonarCycle(sonarCycleMs));
@@ -394,6 +403,23 @@ public class ArRobot extends AbstractRobot {
         if (events.stabilizingTimeMs == 0) {
             finishedConnection();
         }
+    }
+
+    /** An ARIA connector connects the robot: it logs ARIA's lines as it connects and disconnects. */
+    void logConnectionAsAria() {
+        ariaConnectionLines = true;
+    }
+
+    /**
+     * ARIA's lines once the robot's server has answered ({@code ArRobot::asyncConnectHandler} and
+     * {@code processParamFile}, ArRobot.cpp): who the robot is, from its parameters.
+     */
+    private void logConnected() {
+        ArLog.log(ArLog.Terse, "Connected to robot.");
+        ArLog.log(ArLog.Normal, "Name: %s", getRobotName());
+        ArLog.log(ArLog.Normal, "Type: %s", getRobotType());
+        ArLog.log(ArLog.Normal, "Subtype: %s", getRobotSubType());
+        ArLog.log(ArLog.Normal, "Robot Serial Number: %s", getRobotSerialNumber());
     }
 
     /**
@@ -2308,9 +2334,12 @@ public class ArRobot extends AbstractRobot {
         return getParameters().subclass();
     }
 
-    /** @return the empty string: a simulated robot has no serial number (ARIA's answer without a config packet) */
+    /**
+     * @return {@code SIM}: the serial number a simulated robot gives, as MobileSim's and RoboSim's
+     *     Pioneer port's CONFIG packets do (ARIA's {@code ArRobot::getRobotSerialNumber}, ArRobot.h)
+     */
     public String getRobotSerialNumber() {
-        return "";
+        return "SIM";
     }
 
     /**

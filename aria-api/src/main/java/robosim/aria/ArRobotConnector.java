@@ -45,6 +45,7 @@ public class ArRobotConnector {
     private boolean remoteIsSim;
     private boolean remoteIsNotSim;
     private boolean usingSim;
+    private final boolean connectAllComponents;
 
     /**
      * @param parser the program's arguments; the connector takes its own when they are parsed
@@ -60,13 +61,15 @@ public class ArRobotConnector {
      * @param autoParseArgs         whether {@link #connectRobot()} parses the arguments if
      *                              {@link Aria#parseArgs()} has not yet
      * @param connectAllComponents  ARIA's: connect the robot's separate boards (an MTX's battery,
-     *                              sonar); a simulated robot's come with it, so this changes nothing
+     *                              sonar) in {@link #connectRobot()}; a simulated robot's come with it,
+     *                              which {@link #connectRobot()} says as ARIA does
      */
     public ArRobotConnector(ArArgumentParser parser, ArRobot robot, boolean autoParseArgs,
                             boolean connectAllComponents) {
         this.parser = parser;
         this.robot = robot;
         this.autoParseArgs = autoParseArgs;
+        this.connectAllComponents = connectAllComponents;
         Aria.addParseArgsCB(this::parseArgs, 75, "ArRobotConnector");
         Aria.addLogOptionsCB(this::logOptions, 90);
     }
@@ -219,9 +222,23 @@ public class ArRobotConnector {
         return true;
     }
 
-    /** @return whether the robot connected, as {@link #connectRobot(ArRobot)} */
+    /**
+     * Connects the connector's robot, as {@link #connectRobot(ArRobot)}; then, as ARIA's {@code
+     * ArRobotConnector::connectRobot()} (ArRobotConnector.cpp), when all components are to be
+     * connected and the robot is a simulator's ({@link #getRemoteIsSim()}), says that there are none
+     * to connect.
+     *
+     * @return whether the robot connected
+     */
     public boolean connectRobot() {
-        return connectRobot(robot);
+        if (!connectRobot(robot)) {
+            return false;
+        }
+        if (connectAllComponents && getRemoteIsSim()) {
+            ArLog.log(ArLog.Normal,
+                    "ArRobotConnector: Connected to simulator, not connecting to additional hardware components.");
+        }
+        return true;
     }
 
     /**
@@ -238,6 +255,7 @@ public class ArRobotConnector {
         if (which.isConnected()) {
             return true;
         }
+        which.logConnectionAsAria();
         if (!which.blockingConnect()) {
             ArLog.log(ArLog.Terse, "ArRobotConnector: could not connect robot %s: %s", which.getName(),
                     which.getConnectionError());
@@ -267,9 +285,22 @@ public class ArRobotConnector {
         return remoteRobotTcpPort;
     }
 
-    /** @return whether {@code -remoteIsSim} was given */
+    /**
+     * Whether the robot is a simulator's, as ARIA's {@code ArRobotConnector::getRemoteIsSim}
+     * (ArRobotConnector.cpp) decides: {@code -remoteIsSim} says yes, {@code -remoteIsNotSim} no;
+     * otherwise a robot whose serial number is {@code SIM} is one (every robot RoboSim connects, in
+     * lockstep or through a Pioneer port, as MobileSim's robots).
+     *
+     * @return whether the robot is simulated
+     */
     public boolean getRemoteIsSim() {
-        return remoteIsSim;
+        if (remoteIsSim) {
+            return true;
+        }
+        if (remoteIsNotSim) {
+            return false;
+        }
+        return robot != null && "SIM".equalsIgnoreCase(robot.getRobotSerialNumber());
     }
 
     /** @return whether {@code -remoteIsNotSim} was given */

@@ -91,7 +91,7 @@ class ArRobotStateExtrasTest {
         assertEquals("Pioneer", robot.getRobotType());
         assertEquals("p3dx", robot.getRobotSubType());
         assertSame(robot.getParameters(), robot.getRobotParams());
-        assertEquals("", robot.getRobotSerialNumber());
+        assertEquals("SIM", robot.getRobotSerialNumber());
         robot.setAbsoluteMaxTransVel(300);
         robot.setName("other");
         assertEquals("other", robot.getName());

@@ -102,7 +102,8 @@ class AriaExamplesTest {
             assertTrue(ran.out().contains("simpleConnect: Pose=(1500.00,1500.00,45.00), Trans.  Vel=0.00, Battery=13.00V"
                     + "\n"), ran.out());
             assertTrue(other.out().contains("simpleConnect: Pose=(4500.00,4500.00,-135.00)"), other.out());
-            assertTrue(ran.out().endsWith("simpleConnect: Ending robot thread...\nsimpleConnect: Exiting.\n"), ran.out());
+            assertTrue(ran.out().endsWith("simpleConnect: Ending robot thread...\nDisconnecting from robot.\n"
+                    + "simpleConnect: Exiting.\n"), ran.out());
             // 3 s of 100 ms steps, and the connection's first steps
             assertTrue(report.steps() >= 30 && report.steps() < 40, "steps: " + report.steps());
         }
@@ -302,9 +303,13 @@ class AriaExamplesTest {
             // the connect callback first, then the program; stopRunning disconnects, and the
             // disconnect callback exits 0 before the program's own exit
             assertTrue(ran.out().startsWith("Connecting robot r1 to the RoboSim Environment at 127.0.0.1:"), ran.out());
-            assertTrue(ran.out().contains("ConnHandler: Connected. Turning off sonar,\nrobotConnectionCallbacks:"
-                    + " Connected.\nSleeping for 10 seconds...\n...requesting that the robot thread exit, then"
-                    + " shutting down ARIA and exiting.\n"), ran.out());
+            // ARIA's lines as it connects and disconnects, as the C++ prints them over a Pioneer port
+            assertTrue(ran.out().contains("Connected to robot.\nName: r1\nType: Pioneer\nSubtype: p3dx\n"
+                    + "Robot Serial Number: SIM\nConnHandler: Connected. Turning off sonar,\n"
+                    + "ArRobotConnector: Connected to simulator, not connecting to additional hardware components.\n"
+                    + "robotConnectionCallbacks: Connected.\nSleeping for 10 seconds...\n...requesting that the robot"
+                    + " thread exit, then shutting down ARIA and exiting.\nDisconnecting from robot.\n"
+                    + "ConnHandler: Connection closed. Exiting the program.\n"), ran.out());
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(report.steps() >= 100 && report.steps() < 115, "10 s of 100 ms steps: " + report.steps());
         }
