@@ -1,8 +1,14 @@
 package robosim.aria;
 
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Locale;
 
 /**
  * Finds straight lines in a laser's latest scan, as ARIA's {@code ArLineFinder} (ArLineFinder.cpp):
@@ -15,9 +21,8 @@ import java.util.List;
  * and the merging is done again. Points and lines are in global coordinates.
  *
  * <p>It reads {@link ArRangeDevice#getRawReadings()}: in RoboSim, an {@link ArLMS2xx}'s (or
- * {@link ArSick}'s) latest scan. ARIA's {@code saveLast} writes files of points and lines; here
- * {@link #getPoints()} and {@link #getLines()} give them. No {@code addToConfig}: RoboSim has no
- * {@code ArConfig}.
+ * {@link ArSick}'s) latest scan. {@link #getPoints()} and {@link #getLines()} give what it found,
+ * and {@link #saveLast()} writes them to files as ARIA's does.
  */
 public class ArLineFinder {
     private final ArRangeDevice rangeDevice;
@@ -83,6 +88,47 @@ public class ArLineFinder {
             }
         }
         return out;
+    }
+
+    /**
+     * Finds the lines in the latest scan and saves them, as ARIA's {@code
+     * ArLineFinder::getLinesAndSaveThem} (ArLineFinder.cpp): {@link #getLines()}, then {@link #saveLast()}.
+     */
+    public synchronized void getLinesAndSaveThem() {
+        getLines();
+        saveLast();
+    }
+
+    /**
+     * Writes the points and lines of the last scan read to the files {@code points} ({@code x y} a
+     * line) and {@code lines} ({@code x1 y1 dx dy} a line), whole millimetres, in the working
+     * directory, as ARIA's {@code ArLineFinder::saveLast} (ArLineFinder.cpp) does; then logs "Saved
+     * points and lines". A file that cannot be written is logged, as in ARIA, and nothing more is saved.
+     */
+    public synchronized void saveLast() {
+        if (!write(Path.of("points"), out -> points.forEach(p ->
+                out.printf(Locale.ROOT, "%.0f %.0f%n", p.getX(), p.getY())))) {
+            return;
+        }
+        if (!write(Path.of("lines"), out -> lines.forEach(l -> out.printf(Locale.ROOT, "%.0f %.0f %.0f %.0f%n",
+                l.getX1(), l.getY1(), l.getX2() - l.getX1(), l.getY2() - l.getY1())))) {
+            return;
+        }
+        ArLog.log(ArLog.Normal, "Saved points and lines");
+    }
+
+    private static boolean write(Path file, java.util.function.Consumer<PrintWriter> lines) {
+        try (PrintWriter out = new PrintWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8))) {
+            lines.accept(out);
+            if (out.checkError()) {
+                throw new IOException("a write failed");
+            }
+            return true;
+        } catch (IOException e) {
+            ArLog.log(ArLog.Terse, "ArLineFinder::log: Could not open '%s' file for output: %s", file,
+                    e.getMessage());
+            return false;
+        }
     }
 
     /** @return the points of the last scan read, global mm */

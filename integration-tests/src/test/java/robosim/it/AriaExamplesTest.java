@@ -20,6 +20,7 @@ import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
 import robosim.examples.aria.ActionExample;
 import robosim.examples.aria.LaserConnect;
+import robosim.examples.aria.LineFinderExample;
 import robosim.examples.aria.RobotConnectionCallbacks;
 import robosim.examples.aria.RobotSyncTaskExample;
 import robosim.examples.aria.SimpleConnect;
@@ -76,9 +77,14 @@ class AriaExamplesTest {
 
     /** Runs an example whose key handler reads standard input, with these keys on it. */
     static Ran runWithKeys(String keys, Consumer<String[]> main, String... args) {
+        return runWithInput(new java.io.ByteArrayInputStream(keys.getBytes(StandardCharsets.ISO_8859_1)), main, args);
+    }
+
+    /** Runs an example whose key handler reads standard input, with this stream as the keyboard. */
+    static Ran runWithInput(java.io.InputStream keys, Consumer<String[]> main, String... args) {
         synchronized (System.class) {
             java.io.InputStream in = System.in;
-            System.setIn(new java.io.ByteArrayInputStream(keys.getBytes(StandardCharsets.ISO_8859_1)));
+            System.setIn(keys);
             try {
                 return run(main, args);
             } finally {
@@ -342,5 +348,77 @@ class AriaExamplesTest {
             assertTrue(text.split("\r").length > 60, "a line a cycle, 50 steps each: " + text.split("\r").length);
             assertEquals(2, text.split("Disconnected. Goodbye.", -1).length - 1, text);
         }
+    }
+
+    @Test
+    void lineFinderExampleSavesTheWallItSeesWhenFIsPressed() throws Exception {
+        PioneerRun.room(dir);
+        // ARIA's line finder writes 'points' and 'lines' to the working directory
+        Path points = Path.of("points");
+        Path lines = Path.of("lines");
+        java.nio.file.Files.deleteIfExists(points);
+        java.nio.file.Files.deleteIfExists(lines);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 30)) {
+            Future<Ran> r1 = run.robot(() -> runWithInput(keysOnceTheLaserHasReadings("f"), LineFinderExample::main,
+                    "r1", "127.0.0.1", String.valueOf(run.port()), "-connectLaser"));
+            run.await();
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("lineFinderExample: Connected to laser\n"), ran.out());
+            assertTrue(ran.out().contains("Saved points and lines\n"), ran.out());
+            // r1 at (3000, 3000) faces +x in a room whose inner faces are at 100 and 9900: within the
+            // line finder's 5 m, only the wall on the right, y = 100, from about x = 3000 to 7073
+            java.util.List<double[]> p = numbers(points);
+            java.util.List<double[]> l = numbers(lines);
+            assertTrue(p.size() > 40, "points: " + p.size());
+            assertTrue(p.stream().allMatch(xy -> Math.abs(xy[1] - 100) <= 2 && xy[0] > 2900 && xy[0] < 7100),
+                    () -> "points off the wall: " + java.util.Arrays.deepToString(p.toArray()));
+            assertTrue(!l.isEmpty(), "lines: none");
+            assertTrue(l.stream().allMatch(xyd -> Math.abs(xyd[1] - 100) <= 2 && Math.abs(xyd[3]) <= 2
+                    && Math.abs(xyd[2]) > 1000), () -> "lines: " + java.util.Arrays.deepToString(l.toArray()));
+        } finally {
+            java.nio.file.Files.deleteIfExists(points);
+            java.nio.file.Files.deleteIfExists(lines);
+        }
+    }
+
+    /**
+     * Keys pressed once the program's robot has a laser scan, as a user presses them: the key
+     * handler's reader, a thread of the program's, waits (bounded) for the robot's first laser to
+     * have readings before it reads the keys.
+     */
+    static java.io.InputStream keysOnceTheLaserHasReadings(String keys) {
+        byte[] bytes = keys.getBytes(StandardCharsets.ISO_8859_1);
+        return new java.io.InputStream() {
+            private int next = -1;
+
+            @Override
+            public int read() throws java.io.IOException {
+                if (next < 0) {
+                    long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+                    while (Aria.getRobotList().stream().map(r -> r.findLaser(1))
+                            .noneMatch(l -> l != null && !l.getRawReadings().isEmpty())) {
+                        if (System.nanoTime() > end) {
+                            throw new java.io.IOException("the robot's laser had no readings within 60 s");
+                        }
+                        try {
+                            Thread.sleep(5);
+                        } catch (InterruptedException e) {
+                            Thread.currentThread().interrupt();
+                            throw new java.io.InterruptedIOException();
+                        }
+                    }
+                    next = 0;
+                }
+                return next < bytes.length ? bytes[next++] & 0xff : -1;
+            }
+        };
+    }
+
+    /** The numbers of each line of a file the line finder wrote. */
+    private static java.util.List<double[]> numbers(Path file) throws java.io.IOException {
+        return java.nio.file.Files.readAllLines(file).stream()
+                .map(line -> java.util.Arrays.stream(line.trim().split(" ")).mapToDouble(Double::parseDouble).toArray())
+                .toList();
     }
 }
