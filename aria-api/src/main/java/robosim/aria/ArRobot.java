@@ -55,6 +55,7 @@ public class ArRobot extends AbstractRobot {
     private final TaskList userTasks = new TaskList("user");
     private final RangeDevices rangeDevices = new RangeDevices();
     private volatile ArKeyHandler keyHandler;
+    private volatile boolean keyHandlerUseExitNotShutdown = true;
     private volatile ArDeviceConnection deviceConnection;
     /** Runtimes made for Pioneer robot servers, for their names. */
     private static final AtomicInteger PIONEER_RUNTIMES = new AtomicInteger();
@@ -1485,17 +1486,26 @@ public class ArRobot extends AbstractRobot {
      */
     public void attachKeyHandler(ArKeyHandler handler, boolean exitOnEscape, boolean useExitNotShutdown) {
         keyHandler = handler;
+        keyHandlerUseExitNotShutdown = useExitNotShutdown;
         addSensorInterpTask("Key Handler", 50, handler::checkKeys);
         if (exitOnEscape) {
-            handler.addKeyHandler(ArKeyHandler.ESCAPE, () -> {
-                ArLog.log(ArLog.Terse, "Escape was pressed, program is exiting.");
-                if (useExitNotShutdown) {
-                    Aria.exit(0);
-                } else {
-                    stopRunning();
-                    Aria.shutdown();
-                }
-            });
+            handler.addKeyHandler(ArKeyHandler.ESCAPE, this::keyHandlerExit);
+        }
+    }
+
+    /**
+     * What Escape does on an attached key handler, as ARIA's {@code ArRobot::keyHandlerExit}
+     * (ArRobot.cpp): logs that Escape was pressed, then ends the program with {@link Aria#exit}, or,
+     * if the handler was attached with {@code useExitNotShutdown} false, stops the robot's cycle and
+     * {@link Aria#shutdown}s.
+     */
+    public void keyHandlerExit() {
+        ArLog.log(ArLog.Terse, "Escape was pressed, program is exiting.");
+        if (keyHandlerUseExitNotShutdown) {
+            Aria.exit(0);
+        } else {
+            stopRunning();
+            Aria.shutdown();
         }
     }
 
