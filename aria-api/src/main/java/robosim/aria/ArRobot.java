@@ -191,6 +191,8 @@ public class ArRobot extends AbstractRobot {
     public boolean blockingConnect() {
         ArDeviceConnection through = deviceConnection;
         if (through != null && !isConnected()) {
+            // an ARIA program's own connection: ARIA's lines, as through a connector
+            logConnectionAsAria();
             usePioneerServer(getName(), through.host(), through.port());
         }
         if (!tryConnect(HardwareOptions.defaults())) {
@@ -2322,10 +2324,11 @@ public class ArRobot extends AbstractRobot {
 
     /**
      * @return the robot's name as the robot reports it (ARIA's {@code ArRobot::getRobotName}
-     *     (ArRobot.h)): its name in the world
+     *     (ArRobot.h)): its name in the world, or, through a Pioneer robot server, the name the server
+     *     gives it in its handshake
      */
     public String getRobotName() {
-        return getName();
+        return getServerRobotName();
     }
 
     /**

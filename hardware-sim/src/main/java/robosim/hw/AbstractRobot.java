@@ -621,6 +621,19 @@ public abstract class AbstractRobot {
     }
 
     /**
+     * The name the robot's server gives it: a Pioneer robot server's name for its robot (from its
+     * handshake, as ARIA's {@code getRobotName} reads it), once connected through one; otherwise,
+     * in the Environment, the robot's own name.
+     *
+     * @return the name
+     */
+    public String getServerRobotName() {
+        HardwareSimulator hw = hardware;
+        String server = hw == null ? null : hw.serverRobotName();
+        return server != null ? server : name;
+    }
+
+    /**
      * One of the world's properties (its world file's {@code <property>} elements), as the
      * Environment's welcome gave them: what a program needs to know of the world, such as a maze's
      * cell size. Valid once the robot is connected; before, and on a Pioneer port, there are none.

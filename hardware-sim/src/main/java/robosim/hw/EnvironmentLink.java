@@ -42,6 +42,14 @@ public interface EnvironmentLink {
     }
 
     /**
+     * @return the name the robot's own server gives it, once open (a Pioneer robot server's, from its
+     *     handshake), or null when the robot is the Environment's and its name is the program's
+     */
+    default String serverRobotName() {
+        return null;
+    }
+
+    /**
      * Sends the robot's requests for a step.
      *
      * @param step     the step open

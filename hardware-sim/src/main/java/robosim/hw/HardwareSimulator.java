@@ -122,6 +122,12 @@ public final class HardwareSimulator implements RequestQueue, StepReceiver {
         return open(link);
     }
 
+    /** @return the name the robot's own server gives it (see {@link EnvironmentLink#serverRobotName()}), or null */
+    String serverRobotName() {
+        EnvironmentLink l = link;
+        return l == null ? null : l.serverRobotName();
+    }
+
     /** @return the runtime the robot uses, once it has begun to connect; else null */
     RobotRuntime runtime() {
         return runtime;

@@ -72,6 +72,12 @@ public final class PioneerLink extends ReleasedOnClose {
     }
 
     @Override
+    public String serverRobotName() {
+        PioneerClient c = client;
+        return c == null || c.identity() == null ? null : c.identity().name();
+    }
+
+    @Override
     public Welcome open(RobotHello hello, StepReceiver receiver) throws IOException {
         try {
             PioneerClient c = PioneerClient.connect(host, port, options.connectTimeoutMs());

@@ -283,6 +283,9 @@ class AriaExamplesTest {
                     String.valueOf(run.ports.portOf("r2")))).get(90, TimeUnit.SECONDS);
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(ran.out().contains("Connecting to second robot at 127.0.0.1:"), ran.out());
+            // each robot's own connection logs ARIA's lines, with the name the Pioneer server gives it
+            assertTrue(ran.out().contains("Connected to robot.\nName: r1\nType: Pioneer\nSubtype: p3dx\n"), ran.out());
+            assertTrue(ran.out().contains("Connected to robot.\nName: r2\n"), ran.out());
             assertEquals(1, ran.out().lines().filter(l -> l.equals("Switching to robot 2.")).count(), ran.out());
             assertTrue(ran.out().endsWith("Both robots disconnected.\n"), ran.out());
             RobotSummary r1 = run.env.sim.summary("r1");
