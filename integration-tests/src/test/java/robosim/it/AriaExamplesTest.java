@@ -25,6 +25,7 @@ import robosim.examples.aria.RobotConnectionCallbacks;
 import robosim.examples.aria.RobotSyncTaskExample;
 import robosim.examples.aria.SimpleConnect;
 import robosim.examples.aria.SimpleMotionCommands;
+import robosim.examples.aria.ThreadExample;
 import robosim.examples.aria.TwoRobotWander;
 import robosim.examples.aria.Wander;
 
@@ -383,6 +384,34 @@ class AriaExamplesTest {
             java.nio.file.Files.deleteIfExists(points);
             java.nio.file.Files.deleteIfExists(lines);
         }
+    }
+
+    @Test
+    void threadExampleCountsInItsThreadWaitsOnTheConditionAndStopsTheThread() {
+        java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
+        Ran ran;
+        java.io.PrintStream out = System.out;
+        synchronized (System.class) {
+            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+            try {
+                ran = run(ThreadExample::main);
+            } finally {
+                System.setOut(out);
+            }
+        }
+        String log = ran.out();
+        // the counter reaches 10 and signals; the main thread, polling every 600 ms, sees 10 after
+        // the signal, so (a signal with nobody waiting being lost, as in ARIA) the signal at 20 wakes it
+        assertTrue(log.startsWith("Main thread: Running new example thread ...\n"), log);
+        assertTrue(log.contains("Example thread: incremented counter to 10.\nExample thread: Signalling condition.\n"), log);
+        assertTrue(printed.toString(StandardCharsets.UTF_8).contains("Main thread: Counter=10.\n"), printed::toString);
+        int waiting = log.indexOf("Main thread: Waiting on condition object...");
+        int woken = log.indexOf(" ExampleThreadCondition ArCondition object was signalled, done waiting for it.");
+        assertTrue(waiting > 0 && woken > waiting, log);
+        assertTrue(log.lastIndexOf("Example thread: Signalling condition.") < woken, log);
+        assertTrue(log.contains("Main thread: Condition was signaled, and execution continued. Telling the other thread"
+                + " to stop running.\nMain thread: Waiting for the other thread to exit, then exiting the program.\n"), log);
+        assertTrue(log.contains("Main thread: Exiting program.\n"), log);
     }
 
     /**
