@@ -102,6 +102,10 @@ class AriaLaserExamplesTest {
                     + " 'raw' readings.\n\tClosest reading is at -90 degrees and is 2.9001 meters away.\n";
             assertTrue(ran.out().contains("lasersExample: Robot parameters include information for 1 lasers:\n"
                     + "\tlaser #1: pose=(x:18, y:0, z:0, th:0.00), powerOutput=\n"), ran.out());
+            // the connector's settings as ARIA logs them, none given on the command line
+            assertTrue(ran.out().contains("ArLaserConnector: laser #1: lms2xx_1: will connect to this laser, port=(null),"
+                    + " portType=(null), remoteTCPPort=0, flipped=0, fov=(inf, -inf), increment=-inf.\n"
+                    + "ArLaserConnector: command-line arguments have been parsed.\n"), ran.out());
             assertEquals(4, ran.out().split(java.util.regex.Pattern.quote(reading), -1).length - 1,
                     "every 3 s of 12: " + ran.out());
             assertTrue(ran.out().endsWith("lasersExample: exiting.\n"), ran.out());
@@ -119,8 +123,26 @@ class AriaLaserExamplesTest {
             // a Pioneer's LaserAutoConnect is false: without -connectLaser there is no laser to read
             assertTrue(ran.out().contains("lasersExample: Robot parameters include information for 0 lasers:\n"),
                     ran.out());
+            assertTrue(ran.out().contains("ArLaserConnector: laser #1: lms2xx_1: will NOT connect to this laser,"),
+                    ran.out());
             assertTrue(ran.out().contains("lasersExample: ArRobot provided a set of 0 ArLaser objects.\n"
                     + "lasersExample: No lasers.\n"), ran.out());
+        }
+    }
+
+    @Test
+    void lasersRefusesASecondLaserWithTheReasonAndExitsAsAriaDoesOnABadArgument() throws Exception {
+        PioneerRun.room(dir);
+        try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 40)) {
+            Future<Ran> r1 = run.robot(() -> AriaExamplesTest.run(Lasers::main, "r1", "127.0.0.1", port(run),
+                    "-connectLaser", "-laserType2", "lms2xx", "-connectLaser2"));
+            Ran ran = r1.get(60, TimeUnit.SECONDS);
+            run.await();
+            // Aria.parseArgs fails at the laser RoboSim cannot make: the options, and exit code 2
+            assertEquals(2, ran.exit(), ran.out());
+            assertTrue(ran.out().contains("ArLaserConnector: laser 2: RoboSim simulates one laser per robot, laser 1"),
+                    ran.out());
+            assertTrue(ran.out().contains("Options for ArLaserConnector:"), ran.out());
         }
     }
 }
