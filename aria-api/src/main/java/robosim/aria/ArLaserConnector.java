@@ -161,7 +161,7 @@ public class ArLaserConnector {
         }
         String[] port = {d.port};
         String[] portType = {d.portType};
-        int[] tcp = {d.remoteTcpPort == null ? d.laser.getDefaultTcpPort() : d.remoteTcpPort};
+        int[] tcp = {d.remoteTcpPort == null ? 0 : d.remoteTcpPort};
         boolean[] flipped = {d.flipped != null && d.flipped};
         boolean[] flippedSet = {false};
         double[] maxRange = {d.maxRange == null ? 0 : d.maxRange};
@@ -375,6 +375,30 @@ public class ArLaserConnector {
             }
         }
         return all;
+    }
+
+    /**
+     * Logs what the connector holds for each laser: whether it will connect it, and the settings the
+     * command line gave, as ARIA's {@code ArLaserConnector::logLaserData} (ArLaserConnector.cpp) does;
+     * then whether the arguments have been parsed. A setting not given shows as ARIA shows it unset:
+     * a port of {@code (null)}, a remote TCP port of 0, and a field of view and increment of
+     * {@code (inf, -inf)} and {@code -inf} (RoboSim's connector takes the field of view and increment
+     * as ARIA's choices, {@code -laserDegrees} and {@code -laserIncrement}, never as degrees).
+     */
+    public void logLaserData() {
+        for (Map.Entry<Integer, LaserData> i : lasers.entrySet()) {
+            LaserData ld = i.getValue();
+            ArLog.log(ArLog.Normal, "ArLaserConnector: laser #%d: %s: %s, port=%s, portType=%s, remoteTCPPort=%d,"
+                    + " flipped=%d, fov=(inf, -inf), increment=-inf.", i.getKey(), ld.laser.getName(),
+                    ld.connect ? "will connect to this laser" : "will NOT connect to this laser",
+                    ld.port == null ? "(null)" : ld.port, ld.portType == null ? "(null)" : ld.portType,
+                    ld.remoteTcpPort == null ? 0 : ld.remoteTcpPort, ld.flipped != null && ld.flipped ? 1 : 0);
+        }
+        if (parsed) {
+            ArLog.log(ArLog.Normal, "ArLaserConnector: command-line arguments have been parsed.");
+        } else {
+            ArLog.log(ArLog.Normal, "ArLaserConnector: command-line arguments have not yet been parsed");
+        }
     }
 
     /** @param number a laser's number @return the laser the connector made or was given for it, or null */

@@ -96,6 +96,20 @@ class ArLaserConnectorTest {
     }
 
     @Test
+    void logLaserDataLogsEachLasersSettingsAsAriaDoes() {
+        ArLaserConnector connector = new ArLaserConnector(args("-connectLaser -lp COM3 -lpt serial -rltp 8102 -lf true"),
+                Cycles.p3dxRobot(), null);
+        connector.logLaserData();
+        assertEquals("ArLaserConnector: command-line arguments have not yet been parsed\n", log());
+        assertTrue(connector.parseArgs());
+        log.reset();
+        connector.logLaserData();
+        assertEquals("ArLaserConnector: laser #1: lms2xx_1: will connect to this laser, port=COM3, portType=serial,"
+                + " remoteTCPPort=8102, flipped=1, fov=(inf, -inf), increment=-inf.\n"
+                + "ArLaserConnector: command-line arguments have been parsed.\n", log());
+    }
+
+    @Test
     void otherTypesSecondLasersAndBadValuesAreRefusedWithTheReason() {
         assertFalse(new ArLaserConnector(args("-lt urg"), Cycles.p3dxRobot(), null).parseArgs());
         assertTrue(log().contains("Unknown laser type urg for laser 1, choices are lms2xx"), log());
