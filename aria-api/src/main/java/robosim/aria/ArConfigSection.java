@@ -43,9 +43,9 @@ public final class ArConfigSection {
         this.comment = comment == null ? "" : comment;
     }
 
-    /** @return its flags, separated by single spaces ("" if none) */
+    /** @return its flags, separated by '|' as ARIA writes them ("" if none) */
     public String getFlags() {
-        return String.join(" ", flags);
+        return String.join("|", flags);
     }
 
     /** @param flag a flag @return whether the section has it (exactly, as ARIA compares) */

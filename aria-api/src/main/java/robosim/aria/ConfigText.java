@@ -70,8 +70,10 @@ final class ConfigText {
         int i = start;
         String keyword;
         if (line.charAt(i) == '"') {
-            int close = line.indexOf('"', i + 1);
-            keyword = close < 0 ? line.substring(i + 1) : line.substring(i + 1, close);
+            // ARIA's text starts after the quote: an unknown quoted name keeps only its closing quote
+            start++;
+            int close = line.indexOf('"', start);
+            keyword = close < 0 ? line.substring(start) : line.substring(start, close);
             i = close < 0 ? line.length() : close + 1;
         } else {
             while (i < line.length() && !isSpace(line.charAt(i))) {
