@@ -128,12 +128,7 @@ public final class ArConfigArg {
      * @param str  its text
      */
     public ArConfigArg(String name, String str) {
-        this(Type.STRING_HOLDER, name, "", holder(str), v -> { }, NO_INT_BOUNDS, NO_DOUBLE_BOUNDS, 0, 0);
-    }
-
-    private static Supplier<Object> holder(String str) {
-        String value = str == null ? "" : str;
-        return () -> value;
+        this(owned(Type.STRING_HOLDER, name, "", str == null ? "" : str, NO_INT_BOUNDS, NO_DOUBLE_BOUNDS, 0));
     }
 
     /**
@@ -231,7 +226,17 @@ public final class ArConfigArg {
                 NO_INT_BOUNDS, new double[] {minDouble, maxDouble}, precision, 0);
     }
 
-    /** As {@link #ofDouble(String, DoubleSupplier, DoubleConsumer, String, double, double, int)}, written with 5 digits. @param name its name @param get reads it @param set sets it @param description what it is @param minDouble least @param maxDouble greatest @return the argument */
+    /**
+     * The program's number within bounds, written with {@link #DEFAULT_DOUBLE_PRECISION} digits.
+     *
+     * @param name        its name
+     * @param get         reads the program's value
+     * @param set         sets it
+     * @param description what it is
+     * @param minDouble   the least value (negative infinity: none)
+     * @param maxDouble   the greatest value (infinity: none)
+     * @return the argument
+     */
     public static ArConfigArg ofDouble(String name, DoubleSupplier get, DoubleConsumer set, String description,
             double minDouble, double maxDouble) {
         return ofDouble(name, get, set, description, minDouble, maxDouble, DEFAULT_DOUBLE_PRECISION);
@@ -399,13 +404,13 @@ public final class ArConfigArg {
     /** @return whether an {@link Type#INT} or {@link Type#DOUBLE} has a least value */
     public boolean hasMinBound() {
         return type == Type.INT ? minInt != Integer.MIN_VALUE
-                : type == Type.DOUBLE && Math.abs(minDouble - Double.NEGATIVE_INFINITY) > 0;
+                : type == Type.DOUBLE && minDouble != Double.NEGATIVE_INFINITY;
     }
 
     /** @return whether an {@link Type#INT} or {@link Type#DOUBLE} has a greatest value */
     public boolean hasMaxBound() {
         return type == Type.INT ? maxInt != Integer.MAX_VALUE
-                : type == Type.DOUBLE && Math.abs(maxDouble - Double.POSITIVE_INFINITY) > 0;
+                : type == Type.DOUBLE && maxDouble != Double.POSITIVE_INFINITY;
     }
 
     /**
@@ -517,11 +522,12 @@ public final class ArConfigArg {
      * @param errorBuffer    if not null, given the reason it was refused
      * @param errorBufferLen the buffer's size as C's (0: any)
      * @param doNotSet       check only
-     * @return false (logged) if it is not a {@link Type#STRING} or the text is too long
+     * @return false (logged) if it is not a {@link Type#STRING} (or {@link Type#STRING_HOLDER}) or the
+     *         text is too long
      */
     public boolean setString(String str, StringBuilder errorBuffer, int errorBufferLen, boolean doNotSet) {
         String s = str == null ? "" : str;
-        if (type != Type.STRING) {
+        if (type != Type.STRING && type != Type.STRING_HOLDER) {
             ArLog.log(ArLog.Normal, "ArConfigArg::setString() cannot set %s to %s, wrong type (%s)", name, s, type);
             return false;
         }

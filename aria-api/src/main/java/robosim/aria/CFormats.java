@@ -3,6 +3,7 @@ package robosim.aria;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.math.RoundingMode;
+import java.util.Locale;
 import java.util.regex.Pattern;
 
 /**
@@ -33,7 +34,7 @@ final class CFormats {
         if (exponent < -4 || exponent >= 6) {
             BigDecimal mantissa = rounded.movePointLeft(exponent);
             return sign + strip(mantissa.setScale(5, RoundingMode.HALF_EVEN).toPlainString())
-                    + String.format("e%s%02d", exponent < 0 ? "-" : "+", Math.abs(exponent));
+                    + String.format(Locale.ROOT, "e%s%02d", exponent < 0 ? "-" : "+", Math.abs(exponent));
         }
         return sign + strip(rounded.setScale(5 - exponent, RoundingMode.HALF_EVEN).toPlainString());
     }
