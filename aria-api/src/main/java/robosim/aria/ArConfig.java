@@ -37,8 +37,6 @@ import java.util.function.Predicate;
  * translations, resource files and restart levels are left out.
  */
 public class ArConfig {
-    private static final String CONFIG_VERSION_TAG = "ConfigVersion";
-    private static final String CURRENT_CONFIG_VERSION = "2.0";
 
     /** A process-file callback, called with the error buffer. */
     private record ProcessFileCB(Object functor, int priority, Predicate<StringBuilder> call) {
@@ -400,53 +398,12 @@ public class ArConfig {
      */
     public boolean writeFile(String fileName, boolean append) {
         String real = realFileName(fileName);
-        StringBuilder out = new StringBuilder();
-        out.append(CONFIG_VERSION_TAG).append(' ').append(CURRENT_CONFIG_VERSION).append('\n');
-        boolean first = true;
-        ArConfigSection none = findSection("");
-        if (none != null) {
-            first = false;
-            writeSection(none, out);
-        }
-        for (ArConfigSection s : sections) {
-            if (s.getName().isEmpty()) {
-                continue;
-            }
-            if (!first) {
-                out.append('\n');
-            }
-            first = false;
-            writeSection(s, out);
-        }
         try (Writer w = new OutputStreamWriter(new FileOutputStream(real, append), StandardCharsets.UTF_8)) {
-            w.write(out.toString());
+            w.write(ConfigText.write(sections, noBlanksBetweenParams));
             return true;
         } catch (IOException e) {
             ArLog.log(ArLog.Terse, "%sCannot open file '%s' for writing", logPrefix, real);
             return false;
-        }
-    }
-
-    private void writeSection(ArConfigSection s, StringBuilder out) {
-        Set<String> written = new HashSet<>();
-        if (!s.getName().isEmpty()) {
-            out.append("Section ").append(s.getName()).append('\n');
-        }
-        if (!s.getComment().isEmpty()) {
-            ConfigText.writeMultiLineComment(s.getComment(), out, "; ", ConfigText.LINE_WRAP, 0, 0);
-        }
-        out.append(";SectionFlags for ").append(s.getName()).append(": ").append(s.getFlags()).append('\n');
-        for (ArConfigArg p : s.getParams()) {
-            if (p.getType() == ArConfigArg.Type.SEPARATOR) {
-                continue;
-            }
-            if (p.getType() != ArConfigArg.Type.DESCRIPTION_HOLDER && !written.add(p.getName())) {
-                continue;
-            }
-            ConfigText.writeArguments(p, out);
-            if (!noBlanksBetweenParams) {
-                out.append('\n');
-            }
         }
     }
 

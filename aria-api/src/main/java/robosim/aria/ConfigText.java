@@ -1,13 +1,15 @@
 package robosim.aria;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 
 /**
  * The text of ARIA's configuration files: how a line splits into a keyword and its words (ARIA's
  * {@code ArFileParser::parseLine} and {@code ArArgumentBuilder}), how a parameter reads its words
- * ({@code ArConfigArg::parseArgument}) and how it is written ({@code ArConfigArg::writeArguments}
- * and {@code writeMultiLineComment}).
+ * ({@code ArConfigArg::parseArgument}) and how a config is written ({@code ArConfig::writeFile},
+ * {@code ArConfigArg::writeArguments} and {@code writeMultiLineComment}).
  */
 final class ConfigText {
     /** The column a parameter's comment starts at, and the width comments wrap at (ARIA's 25 and 80). */
@@ -237,5 +239,56 @@ final class ConfigText {
             }
         }
         out.append(line).append('\n');
+    }
+
+    /**
+     * The text of ARIA's {@code ArConfig::writeFile}: {@code ConfigVersion 2.0}, the section of no
+     * name first, then the others, a blank line between sections.
+     */
+    static String write(List<ArConfigSection> sections, boolean noBlanksBetweenParams) {
+        StringBuilder out = new StringBuilder("ConfigVersion 2.0\n");
+        boolean first = true;
+        for (ArConfigSection s : sections) {
+            if (s.getName().isEmpty()) {
+                first = false;
+                writeSection(s, out, noBlanksBetweenParams);
+                break;
+            }
+        }
+        for (ArConfigSection s : sections) {
+            if (s.getName().isEmpty()) {
+                continue;
+            }
+            if (!first) {
+                out.append('\n');
+            }
+            first = false;
+            writeSection(s, out, noBlanksBetweenParams);
+        }
+        return out.toString();
+    }
+
+    /** ARIA's {@code ArConfig::writeSection}: a name written once per section, separators left out. */
+    private static void writeSection(ArConfigSection s, StringBuilder out, boolean noBlanksBetweenParams) {
+        Set<String> written = new HashSet<>();
+        if (!s.getName().isEmpty()) {
+            out.append("Section ").append(s.getName()).append('\n');
+        }
+        if (!s.getComment().isEmpty()) {
+            writeMultiLineComment(s.getComment(), out, "; ", LINE_WRAP, 0, 0);
+        }
+        out.append(";SectionFlags for ").append(s.getName()).append(": ").append(s.getFlags()).append('\n');
+        for (ArConfigArg p : s.getParams()) {
+            if (p.getType() == ArConfigArg.Type.SEPARATOR) {
+                continue;
+            }
+            if (p.getType() != ArConfigArg.Type.DESCRIPTION_HOLDER && !written.add(p.getName())) {
+                continue;
+            }
+            writeArguments(p, out);
+            if (!noBlanksBetweenParams) {
+                out.append('\n');
+            }
+        }
     }
 }
