@@ -9,7 +9,9 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.function.BooleanSupplier;
 import java.util.function.Predicate;
 
@@ -33,10 +35,23 @@ import java.util.function.Predicate;
  * parameter's bounds is refused with ARIA's log lines. As AriaCoda's {@code parseFile}, the error
  * buffer gets only the process-file callbacks' reasons: a refused value is logged with its line.
  * Where C++ passes a {@code char *} buffer and its size, Java passes a {@link StringBuilder} and the
- * size (0: any). Follows ARIA's {@code ArConfig.h} and {@code ArConfig.cpp}; categories, lists,
- * translations, resource files and restart levels are left out.
+ * size (0: any). Follows ARIA's {@code ArConfig.h} and {@code ArConfig.cpp}; lists, translations,
+ * resource files and restart levels are left out.
  */
 public class ArConfig {
+
+    /** Sections about I/O, ARCL, display and network communication (ARIA's category names). */
+    public static final String CATEGORY_ROBOT_INTERFACE = "Robot Interface";
+    /** Sections about the robot's behaviour: docking, driving, navigation. */
+    public static final String CATEGORY_ROBOT_OPERATION = "Robot Operation";
+    /** Sections about the robot's hardware, sensors and accessories. */
+    public static final String CATEGORY_ROBOT_PHYSICAL = "Robot Physical";
+    /** Sections about the fleet. */
+    public static final String CATEGORY_FLEET = "Enterprise";
+    /** Sections about security. */
+    public static final String CATEGORY_SECURITY = "Security";
+    /** Sections about debugging: logging, replay. */
+    public static final String CATEGORY_DEBUG = "Debug";
 
     /** A process-file callback, called with the error buffer. */
     private record ProcessFileCB(Object functor, int priority, Predicate<StringBuilder> call) {
@@ -44,6 +59,7 @@ public class ArConfig {
 
     private final List<ArConfigSection> sections = new ArrayList<>();
     private final List<ProcessFileCB> processFileCBs = new ArrayList<>();
+    private final Map<String, List<String>> categoryToSections = new TreeMap<>();
     private final boolean ignoreBounds;
     private boolean noBlanksBetweenParams;
     private String baseDirectory = "";
@@ -167,6 +183,59 @@ public class ArConfig {
         return addComment(comment, sectionName, ArPriority.NORMAL);
     }
 
+    /**
+     * Adds a section to a category with its description, or puts a section of no category in one:
+     * ARIA's {@code ArConfig::addSection}.
+     *
+     * @param categoryName       one of the {@code CATEGORY_} names ("" for none)
+     * @param sectionName        the section (made if new)
+     * @param sectionDescription its comment
+     * @return false (logged) if the category is null, the name empty, or the section already in a category
+     */
+    public boolean addSection(String categoryName, String sectionName, String sectionDescription) {
+        if (categoryName == null || sectionName == null || sectionName.isEmpty()) {
+            ArLog.log(ArLog.Normal, "%sFailed to add section '%s' to category '%s'", logPrefix, sectionName,
+                    categoryName);
+            return false;
+        }
+        ArConfigSection s = findSection(sectionName);
+        if (s != null && !s.getCategoryName().isEmpty()) {
+            ArLog.log(ArLog.Normal, "%sFailed to add section '%s' to category '%s', already defined in category '%s'",
+                    logPrefix, sectionName, categoryName, s.getCategoryName());
+            return false;
+        }
+        if (s == null) {
+            ArLog.log(ArLog.Verbose, "%sMaking new section '%s' in category '%s'", logPrefix, sectionName, categoryName);
+            s = new ArConfigSection(sectionName, sectionDescription);
+            sections.add(s);
+        } else {
+            s.setComment(sectionDescription);
+        }
+        s.setCategoryName(categoryName);
+        List<String> inCategory = categoryToSections.computeIfAbsent(categoryName, c -> new ArrayList<>());
+        if (inCategory.stream().noneMatch(sectionName::equalsIgnoreCase)) {
+            inCategory.add(sectionName);
+        }
+        return true;
+    }
+
+    /** @return the categories sections were added to, sorted */
+    public List<String> getCategoryNames() {
+        return List.copyOf(categoryToSections.keySet());
+    }
+
+    /**
+     * @param categoryName a category, or "" for none
+     * @return the sections added to it, in order; for "", the sections in no category
+     */
+    public List<String> getSectionNamesInCategory(String categoryName) {
+        if (categoryName == null || categoryName.isEmpty()) {
+            return sections.stream().filter(s -> !s.getName().isEmpty() && s.getCategoryName().isEmpty())
+                    .map(ArConfigSection::getName).toList();
+        }
+        return List.copyOf(categoryToSections.getOrDefault(categoryName, List.of()));
+    }
+
     /** @param sectionName a section (made if new) @param comment its comment, written under its name */
     public void setSectionComment(String sectionName, String comment) {
         ArConfigSection s = findSection(sectionName);
@@ -214,15 +283,16 @@ public class ArConfig {
         return sections;
     }
 
-    /** @return the sections' names, in order */
+    /** @return the sections' names, in order (the section of no name left out, as ARIA's) */
     public List<String> getSectionNames() {
-        return sections.stream().map(ArConfigSection::getName).toList();
+        return sections.stream().map(ArConfigSection::getName).filter(n -> !n.isEmpty()).toList();
     }
 
     /** Forgets the sections and their parameters. */
     public void clearSections() {
         sections.clear();
         paramNames.clear();
+        categoryToSections.clear();
     }
 
     /** Forgets the sections and the process-file callbacks. */

@@ -11,6 +11,7 @@ import java.util.List;
 public final class ArConfigSection {
     private String name;
     private String comment;
+    private String categoryName = "";
     private final List<String> flags = new ArrayList<>();
     private final List<ArConfigArg> params = new ArrayList<>();
 
@@ -41,6 +42,15 @@ public final class ArConfigSection {
     /** @param comment its comment from now on */
     public void setComment(String comment) {
         this.comment = comment == null ? "" : comment;
+    }
+
+    /** @return the category {@link ArConfig#addSection} put it in ("" if none) */
+    public String getCategoryName() {
+        return categoryName;
+    }
+
+    void setCategoryName(String categoryName) {
+        this.categoryName = categoryName == null ? "" : categoryName;
     }
 
     /** @return its flags, separated by '|' as ARIA writes them ("" if none) */

@@ -224,6 +224,21 @@ class ArConfigTest {
     }
 
     @Test
+    void sectionsGoInOneCategoryEach() {
+        assertTrue(config.addSection(ArConfig.CATEGORY_ROBOT_OPERATION, "Motion", "Moving"));
+        assertEquals("Moving", config.findSection("Motion").getComment());
+        assertTrue(config.addSection(ArConfig.CATEGORY_DEBUG, "Logging", "Logs"));
+        assertFalse(config.addSection(ArConfig.CATEGORY_DEBUG, "motion", "again"));
+        assertTrue(log().contains("ArConfig: Failed to add section 'motion' to category 'Debug', already defined in"
+                + " category 'Robot Operation'\n"), log());
+        assertFalse(config.addSection(ArConfig.CATEGORY_DEBUG, "", "nameless"));
+        config.setSectionComment("Loose", "in no category");
+        assertEquals(List.of("Debug", "Robot Operation"), config.getCategoryNames());
+        assertEquals(List.of("Motion"), config.getSectionNamesInCategory(ArConfig.CATEGORY_ROBOT_OPERATION));
+        assertEquals(List.of("Loose"), config.getSectionNamesInCategory(""));
+    }
+
+    @Test
     void commandLineArgumentsNamingParametersSetThemAndAreTakenOff() {
         ArArgumentParser parser = new ArArgumentParser(new String[] {"-speed", "4", "other", "On", "true"});
         assertTrue(config.parseArgumentParser(parser));
