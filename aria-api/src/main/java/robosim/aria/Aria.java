@@ -50,6 +50,7 @@ public final class Aria {
         volatile boolean exiting;
         volatile String directory = "";
         volatile ArKeyHandler keyHandler;
+        final ArConfig config = new ArConfig();
     }
 
     /** The program of threads that have not called {@link #init} nor been started by one that has. */
@@ -273,14 +274,29 @@ public final class Aria {
         }
     }
 
-    /** @param dir the program's directory, where ARIA looks for its files */
+    /**
+     * @param dir the program's directory, where ARIA looks for its files; also the base directory of
+     *            {@link #getConfig()} ({@code dir} and '/'), as ARIA's {@code Aria::setDirectory}
+     */
     public static void setDirectory(String dir) {
-        program().directory = dir == null ? "" : dir;
+        Program p = program();
+        p.directory = dir == null ? "" : dir;
+        p.config.setBaseDirectory(p.directory.isEmpty() || p.directory.endsWith("/") ? p.directory : p.directory + "/");
     }
 
     /** @return the program's directory, "" unless set */
     public static String getDirectory() {
         return program().directory;
+    }
+
+    /**
+     * ARIA's {@code Aria::getConfig}: the program's own {@link ArConfig}, which the parts of a
+     * program share. Each program ({@link #init}) has its own, as each ARIA process has.
+     *
+     * @return the program's config
+     */
+    public static ArConfig getConfig() {
+        return program().config;
     }
 
     /** @param handler the program's key handler (ARIA keeps one, for programs that look it up) */
