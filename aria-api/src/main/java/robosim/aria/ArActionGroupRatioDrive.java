@@ -13,7 +13,7 @@ package robosim.aria;
  * <p>ARIA's group also feeds the input from an {@code ArRatioInputJoydrive} (the computer's
  * joystick) and an {@code ArRatioInputRobotJoydrive} (the robot's): neither joystick exists in the
  * simulation, and without them those inputs set nothing, so RoboSim leaves them out. ARIA's
- * {@code addToConfig} has no {@code ArConfig} to go to in RoboSim.
+ * {@code addToConfig} is left out: the actions' own setters set the same values.
  */
 public final class ArActionGroupRatioDrive extends ArActionGroup {
     private final ArActionRatioInput input;

@@ -8,8 +8,8 @@ package robosim.aria;
  * to 0 by the sanity check). By default no flag is set, so it asks for nothing (but answers a
  * desire). Disabled, it wants nothing, except for one firing after {@link #enableOnceFromSector}.
  *
- * <p>ARIA sets the flags and values through {@code addToConfig}; RoboSim has no {@code ArConfig},
- * so they are the action's parameters ({@link #getArg}, ARIA's config names: "SetTransVelMax",
+ * <p>ARIA sets the flags and values through {@code addToConfig}, which RoboSim leaves out; they
+ * are the action's parameters ({@link #getArg}, ARIA's config names: "SetTransVelMax",
  * "TransVelMax", ...) and its setters ({@link #setMaxVel(boolean, double)}, ...). The lateral ones go
  * to the desire's lateral channels, which no simulated robot uses.
  */

@@ -20,16 +20,16 @@ import robosim.examples.aria.ConfigExample;
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class AriaConfigExampleTest {
-    /** The shipped file as ConfigExample writes it back, the boolean flipped: byte for byte libAria's. */
+    /** The shipped file as ConfigExample writes it back, the boolean flipped: as libAria writes it. */
     static final String WRITTEN = "ConfigVersion 2.0\n"
             + "Section Example Section\n"
             + "; Contains parameters created by the configExample\n"
             + ";SectionFlags for Example Section: \n"
-            + "ExampleIntegerParameter 1 ; range [-10, 10], Example parameter integer.\n\n"
-            + "ExampleDoubleParameter 1.00000 ; range [0, 1], Example double precision floating\n"
+            + "ExampleIntegerParameter 7 ; range [-10, 10], Example parameter integer.\n\n"
+            + "ExampleDoubleParameter 0.25000 ; range [0, 1], Example double precision floating\n"
             + "                         ; point number.\n\n"
             + "ExampleBoolParameter false ; Example boolean parameter.\n\n"
-            + "ExampleStringParameter Hello, world ; Example string parameter.\n\n";
+            + "ExampleStringParameter RoboSim's example ; Example string parameter.\n\n";
 
     @TempDir
     Path dir;
@@ -46,9 +46,9 @@ class AriaConfigExampleTest {
         AriaExamplesTest.Ran ran = AriaExamplesTest.run(ConfigExample::main, cfg.toString());
         assertEquals(0, ran.exit(), ran.out());
         assertEquals("configExample: loading configuration file \"" + cfg + "\"...\n"
-                + "configExample: Config changed. New values: int=1, float=1.000000, bool=true, string=\"Hello, world\".\n"
+                + "configExample: Config changed. New values: int=7, float=0.250000, bool=true, string=\"RoboSim's example\".\n"
                 + "configExample: Loaded configuration file \"" + cfg + "\".\n"
-                + "configExample: Config changed. New values: int=1, float=1.000000, bool=false, string=\"Hello, world\".\n"
+                + "configExample: Config changed. New values: int=7, float=0.250000, bool=false, string=\"RoboSim's example\".\n"
                 + "configExample: Successfully modified config and invoked callbacks.\n"
                 + "configExample: Saving configuration...\n"
                 + "configExample: end of program.\n", ran.out());
@@ -58,15 +58,15 @@ class AriaConfigExampleTest {
         AriaExamplesTest.Ran again = AriaExamplesTest.run(ConfigExample::main, cfg.toString());
         assertEquals(0, again.exit(), again.out());
         assertTrue(again.out().contains("\"...\nArConfig: Config version: 2.0\n"
-                + "configExample: Config changed. New values: int=1, float=1.000000, bool=false,"), again.out());
+                + "configExample: Config changed. New values: int=7, float=0.250000, bool=false,"), again.out());
         assertEquals(WRITTEN.replace("ExampleBoolParameter false", "ExampleBoolParameter true"), Files.readString(cfg));
     }
 
     @Test
     void aValueOutOfBoundsIsRefusedWithAriasLinesAndTheProgramExitsWithoutWriting() throws IOException {
         Path cfg = shipped("bad.cfg");
-        String bad = Files.readString(cfg).replace("ExampleIntegerParameter 1 ", "ExampleIntegerParameter 20 ")
-                .replace("ExampleDoubleParameter 1.0 ", "ExampleDoubleParameter -2.5 ");
+        String bad = Files.readString(cfg).replace("ExampleIntegerParameter 7 ", "ExampleIntegerParameter 20 ")
+                .replace("ExampleDoubleParameter 0.25 ", "ExampleDoubleParameter -2.5 ");
         Files.writeString(cfg, bad);
         AriaExamplesTest.Ran ran = AriaExamplesTest.run(ConfigExample::main, cfg.toString());
         assertEquals(-1, ran.exit(), ran.out());
@@ -76,8 +76,8 @@ class AriaConfigExampleTest {
                 + "## Last error on line 4 of file '" + cfg + "'\n"
                 + "ArConfigArg of ExampleDoubleParameter: setDouble value -2.5 below range [0, 1]\n"
                 + "ArConfig::parseArgument() error parsing -2.5\n"
-                + "## Last error on line 6 of file '" + cfg + "'\n"
-                + "configExample: Config changed. New values: int=0, float=0.500000, bool=true, string=\"Hello, world\".\n"
+                + "## Last error on line 5 of file '" + cfg + "'\n"
+                + "configExample: Config changed. New values: int=0, float=0.500000, bool=true, string=\"RoboSim's example\".\n"
                 + "configExample: Error loading configuration file \"" + cfg + "\" . "
                 + "Try \"examples/aria/configExample.cfg\".\n", ran.out());
         assertEquals(bad, Files.readString(cfg), "not written");
