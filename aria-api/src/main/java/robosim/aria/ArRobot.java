@@ -688,7 +688,10 @@ public class ArRobot extends AbstractRobot {
                 return;
             }
             long began = System.nanoTime();
-            counter++;
+            boolean byProgram = programCycles && !runningAsync;
+            if (!byProgram) {
+                counter++;
+            }
             RobotState s = response.state();
             SonarReading ring = s.get(SonarReading.PART);
             sonar.update(ring.ranges(), ring.fresh(), getPose(), counter, s.timeMs());
@@ -703,7 +706,11 @@ public class ArRobot extends AbstractRobot {
             if (events.isStabilizing && s.timeMs() - events.stabilizingStartMs > events.stabilizingTimeMs) {
                 finishedConnection();
             }
-            runTasks(s.timeMs());
+            if (byProgram) {
+                stateWaiting = true;
+            } else {
+                runTasks(s.timeMs());
+            }
             forcedTryingToMove = false;
             cycleStats.cycleTook(System.nanoTime() - began, getName());
         } finally {
@@ -730,14 +737,32 @@ public class ArRobot extends AbstractRobot {
         counter++;
     }
 
+    /** Set by {@link #loopOnce()} on a robot not run: its program runs the cycle, not the states' arrival. */
+    private volatile boolean programCycles;
+    /** A step's state arrived that the program's {@link #loopOnce()} has not yet run the cycle for. */
+    private volatile boolean stateWaiting;
+
     /**
-     * Runs the robot's tasks once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task tree
-     * once, for a program that drives the cycle itself: the sensor-interpretation tasks, the actions
-     * (their commands queued for the next step) and the user tasks, under the robot's lock; then the
-     * counter goes up. No new state is read: that comes with each step.
+     * Runs the robot's cycle once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task
+     * tree once, for a program that drives the cycle itself instead of {@link #run()} or
+     * {@link #runAsync()} (ARIA's single-threaded robot, singleThreadLoopExample.cpp): the
+     * sensor-interpretation tasks, the actions (their commands queued for the next step) and the user
+     * tasks, on the calling thread under the robot's lock; then the counter goes up. From the first
+     * call on such a connected robot, a step's state only updates the robot, and the cycle is run by
+     * this call alone, once per call. When no state has arrived since the last call it first waits,
+     * yielded, for the next step's, as ARIA's non-threaded packet handler
+     * ({@code ArRobot::packetHandlerNonThreaded}) waits for the next SIP. On a robot that is running,
+     * or not connected, it runs the tasks at once.
      */
     public void loopOnce() {
+        if (!runningAsync && super.isConnected()) {
+            programCycles = true;
+            if (!stateWaiting) {
+                sleepSimulated(getStepMs());
+            }
+        }
         underLock(() -> {
+            stateWaiting = false;
             runTasks(simulatedMs());
             counter++;
         });
