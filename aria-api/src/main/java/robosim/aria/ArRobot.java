@@ -677,7 +677,9 @@ public class ArRobot extends AbstractRobot {
      * order, all under the robot's lock, as ARIA's cycle does. Before them the pose histories take
      * the cycle's poses ({@link #getPoseInterpPosition}) and a stabilizing robot whose stabilizing
      * time has passed becomes connected; after them {@link #forceTryingToMove()} is undone and a
-     * cycle slower than {@link #getCycleWarningTime()} in wall-clock time is logged.
+     * cycle slower than {@link #getCycleWarningTime()} in wall-clock time is logged. Once the program
+     * runs the cycle itself ({@link #loopOnce()}), the state only updates the robot here: the counter
+     * and the tasks are the program's calls'.
      */
     @Override
     protected void responded(RobotSensorResponse response) {
@@ -706,9 +708,7 @@ public class ArRobot extends AbstractRobot {
             if (events.isStabilizing && s.timeMs() - events.stabilizingStartMs > events.stabilizingTimeMs) {
                 finishedConnection();
             }
-            if (byProgram) {
-                stateWaiting = true;
-            } else {
+            if (!byProgram) {
                 runTasks(s.timeMs());
             }
             forcedTryingToMove = false;
@@ -739,8 +739,6 @@ public class ArRobot extends AbstractRobot {
 
     /** Set by {@link #loopOnce()} on a robot not run: its program runs the cycle, not the states' arrival. */
     private volatile boolean programCycles;
-    /** A step's state arrived that the program's {@link #loopOnce()} has not yet run the cycle for. */
-    private volatile boolean stateWaiting;
 
     /**
      * Runs the robot's cycle once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task
@@ -748,21 +746,17 @@ public class ArRobot extends AbstractRobot {
      * {@link #runAsync()} (ARIA's single-threaded robot, singleThreadLoopExample.cpp): the
      * sensor-interpretation tasks, the actions (their commands queued for the next step) and the user
      * tasks, on the calling thread under the robot's lock; then the counter goes up. From the first
-     * call on such a connected robot, a step's state only updates the robot, and the cycle is run by
-     * this call alone, once per call. When no state has arrived since the last call it first waits,
-     * yielded, for the next step's, as ARIA's non-threaded packet handler
-     * ({@code ArRobot::packetHandlerNonThreaded}) waits for the next SIP. On a robot that is running,
-     * or not connected, it runs the tasks at once.
+     * call on a connected robot that is not running, the steps' states only update the robot (as
+     * ARIA's packets, read in the next call) and the cycle runs in these calls alone, once per call.
+     * It does not wait: ARIA's non-threaded packet handler ({@code ArRobot::packetHandlerNonThreaded})
+     * waits for a SIP only while the robot is running; here the states arrive while the program
+     * sleeps ({@link ArUtil#sleep}), so a loop that sleeps a step between calls runs a cycle a step.
      */
     public void loopOnce() {
         if (!runningAsync && super.isConnected()) {
             programCycles = true;
-            if (!stateWaiting) {
-                sleepSimulated(getStepMs());
-            }
         }
         underLock(() -> {
-            stateWaiting = false;
             runTasks(simulatedMs());
             counter++;
         });

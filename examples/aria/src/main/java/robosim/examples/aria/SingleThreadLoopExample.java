@@ -22,8 +22,9 @@ import robosim.aria.Aria;
  * ends when the robot is disconnected (the run ended), where the original would go on printing the
  * last state it had.
  *
- * <p>In simulated time a loop that runs a cycle already arrived takes 0 ms and sleeps 20 ms, which
- * {@link ArUtil#sleep} makes one step; the first loop waits for a step's state, 100 ms.
+ * <p>In simulated time each loop takes 0 ms and sleeps 20 ms, which {@link ArUtil#sleep} makes one
+ * step: a cycle a step, each with the step's new state. Against a robot server in real time the
+ * original loops every 20 ms, five times a 100 ms cycle, and its pose changes every fifth loop.
  */
 public final class SingleThreadLoopExample {
     private SingleThreadLoopExample() {
