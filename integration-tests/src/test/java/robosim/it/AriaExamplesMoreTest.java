@@ -108,6 +108,23 @@ class AriaExamplesMoreTest {
     }
 
     @Test
+    void singleThreadLoopRunsACycleASipThroughThePioneerPort() throws Exception {
+        try (PioneerRun run = new PioneerRun(PioneerRun.room(dir), 30, false, code -> { })) {
+            Ran ran = Background.supply("singleThreadLoopExample", () -> AriaExamplesTest.run(
+                    SingleThreadLoopExample::main, "-rh", "127.0.0.1", "-rrtp", String.valueOf(run.ports.portOf("r1"))))
+                    .get(90, TimeUnit.SECONDS);
+            assertEquals(0, ran.exit(), ran.out());
+            List<String> poses = ran.out().lines().filter(l -> l.startsWith("singleThreadExample: Pose=")).toList();
+            // the odometry starts at the origin; each loop sleeps until the next SIP, so each sees a new
+            // pose, but for the port's real-time pacing: a SIP before the motion starts and the run's end
+            // may each come a loop late, and that loop prints the pose before again
+            assertTrue(poses.get(0).startsWith("singleThreadExample: Pose=(0.00,0.00,0.00), Trans.  Vel=0.00"), ran.out());
+            assertTrue(poses.stream().distinct().count() >= poses.size() - 2, "a new state each loop: " + ran.out());
+            assertTrue(poses.size() >= 20 && poses.size() <= 30, "a loop a SIP: " + poses.size());
+        }
+    }
+
+    @Test
     void loopOnceRunsTheCycleOnTheCallersThreadOncePerCallAndNotBetween() throws Exception {
         PioneerRun.room(dir);
         try (ThreadedRun run = new ThreadedRun(dir.resolve("room.xml"), 1, 0)) {
@@ -186,7 +203,14 @@ class AriaExamplesMoreTest {
                 assertEquals(0, speed(snapshots, 100), 0.5, "teleop again");
                 assertEquals(100, speed(snapshots, 140), 2, "four UPs");
             }
-            assertEquals(0, report.robots().get(0).collisions(), report.robots().toString());
+            // wander drove it straight along the room (nothing within the avoiding distances), then
+            // teleop stopped it and the UPs drove it on: as AriaCoda's original over the Pioneer port
+            // with the same keys at about the same times
+            RobotSummary r = report.robots().get(0);
+            assertEquals(0, r.collisions(), "collisions: " + r);
+            assertEquals(2383.3, r.distance(), 1, "distance: " + r);
+            assertEquals(5383.3, r.x(), 1, "x: " + r);
+            assertEquals(3000, r.y(), 0.5, "y: " + r);
         }
     }
 
@@ -263,6 +287,9 @@ class AriaExamplesMoreTest {
             assertEquals(-7.8, r.x(), 1, "x: " + r);
             assertEquals(149.0, r.y(), 1, "y: " + r);
             assertEquals(-88, r.th(), 0.5, "heading: " + r);
+            // each achieved as ARIA's says it, a little past the goal's distance and stopped
+            assertEquals(3, ran.out().lines().filter(l -> l.matches("gotostraight: Achieved distance to goal"
+                    + " \\(dist=-4\\.\\d\\d, robotVel=0\\.00\\)")).count(), ran.out());
         }
     }
 }
