@@ -192,8 +192,14 @@ public class ArActionGotoStraight extends ArAction {
         double away = justDistance ? Math.abs(distToGo) : at.findDistanceTo(goal);
         boolean there = justDistance ? distToGo <= 0 : away < closeDist;
         if (there && Math.abs(robot.getVel()) < 5) {
-            ArLogs.info(getName() + ": achieved " + (justDistance ? "distance to goal" : "goal")
-                    + " (dist " + Math.round(justDistance ? distToGo : away) + " mm)");
+            // ARIA's lines (ArActionGotoStraight::fire), word for word
+            if (justDistance) {
+                ArLog.log(ArLog.Normal, "%s: Achieved distance to goal (dist=%.2f, robotVel=%.2f)", getName(), distToGo,
+                        robot.getVel());
+            } else {
+                ArLog.log(ArLog.Normal, "%s: Achieved goal (dist=%.2f, closeDist=%.2f, robotVel=%.2f)", getName(), away,
+                        closeDist, robot.getVel());
+            }
             state = State.ACHIEVED_GOAL;
             desired.setVel(0);
             desired.setDeltaHeading(0);

@@ -706,7 +706,9 @@ public class ArRobot extends AbstractRobot {
      * order, all under the robot's lock, as ARIA's cycle does. Before them the pose histories take
      * the cycle's poses ({@link #getPoseInterpPosition}) and a stabilizing robot whose stabilizing
      * time has passed becomes connected; after them {@link #forceTryingToMove()} is undone and a
-     * cycle slower than {@link #getCycleWarningTime()} in wall-clock time is logged.
+     * cycle slower than {@link #getCycleWarningTime()} in wall-clock time is logged. Once the program
+     * runs the cycle itself ({@link #loopOnce()}), the state only updates the robot here: the counter
+     * and the tasks are the program's calls'.
      */
     @Override
     protected void responded(RobotSensorResponse response) {
@@ -717,7 +719,10 @@ public class ArRobot extends AbstractRobot {
                 return;
             }
             long began = System.nanoTime();
-            counter++;
+            boolean byProgram = programCycles && !runningAsync;
+            if (!byProgram) {
+                counter++;
+            }
             RobotState s = response.state();
             SonarReading ring = s.get(SonarReading.PART);
             sonar.update(ring.ranges(), ring.fresh(), getPose(), counter, s.timeMs());
@@ -732,7 +737,9 @@ public class ArRobot extends AbstractRobot {
             if (events.isStabilizing && s.timeMs() - events.stabilizingStartMs > events.stabilizingTimeMs) {
                 finishedConnection();
             }
-            runTasks(s.timeMs());
+            if (!byProgram) {
+                runTasks(s.timeMs());
+            }
             forcedTryingToMove = false;
             cycleStats.cycleTook(System.nanoTime() - began, getName());
         } finally {
@@ -759,13 +766,25 @@ public class ArRobot extends AbstractRobot {
         counter++;
     }
 
+    /** Set by {@link #loopOnce()} on a robot not run: its program runs the cycle, not the states' arrival. */
+    private volatile boolean programCycles;
+
     /**
-     * Runs the robot's tasks once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task tree
-     * once, for a program that drives the cycle itself: the sensor-interpretation tasks, the actions
-     * (their commands queued for the next step) and the user tasks, under the robot's lock; then the
-     * counter goes up. No new state is read: that comes with each step.
+     * Runs the robot's cycle once, as ARIA's {@code ArRobot::loopOnce} (ArRobot.cpp) runs its task
+     * tree once, for a program that drives the cycle itself instead of {@link #run()} or
+     * {@link #runAsync()} (ARIA's single-threaded robot, singleThreadLoopExample.cpp): the
+     * sensor-interpretation tasks, the actions (their commands queued for the next step) and the user
+     * tasks, on the calling thread under the robot's lock; then the counter goes up. From the first
+     * call on a connected robot that is not running, the steps' states only update the robot (as
+     * ARIA's packets, read in the next call) and the cycle runs in these calls alone, once per call.
+     * It does not wait: ARIA's non-threaded packet handler ({@code ArRobot::packetHandlerNonThreaded})
+     * waits for a SIP only while the robot is running; here the states arrive while the program
+     * sleeps ({@link ArUtil#sleep}), so a loop that sleeps a step between calls runs a cycle a step.
      */
     public void loopOnce() {
+        if (!runningAsync && super.isConnected()) {
+            programCycles = true;
+        }
         underLock(() -> {
             runTasks(simulatedMs());
             counter++;

@@ -74,9 +74,14 @@ public class ArRobotConnector {
         Aria.addLogOptionsCB(this::logOptions, 90);
     }
 
-    /** @return the arguments parsed, as {@link #parseArgs(ArArgumentParser)} with this connector's parser */
+    /**
+     * @return the arguments parsed, as {@link #parseArgs(ArArgumentParser)} with this connector's
+     *         parser; false without one, as ARIA's {@code ArRobotConnector::parseArgs()} answers for a
+     *         connector made with a NULL parser (singleThreadLoopExample.cpp), which then connects where
+     *         the defaults say
+     */
     public boolean parseArgs() {
-        return parseArgs(parser);
+        return parser != null && parseArgs(parser);
     }
 
     /**
@@ -182,10 +187,10 @@ public class ArRobotConnector {
             ArLog.log(ArLog.Normal, "ArRobotConnector::setupRobot: NULL robot, cannot setup robot");
             return false;
         }
-        if (autoParseArgs && !parseArgs()) {
+        if (autoParseArgs && parser != null && !parseArgs()) {
             return false;
         }
-        if (!parsed) {
+        if (!autoParseArgs && !parsed) {
             ArLog.log(ArLog.Normal, "ArRobotConnector: Args not parsed and are not autoparsed, so connection may fail"
                     + " and command line arguments won't be used");
         }
