@@ -30,13 +30,11 @@ class AriaMapTest {
     /**
      * An 8 m by 6 m room. A forbidden line across the middle (x = 4000, y 1500 to 4500) stands
      * between the home and the goal; a forbidden area covers the way round its north end, so the
-     * route goes round its south end, 600 mm past it, at (4000, 900).
+     * route goes round its south end, 600 mm past it, at (4000, 900). AriaCoda's ArMap reads it
+     * the same (it refuses {@code NumPoints: 0}, so the map has no point header).
      */
     static final String ROOM = """
             2D-Map
-            MinPos: 0 0
-            MaxPos: 0 0
-            NumPoints: 0
             LineMinPos: 0 0
             LineMaxPos: 8000 6000
             NumLines: 4
