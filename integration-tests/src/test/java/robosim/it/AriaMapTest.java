@@ -9,13 +9,17 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.aria.ArLineSegment;
 import robosim.aria.ArPose;
+import robosim.cli.Background;
 import robosim.env.core.RobotSummary;
 import robosim.env.net.RunReport;
+import robosim.env.world.xml.WorldReader;
 import robosim.examples.aria.MapGoals;
 import robosim.it.AriaExamplesTest.Ran;
 import robosim.protocol.Snapshot;
@@ -23,7 +27,7 @@ import robosim.protocol.Snapshot;
 /**
  * ARIA's {@code ArMap} in a robot program: the MapGoals example reads the map its Environment runs,
  * lists its objects and drives to a goal round a forbidden line, keeping out of a forbidden area,
- * in lockstep.
+ * in lockstep and through a Pioneer port.
  */
 @Timeout(value = 3, unit = TimeUnit.MINUTES)
 class AriaMapTest {
@@ -75,12 +79,16 @@ class AriaMapTest {
             assertTrue(out.contains("mapGoals: Going to goal 'east' at 7000 3000 through 1 waypoints.\n"
                     + "mapGoals: Going to 4000 900\n"), out);
             assertTrue(out.contains("mapGoals: Going to 7000 3000\n"), out);
-            assertTrue(out.contains("mapGoals: Reached goal 'east'"), out);
 
+            assertTrue(out.contains("mapGoals: Reached goal 'east': robot at 6990 2992.\n"), out);
+
+            // lockstep: the same run each time, 21.5 s of simulated time, about 7.4 m driven
             RobotSummary robot = report.robots().get(0);
-            assertEquals(7000, robot.x(), 150, "x: " + robot);
-            assertEquals(3000, robot.y(), 150, "y: " + robot);
+            assertEquals(6989.5, robot.x(), 1, "x: " + robot);
+            assertEquals(2992.3, robot.y(), 1, "y: " + robot);
+            assertEquals(7360, robot.distance(), 5, "distance: " + robot);
             assertEquals(0, robot.collisions(), "collisions: " + robot);
+            assertTrue(report.steps() >= 205 && report.steps() <= 225, "steps: " + report.steps());
 
             List<ArPose> path = truePath(run);
             assertTrue(path.size() > 50, "steps seen: " + path.size());
@@ -92,7 +100,28 @@ class AriaMapTest {
                 closest = Math.min(closest, path.get(i).findDistanceTo(new ArPose(4000, 1500)));
                 assertTrue(path.get(i).getY() < 4800, "the robot went into the forbidden area: " + path.get(i));
             }
-            assertTrue(closest > 300, "the robot passed " + closest + " mm from the forbidden line's end");
+            // 600 mm planned; ArActionGoto cuts the corner as it turns for the next waypoint: 489 mm
+            assertTrue(closest > 450, "the robot passed " + closest + " mm from the forbidden line's end");
+        }
+    }
+
+    @Test
+    void throughThePioneerPortTheOdometryStartsAtZeroAndIsTakenToBeAtTheMapsHome() throws Exception {
+        Path map = Files.writeString(dir.resolve("room.map"), ROOM);
+        try (PioneerRun run = new PioneerRun(WorldReader.read(map), false, code -> { })) {
+            Ran ran = Background.supply("mapGoals", () -> AriaExamplesTest.run(MapGoals::main, "-map", map.toString(),
+                    "-remoteHost", "127.0.0.1", "-rrtp", String.valueOf(run.ports.portOf("p3dx_1"))))
+                    .get(120, TimeUnit.SECONDS);
+            String out = ran.out();
+            assertEquals(0, ran.exit(), out);
+            assertTrue(out.contains("mapGoals: Odometry starts at (0, 0, 0): taking the robot to be at home 'start'.\n"
+                    + "mapGoals: Going to goal 'east' at 7000 3000 through 1 waypoints.\nmapGoals: Going to 4000 900\n"),
+                    out);
+            Matcher at = Pattern.compile("mapGoals: Reached goal 'east': robot at (-?\\d+) (-?\\d+)\\.").matcher(out);
+            assertTrue(at.find(), out);
+            // the Pioneer port runs in real time, so not to the millimetre of the lockstep run
+            assertEquals(7000, Integer.parseInt(at.group(1)), 100, out);
+            assertEquals(3000, Integer.parseInt(at.group(2)), 100, out);
         }
     }
 
