@@ -233,13 +233,24 @@ public final class ArLineSegment implements Comparable<ArLineSegment> {
         return lineCrossing(-b, a, a * pose.getY() - b * pose.getX());
     }
 
-    /** @return where this segment's infinite line meets the line la·x + lb·y = lc, or null if parallel (ArLine::intersects) */
+    /** @return where this segment's infinite line meets the line la·x + lb·y = lc, or null if parallel */
     private ArPose lineCrossing(double la, double lb, double lc) {
-        double n = -(lb * a - la * b);
+        return crossing(a, b, c, la, lb, lc);
+    }
+
+    /**
+     * Where two infinite lines a·x + b·y = c cross, as ARIA 2.x's {@code ArLine::intersects}
+     * (ariaUtil.h). AriaCoda's has {@code line.getA()} for {@code line.getB()} in x, a slip of its
+     * refactoring that puts the crossing off both lines unless a c is 0; RoboSim keeps ARIA 2.x's.
+     *
+     * @return the point, heading 0, or null if they are parallel
+     */
+    static ArPose crossing(double a1, double b1, double c1, double a2, double b2, double c2) {
+        double n = -(b2 * a1 - a2 * b1);
         if (Math.abs(n) < PARALLEL) {
             return null;
         }
-        return new ArPose((lc * b - la * c) / n, (c * la - a * lc) / n);
+        return new ArPose((c2 * b1 - b2 * c1) / n, (c1 * a2 - a1 * c2) / n, 0);
     }
 
     /** Equal ends, each within {@link ArMath#epsilon()}, as ARIA's {@code operator==}. */

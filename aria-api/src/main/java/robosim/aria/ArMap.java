@@ -1,5 +1,6 @@
 package robosim.aria;
 
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -29,8 +30,9 @@ public class ArMap {
     private final ReentrantLock mutex = new ReentrantLock();
     private final List<Runnable> mapChangedCBs = new ArrayList<>();
     private String baseDirectory;
-    private String fileName = "";
-    private MapContents contents = MapContents.EMPTY;
+    private volatile String fileName = "";
+    /** Replaced whole by a read, so that another thread sees one map or the other, never half. */
+    private volatile MapContents contents = MapContents.EMPTY;
 
     /** A map whose files are found from the working directory ({@code ./}, ARIA's default). */
     public ArMap() {
@@ -67,8 +69,8 @@ public class ArMap {
             }
         } catch (MapFileException e) {
             ArLog.log(ArLog.Terse, "ArMap::readFile: %s", e.getMessage());
-        } catch (RuntimeException e) {
-            // an unreadable path (an illegal name) is a failed read, as a missing file is
+        } catch (InvalidPathException e) {
+            // a name no file can have is a failed read, as a missing file is
             ArLog.log(ArLog.Terse, "ArMap::readFile: %s: %s", fileName, e.getMessage());
         } finally {
             unlock();

@@ -49,4 +49,17 @@ class ArLineSegmentTest {
         assertFalse(dot.linePointIsInSegment(new ArPose(5, 6)));
         assertEquals(5, dot.getDistToLine(new ArPose(8, 9)), "the nearer end, rounded");
     }
+
+    @Test
+    void crossingOfLinesOffTheOriginIsOnBothAsInAria2NotAriaCodasSlip() {
+        // AriaCoda's ArLine::intersects would put this crossing at x = -500, off both segments
+        ArLineSegment across = new ArLineSegment(0, 1000, 2000, 1000);
+        ArPose at = new ArPose();
+        assertTrue(across.intersects(new ArLineSegment(500, 0, 500, 2000), at));
+        assertEquals(new ArPose(500, 1000), at);
+        ArPose foot = new ArPose();
+        assertTrue(across.getPerpPoint(new ArPose(1500, 1700), foot));
+        assertEquals(new ArPose(1500, 1000), foot);
+        assertEquals(700, across.getDistToLine(new ArPose(2500, 300)));
+    }
 }

@@ -159,6 +159,20 @@ class ArMapTest {
     }
 
     @Test
+    void aNameNoFileCanHaveIsAFailedReadAndAnEmptyNameToo() {
+        ArMap map = new ArMap(dir.toString());
+        boolean[] ok = {true, true};
+        String log = logOf(() -> {
+            ok[0] = map.readFile("nul\0.map");
+            ok[1] = map.readFile("");
+        });
+        assertFalse(ok[0]);
+        assertFalse(ok[1]);
+        assertTrue(log.contains("ArMap::readFile: nul\0.map: Nul character not allowed"), log);
+        assertTrue(log.contains("ArMap::readFile: no file name given"), log);
+    }
+
+    @Test
     void anAbsoluteNameIgnoresTheBaseDirectory() throws IOException {
         Path file = Files.writeString(dir.resolve("abs.map"), ROOM);
         ArMap map = new ArMap("/no/such/dir");
