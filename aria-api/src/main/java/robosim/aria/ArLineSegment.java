@@ -241,7 +241,8 @@ public final class ArLineSegment implements Comparable<ArLineSegment> {
     /**
      * Where two infinite lines a·x + b·y = c cross, as ARIA 2.x's {@code ArLine::intersects}
      * (ariaUtil.h). AriaCoda's has {@code line.getA()} for {@code line.getB()} in x, a slip of its
-     * refactoring that puts the crossing off both lines unless a c is 0; RoboSim keeps ARIA 2.x's.
+     * refactoring that puts the crossing off the lines for most lines that miss the origin; RoboSim
+     * keeps ARIA 2.x's.
      *
      * @return the point, heading 0, or null if they are parallel
      */
