@@ -3,9 +3,9 @@ package robosim.aria;
 /**
  * A line found in a laser scan, as ARIA's {@code ArLineFinderSegment} (ArLineFinder.h): its end
  * points, its angle and length, how many scan points it covers (first and last by number) and their
- * average distance from it. ARIA's extends {@code ArLineSegment}; RoboSim has no {@code ArLineSegment}
- * yet, so the few line calls it needs are here: {@link #getDistToLine} is ARIA's (AriaCoda's): the
- * distance from the infinite line through the end points.
+ * average distance from it. ARIA's extends {@code ArLineSegment}; RoboSim's keeps the few line calls
+ * it needs here, its crossings from {@link ArLineSegment}'s: {@link #getDistToLine} is ARIA's
+ * (AriaCoda's): the distance from the infinite line through the end points.
  */
 public class ArLineFinderSegment {
     private double x1, y1, x2, y2;
@@ -161,11 +161,7 @@ public class ArLineFinderSegment {
      * @return the point, or null if they are parallel
      */
     static ArPose intersection(double a1, double b1, double c1, double a2, double b2, double c2) {
-        double n = -1 * (b2 * a1 - a2 * b1);
-        if (Math.abs(n) < 1e-13) {
-            return null;
-        }
-        return new ArPose((c2 * b1 - b2 * c1) / n, (c1 * a2 - a1 * c2) / n, 0);
+        return ArLineSegment.crossing(a1, b1, c1, a2, b2, c2);
     }
 
     /** @return where this segment's line crosses the other's, or null if parallel */

@@ -14,9 +14,9 @@ import java.util.SplittableRandom;
 import robosim.env.core.Simulation;
 import robosim.env.world.Obstacle;
 import robosim.env.world.World;
-import robosim.env.world.map.MapFile;
-import robosim.env.world.map.MapReader;
 import robosim.env.world.xml.WorldReader;
+import robosim.map.MapFile;
+import robosim.map.MapReader;
 import robosim.protocol.Command;
 
 /**

@@ -59,6 +59,7 @@ class ImportRulesTest {
                 Arguments.of("the Environment's TCP layer (robosim.env.net)", "\\brobosim\\.env\\.net\\b"),
                 Arguments.of("the world file reader (robosim.env.world.xml)", "\\brobosim\\.env\\.world\\.xml\\b"),
                 Arguments.of("the map file reader (robosim.env.world.map)", "\\brobosim\\.env\\.world\\.map\\b"),
+                Arguments.of("the map file reader (robosim.map)", "\\brobosim\\.map\\b"),
                 Arguments.of("the wall clock (System.currentTimeMillis)", "\\bSystem\\s*\\.\\s*currentTimeMillis\\b"),
                 Arguments.of("the wall clock (System.nanoTime)", "\\bSystem\\s*\\.\\s*nanoTime\\b"),
                 Arguments.of("unseeded randomness (new Random())", "\\bnew\\s+(java\\.(util|security)\\.)?(Secure|Splittable)?Random\\s*\\(\\s*\\)"),

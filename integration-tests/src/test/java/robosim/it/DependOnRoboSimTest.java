@@ -30,7 +30,8 @@ import org.junit.jupiter.api.io.TempDir;
 class DependOnRoboSimTest {
     private static final String VERSION = "0.1.0-SNAPSHOT";
     /** aria-api and the modules it needs. */
-    private static final List<String> MODULES = List.of("protocol", "pioneer", "robot-params", "hardware-sim", "aria-api");
+    private static final List<String> MODULES = List.of("protocol", "pioneer", "robot-params", "hardware-sim", "map-format",
+            "aria-api");
 
     @TempDir
     Path dir;

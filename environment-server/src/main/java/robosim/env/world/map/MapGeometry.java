@@ -6,6 +6,9 @@ import robosim.env.world.Bounds;
 import robosim.env.world.ForbiddenZone;
 import robosim.env.world.Obstacle;
 import robosim.geometry.Pose2D;
+import robosim.map.Cairn;
+import robosim.map.Coordinates;
+import robosim.map.MapFile;
 
 /**
  * A map as the world sees it: its lines as thin walls, its points as small squares merged along

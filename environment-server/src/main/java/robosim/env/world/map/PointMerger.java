@@ -3,6 +3,7 @@ package robosim.env.world.map;
 import java.util.Arrays;
 import java.util.List;
 import robosim.env.world.Obstacle;
+import robosim.map.Coordinates;
 
 /**
  * Turns a map's points into obstacles: each point is a square of the map's resolution; points that
@@ -40,7 +41,7 @@ final class PointMerger {
         for (int i = 0; i < n; i++) {
             byRow[i] = i;
         }
-        IndexSort.sort(byRow, points, 1, 0);
+        IndexSort.sort(byRow, points::get, 1, 0);
         boolean[] used = new boolean[n];
         Staircases rows = new Staircases(side, height, false);
         runs(byRow, n, 1, 0, used, rows, null);
@@ -52,7 +53,7 @@ final class PointMerger {
         }
         int[] byColumn = Arrays.copyOf(byRow, left);
         byRow = null; // the column sort's buffer may take its place
-        IndexSort.sort(byColumn, points, 0, 1);
+        IndexSort.sort(byColumn, points::get, 0, 1);
         Staircases columns = new Staircases(side, height, true);
         // lone points join the rows: a 45-degree wall is a staircase of single points
         runs(byColumn, left, 0, 1, used, columns, rows);

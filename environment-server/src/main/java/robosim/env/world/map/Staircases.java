@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import robosim.env.world.Obstacle;
+import robosim.map.Coordinates;
 
 /**
  * Joins runs of points that climb row by row (or column by column) like the steps of a straight
@@ -53,7 +54,7 @@ final class Staircases {
         for (int i = 0; i < size; i++) {
             order[i] = i;
         }
-        IndexSort.sort(order, runs, 0, 1);
+        IndexSort.sort(order, runs::get, 0, 1);
         // the runs in sorted order: v, first u, last u
         Sorted sorted = new Sorted(runs, order);
         boolean[] used = new boolean[size];

@@ -8,14 +8,14 @@ import java.util.Locale;
 import robosim.comms.CommsSettings;
 import robosim.env.world.Noise;
 import robosim.env.world.Obstacle;
-import robosim.env.world.RobotToPlace;
 import robosim.env.world.RobotSpec;
+import robosim.env.world.RobotToPlace;
 import robosim.env.world.World;
-import robosim.env.world.map.MapFile;
-import robosim.env.world.map.MapFileException;
 import robosim.env.world.map.MapGeometry;
-import robosim.env.world.map.MapReader;
 import robosim.geometry.Pose2D;
+import robosim.map.MapFile;
+import robosim.map.MapFileException;
+import robosim.map.MapReader;
 
 /**
  * Worlds made from ARIA maps: a {@code .map} file read as a world of its own, a {@code <map>}

@@ -9,6 +9,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import robosim.map.Coordinates;
 
 /**
  * The radix sort of points gives the order the comparison sort it replaced gave (stable, by one
@@ -59,26 +60,9 @@ class IndexSortTest {
                 assertArrayEquals(byComparison(xy, major), idx, n + " points by " + major);
                 int[] viaStore = new int[n];
                 Arrays.setAll(viaStore, i -> i);
-                IndexSort.sort(viaStore, Coordinates.of(2, xy, new int[n]), major, 1 - major);
+                IndexSort.sort(viaStore, Coordinates.of(2, xy, new int[n])::get, major, 1 - major);
                 assertArrayEquals(idx, viaStore, n + " points through the store by " + major);
             }
         }
-    }
-
-    @Test
-    void theStoreGivesBackItsItemsAndLines() {
-        int n = 3 * Coordinates.BLOCK + 17;
-        double[] xy = points(new SplittableRandom(7), n);
-        int[] lines = new int[n];
-        for (int i = 0, line = 5; i < n; i++) {
-            line += i % 1000 == 999 ? 3 : 1; // blank lines now and then
-            lines[i] = line;
-        }
-        Coordinates c = Coordinates.of(2, xy, lines);
-        assertEquals(n, c.count());
-        assertArrayEquals(xy, c.values());
-        assertArrayEquals(lines, c.lineNumbers());
-        int[] odd = {9, 3, 3, 100, 2};
-        assertArrayEquals(odd, Coordinates.of(2, new double[10], odd).lineNumbers());
     }
 }

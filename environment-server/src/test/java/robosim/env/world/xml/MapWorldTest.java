@@ -16,6 +16,7 @@ import robosim.env.world.ForbiddenZone;
 import robosim.env.world.RobotToPlace;
 import robosim.env.world.RobotSpec;
 import robosim.env.world.World;
+import robosim.map.MapReader;
 
 /** ARIA maps as worlds: read on their own, or brought into a world file by {@code <map>}. */
 class MapWorldTest {
@@ -210,5 +211,10 @@ class MapWorldTest {
                   <map file="lab.map"/>
                 </world>
                 """, 3, "a world has at most one <map>; the first is at line 2");
+    }
+
+    @Test
+    void aMapHoldsNoCoordinateLargerThanAWorldMay() {
+        assertEquals(World.MAX_SIZE, MapReader.MAX_COORDINATE);
     }
 }

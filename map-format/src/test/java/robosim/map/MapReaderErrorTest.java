@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -60,6 +60,16 @@ class MapReaderErrorTest {
     @Test
     void aHeaderLineWithoutAColon() throws IOException {
         fails("2D-Map\nMinPos 0 0\nDATA\n", 2, "'MinPos 0 0' is neither a 'Key: values' header line nor LINES or DATA");
+    }
+
+    @Test
+    void aCornerWithOneValue() throws IOException {
+        fails("2D-Map\nLineMaxPos: 100\nDATA\n", 2, "LineMaxPos has 1 value but holds x y");
+    }
+
+    @Test
+    void aCornerThatIsNoNumber() throws IOException {
+        fails("2D-Map\nMinPos: 0 north\nDATA\n", 2, "MinPos y 'north' is not a number");
     }
 
     @Test

@@ -1,8 +1,7 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.nio.file.Path;
 import java.util.regex.Pattern;
-import robosim.env.world.World;
 
 /** Checks the numbers of a map file against the bounds of a world file. */
 final class Numbers {
@@ -63,16 +62,16 @@ final class Numbers {
      */
     static double coordinate(Path file, int line, char[] c, int from, int to, String what) {
         double whole = wholeNumber(c, from, to);
-        if (Math.abs(whole) <= World.MAX_SIZE) {
+        if (Math.abs(whole) <= MapReader.MAX_COORDINATE) {
             return whole;
         }
         return coordinate(file, line, new String(c, from, to - from), what);
     }
 
-    /** @return the token as a coordinate, within {@link World#MAX_SIZE} either way */
+    /** @return the token as a coordinate, within {@link MapReader#MAX_COORDINATE} either way */
     static double coordinate(Path file, int line, String token, String what) {
         double v = parse(file, line, token, what);
-        if (Math.abs(v) > World.MAX_SIZE) {
+        if (Math.abs(v) > MapReader.MAX_COORDINATE) {
             throw new MapFileException(file, line, what + " " + MapLines.excerpt(token)
                     + " must be from -100000000 to 100000000 (100 km in mm)");
         }

@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -8,7 +8,8 @@ import java.util.Objects;
 /**
  * What a map file holds, as read, with the line each item came from. The lines and points are
  * kept as read ({@link Coordinates}, 8 bytes a number); the accessors that return arrays make
- * them afresh on each call, for tests and tools: {@link MapGeometry} reads them in place.
+ * them afresh on each call, for tests and tools; {@link #lineItems()} and {@link #pointItems()}
+ * give them in place, for a large map's geometry.
  */
 public final class MapFile {
     private final Path source;
@@ -16,6 +17,7 @@ public final class MapFile {
     private final Coordinates lines;
     private final Coordinates points;
     private final List<Cairn> cairns;
+    private final MapHeader header;
 
     /**
      * @param source     the file
@@ -28,15 +30,18 @@ public final class MapFile {
      */
     public MapFile(Path source, double resolution, double[] lines, int[] lineLines, double[] points,
                    int[] pointLines, List<Cairn> cairns) {
-        this(source, resolution, Coordinates.of(4, lines, lineLines), Coordinates.of(2, points, pointLines), cairns);
+        this(source, resolution, Coordinates.of(4, lines, lineLines), Coordinates.of(2, points, pointLines), cairns,
+                MapHeader.EMPTY);
     }
 
-    MapFile(Path source, double resolution, Coordinates lines, Coordinates points, List<Cairn> cairns) {
+    MapFile(Path source, double resolution, Coordinates lines, Coordinates points, List<Cairn> cairns,
+            MapHeader header) {
         this.source = source;
         this.resolution = resolution;
         this.lines = lines;
         this.points = points;
         this.cairns = List.copyOf(cairns);
+        this.header = header;
     }
 
     /** @return the file */
@@ -74,13 +79,18 @@ public final class MapFile {
         return cairns;
     }
 
-    /** @return the lines as read, for the geometry */
-    Coordinates lineItems() {
+    /** @return the rest of the header: declared counts, corners, map info */
+    public MapHeader header() {
+        return header;
+    }
+
+    /** @return the lines as read, in place: not to be changed */
+    public Coordinates lineItems() {
         return lines;
     }
 
-    /** @return the points as read, for the geometry */
-    Coordinates pointItems() {
+    /** @return the points as read, in place: not to be changed */
+    public Coordinates pointItems() {
         return points;
     }
 

@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.nio.file.Path;
 

@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

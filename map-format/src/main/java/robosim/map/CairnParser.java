@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -6,12 +6,12 @@ import java.util.List;
 
 /**
  * Reads the values of a {@code Cairn:} header line:
- * {@code Type x y th "internal" ICON "label" [x1 y1 x2 y2] ["description"]}, the four numbers being
- * the from and to points of lines and areas (ARIA's {@code ArMapObject} reads them at the same
- * places).
+ * {@code Type x y th "description" ICON "label" [x1 y1 x2 y2] ["description"]}, the four numbers
+ * being the from and to points of lines and areas (ARIA's {@code ArMapObject::createMapObject} reads
+ * them at the same places: eleven values or more have them).
  */
 final class CairnParser {
-    /** Type, x, y, th, internal name, icon, label. */
+    /** Type, x, y, th, description, icon, label. */
     private static final int BASE_FIELDS = 7;
     private static final int FROM_TO_FIELDS = 4;
 
@@ -22,7 +22,7 @@ final class CairnParser {
         List<String> t = tokens(file, line, values);
         if (t.size() < BASE_FIELDS) {
             throw new MapFileException(file, line, "a Cairn has " + t.size() + " values but needs at least "
-                    + BASE_FIELDS + ": Type x y th \"internal\" ICON \"label\"");
+                    + BASE_FIELDS + ": Type x y th \"description\" ICON \"label\"");
         }
         String type = t.get(0);
         String named = "Cairn " + MapLines.excerpt(type);
@@ -39,7 +39,10 @@ final class CairnParser {
             throw new MapFileException(file, line, "a " + named + " has " + t.size() + " values but needs "
                     + (BASE_FIELDS + FROM_TO_FIELDS) + ": its from and to points follow the label");
         }
-        return new Cairn(type, x, y, th, t.get(6), fromTo, line);
+        // as ArMapObject::setObjectDescription: a quoted string after the name (and the points) wins
+        int descriptionAt = BASE_FIELDS + fromTo.length;
+        String description = t.size() > descriptionAt ? t.get(descriptionAt) : t.get(4);
+        return new Cairn(type, x, y, th, description, t.get(5), t.get(6), fromTo, line);
     }
 
     /** Splits on white space, keeping a double-quoted string (quotes removed) as one token. */

@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -93,5 +93,36 @@ class MapReaderTest {
     void unknownHeaderKeysAreSkipped() throws IOException {
         MapFile map = read("2D-Map\nOriginLatLongAlt: 42.8 -71.5 72\nMapInfo: GoalType Name=Goal\nDATA\n1 2\n");
         assertEquals(1, map.pointCount());
+    }
+
+    @Test
+    void readsTheHeadersCornersCountsAndMapInfo() throws IOException {
+        MapHeader header = read(LAB.replace("Resolution: 20", "Resolution: 20\nMapInfo: GoalType Name=Goal\nMapInfo: Dock")).header();
+        assertEquals(new MapHeader.Position(2000, 0), header.minPos());
+        assertEquals(new MapHeader.Position(3000, 3000), header.maxPos());
+        assertEquals(new MapHeader.Position(-3000, -2000), header.lineMinPos());
+        assertEquals(new MapHeader.Position(5000, 4000), header.lineMaxPos());
+        assertEquals(5, header.numPoints());
+        assertEquals(4, header.numLines());
+        assertEquals(List.of("GoalType Name=Goal", "Dock"), header.mapInfo());
+    }
+
+    @Test
+    void aMapWithoutCornersOrCountsSaysSo() throws IOException {
+        assertEquals(MapHeader.EMPTY, read("2D-Map\nDATA\n1 2\n").header());
+    }
+
+    @Test
+    void aCairnsDescriptionIsTheQuotedStringAfterItsNameElseTheOneAfterTh() throws IOException {
+        List<Cairn> cairns = read("""
+                2D-Map
+                Cairn: Goal 1 2 3 "old" ICON "G" "new words"
+                Cairn: GoalWithHeading 1 2 3 "only" ID=4 "H"
+                Cairn: ForbiddenLine 0 0 0 "" ICON "" 0 0 10 10 "line words"
+                DATA
+                """).cairns();
+        assertEquals(new Cairn("Goal", 1, 2, 3, "new words", "ICON", "G", new double[0], 2), cairns.get(0));
+        assertEquals(new Cairn("GoalWithHeading", 1, 2, 3, "only", "ID=4", "H", new double[0], 3), cairns.get(1));
+        assertEquals("line words", cairns.get(2).description());
     }
 }

@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -11,8 +11,9 @@ import java.util.logging.Logger;
 
 /**
  * Reads an ARIA map file ({@code 2D-Map}, and the {@code 2D-Map-Ex} forms ARIA writes): the
- * header's {@code Resolution}, {@code NumPoints}, {@code NumLines} and {@code Cairn} lines (other
- * header keys are skipped), then {@code LINES} sections of {@code x1 y1 x2 y2} lines and
+ * header's {@code Resolution}, {@code NumPoints}, {@code NumLines}, {@code MinPos}, {@code MaxPos},
+ * {@code LineMinPos}, {@code LineMaxPos}, {@code MapInfo} and {@code Cairn} lines (other header keys
+ * are skipped), then {@code LINES} sections of {@code x1 y1 x2 y2} lines and
  * {@code DATA} sections of {@code x y} points, in either order ({@code SENSOR_LINES} and
  * {@code SENSOR_DATA} sections of the {@code -Ex} forms count as such). The first broken rule stops
  * reading with a {@link MapFileException} naming the file, the line and the rule, quoting at most
@@ -29,6 +30,10 @@ public final class MapReader {
     public static final int MAX_ITEMS = 10_000_000;
     /** The largest number a map may hold either way, as in a world file (1000 km in mm). */
     static final double MAX_MAGNITUDE = 1e9;
+    /** The largest coordinate a map may hold either way, mm (100 km), as a world file's size. */
+    public static final double MAX_COORDINATE = 100_000_000;
+    /** The header keys of the corners, in the order {@link MapHeader} holds them. */
+    private static final List<String> CORNER_KEYS = List.of("MinPos", "MaxPos", "LineMinPos", "LineMaxPos");
 
     private static final Logger LOG = Logger.getLogger(MapReader.class.getName());
 
@@ -43,6 +48,8 @@ public final class MapReader {
     private final Coordinates lines = new Coordinates(4);
     private final Coordinates points = new Coordinates(2);
     private final List<Cairn> cairns = new ArrayList<>();
+    private final List<String> mapInfo = new ArrayList<>();
+    private final MapHeader.Position[] corners = new MapHeader.Position[4];
     private final double[] item = new double[4];
 
     private MapReader(Path file, long maxHeap) {
@@ -138,8 +145,21 @@ public final class MapReader {
             case "NumPoints" -> declaredPoints = count(value, lineNo, "NumPoints");
             case "NumLines" -> declaredLines = count(value, lineNo, "NumLines");
             case "Cairn" -> cairns.add(CairnParser.parse(file, lineNo, value));
-            default -> { } // MinPos, MapInfo, custom keys: nothing a simulated world needs
+            case "MinPos", "MaxPos", "LineMinPos", "LineMaxPos" -> corners[CORNER_KEYS.indexOf(key)] =
+                    corner(value, lineNo, key);
+            case "MapInfo" -> mapInfo.add(value);
+            default -> { } // custom keys: nothing a map reader needs
         }
+    }
+
+    private MapHeader.Position corner(String value, int lineNo, String key) {
+        String[] xy = value.isEmpty() ? new String[0] : value.split("\\s+");
+        if (xy.length != 2) {
+            throw new MapFileException(file, lineNo, key + " has " + xy.length + " value" + (xy.length == 1 ? "" : "s")
+                    + " but holds x y");
+        }
+        return new MapHeader.Position(Numbers.coordinate(file, lineNo, xy[0], key + " x"),
+                Numbers.coordinate(file, lineNo, xy[1], key + " y"));
     }
 
     private long count(String value, int lineNo, String key) {
@@ -207,7 +227,9 @@ public final class MapReader {
         memory.check(points.count(), lines.count(), 0, "the map holds");
         warnIfDiffers("NumLines", declaredLines, lines.count());
         warnIfDiffers("NumPoints", declaredPoints, points.count());
-        return new MapFile(file, resolution, lines, points, cairns);
+        MapHeader header = new MapHeader(declaredPoints, declaredLines, corners[0], corners[1], corners[2], corners[3],
+                mapInfo);
+        return new MapFile(file, resolution, lines, points, cairns, header);
     }
 
     private void warnIfDiffers(String key, long declared, int found) {

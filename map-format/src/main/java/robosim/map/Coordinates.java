@@ -1,4 +1,4 @@
-package robosim.env.world.map;
+package robosim.map;
 
 import java.util.Arrays;
 
@@ -9,7 +9,7 @@ import java.util.Arrays;
  * the item before's (a map's data lines follow each other, so usually a few numbers in all).
  * A map of 10^7 points costs 160 MB here, and nothing per point besides.
  */
-final class Coordinates implements IndexSort.Table {
+public final class Coordinates {
     private static final int SHIFT = 14;
     /** Items per block. */
     static final int BLOCK = 1 << SHIFT;
@@ -24,7 +24,7 @@ final class Coordinates implements IndexSort.Table {
     private int jumps;
 
     /** @param width the numbers per item: 2 for points, 4 for lines */
-    Coordinates(int width) {
+    public Coordinates(int width) {
         this.width = width;
         blocks[0] = new double[16 * width];
     }
@@ -37,7 +37,7 @@ final class Coordinates implements IndexSort.Table {
      * @param lines  each item's file line, increasing
      * @return them
      */
-    static Coordinates of(int width, double[] values, int[] lines) {
+    public static Coordinates of(int width, double[] values, int[] lines) {
         Coordinates c = new Coordinates(width);
         for (int i = 0; i < lines.length; i++) {
             c.add(values, i * width, lines[i]);
@@ -52,7 +52,7 @@ final class Coordinates implements IndexSort.Table {
      * @param from   the index of its first number
      * @param line   its file line, after the previous item's
      */
-    void add(double[] values, int from, int line) {
+    public void add(double[] values, int from, int line) {
         int block = count >>> SHIFT;
         int at = (count & MASK) * width;
         if (block == blocks.length) {
@@ -81,7 +81,7 @@ final class Coordinates implements IndexSort.Table {
     }
 
     /** @return the number of items */
-    int count() {
+    public int count() {
         return count;
     }
 
@@ -90,20 +90,15 @@ final class Coordinates implements IndexSort.Table {
      * @param number which of its numbers: 0 is x (x1), 1 is y (y1), ...
      * @return that number
      */
-    double get(int item, int number) {
+    public double get(int item, int number) {
         return blocks[item >>> SHIFT][(item & MASK) * width + number];
-    }
-
-    @Override
-    public double at(int item, int column) {
-        return get(item, column);
     }
 
     /**
      * @param item an item
      * @return the 1-based file line it was read from
      */
-    int line(int item) {
+    public int line(int item) {
         int lo = 0;
         int hi = jumps - 1;
         while (lo < hi) {
