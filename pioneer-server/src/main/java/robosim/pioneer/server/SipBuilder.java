@@ -11,7 +11,7 @@ import robosim.protocol.RobotState;
  * Makes each step's status packet from the robot's state, in the robot's units: positions divided
  * by the DistConvFactor (15 bits that wrap), the heading by the AngleConvFactor, wheel velocities
  * by the VelConvFactor; the state's parts that a SIP carries (the sonar ring, the bumpers, the
- * battery) are written by their {@link SipParts}. A state without a battery reads 13.0 V, as
+ * battery, the gripper's switches) are written by their {@link SipParts}. A state without a battery reads 13.0 V, as
  * MobileSim's does. Safe to use from the robot's thread and the thread that sends the SIPs of a
  * robot standing by.
  */
@@ -68,7 +68,7 @@ final class SipBuilder {
         parts.write(state, f);
         boolean moving = !standing && (state.vel() != 0 || state.rotVel() != 0);
         int rotVel = standing ? 0 : (int) Math.round(state.rotVel() * 10);
-        return new Sip(moving, x, y, th, left, right, f.battery, f.stallBump, 0, f.flags, 0, f.sonar, 0xff, 0xff,
+        return new Sip(moving, x, y, th, left, right, f.battery, f.stallBump, 0, f.flags, 0, f.sonar, f.anPort, 0xff, 0xff,
                 f.batteryX10, 0, rotVel, 0, 0, -127, f.stateOfCharge);
     }
 }
