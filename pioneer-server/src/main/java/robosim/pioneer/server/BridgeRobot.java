@@ -327,7 +327,7 @@ final class BridgeRobot extends AbstractRobot {
         LaserScan laser = new LaserScan();
         CommandHandler handler = new CommandHandler(served.name(), served.parameters(), served.factors(), laser, frame,
                 new SessionEffects(session, simExit, frame));
-        Attached a = new Attached(session, handler, new SipBuilder(served.factors()), laser, frame);
+        Attached a = new Attached(session, handler, new SipBuilder(served.factors(), served.parameters().hasGripper()), laser, frame);
         String refusal = null;
         synchronized (lock) {
             if (done) {

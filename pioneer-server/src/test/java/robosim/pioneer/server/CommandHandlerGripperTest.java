@@ -151,4 +151,19 @@ class CommandHandlerGripperTest {
         pending.add(new Command.Gripper(Command.Gripper.GRIP_OPEN));
         assertEquals(List.of(new Command.Gripper(4), new Command.Gripper(1)), pending.drain());
     }
+
+    @Test
+    void theSipsAnportHighByteIsTheSwitchesAndTheDeployedGripperBeforeTheStateCarriesIt() {
+        OdometryFrame frame = new OdometryFrame();
+        SipBuilder sips = new SipBuilder(SipBuilderTest.P3DX, true);
+        byte[] data = sips.build(withGripper(0x31), frame, true, false).toPacket().data();
+        // no sonar readings: ANPORT follows the 18 bytes of motion and flags and the count, low byte first
+        assertEquals(0x00, data[19] & 0xff);
+        assertEquals(0x31, data[20] & 0xff);
+        RobotState bare = new RobotState(0, 0, 0, 0, 0, 0, 0, 0, 0, false, 0);
+        assertEquals(0x3000, sips.standing(bare, frame, false, false).anPort(),
+                "before the welcome: paddles open, lift down, nothing triggered");
+        assertEquals(0, new SipBuilder(SipBuilderTest.P3DX, false).build(bare, frame, true, false).anPort(),
+                "no gripper: ANPORT 0");
+    }
 }
