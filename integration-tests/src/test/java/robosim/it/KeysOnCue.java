@@ -13,18 +13,22 @@ import robosim.aria.ArLog;
 import robosim.aria.Aria;
 
 /**
- * A program's keyboard that types each key once the program has printed its cue (after the previous
+ * A program's keyboard that types keys once the program has printed their cue (after the previous
  * cue), as a person at the terminal waits to see the state before pressing the next key. Its input
  * blocks on what is printed, never on a clock: a cue not printed within a minute ends the input.
  */
 final class KeysOnCue extends InputStream {
     /**
-     * A key and what must be printed before it is pressed.
+     * Keys and what must be printed before they are typed.
      *
-     * @param cue text the program prints
-     * @param key the key's byte
+     * @param cue  text the program prints
+     * @param keys the bytes typed then (an arrow key is three: ESC [ A)
      */
-    record Cue(String cue, int key) {
+    record Cue(String cue, String keys) {
+        /** @param cue text the program prints @param key the one key typed then */
+        Cue(String cue, int key) {
+            this(cue, String.valueOf((char) key));
+        }
     }
 
     private static final long CUE_WAIT_MS = 60_000;
@@ -33,6 +37,8 @@ final class KeysOnCue extends InputStream {
     private final StringBuilder printed = new StringBuilder();
     private int next;
     private int searchFrom;
+    /** The keys of the cue last seen, still to be read. */
+    private String typing = "";
 
     private KeysOnCue(List<Cue> cues) {
         this.cues = cues;
@@ -93,6 +99,7 @@ final class KeysOnCue extends InputStream {
     @Override
     public synchronized void close() {
         next = cues.size();
+        typing = "";
         notifyAll();
     }
 
@@ -102,6 +109,11 @@ final class KeysOnCue extends InputStream {
 
     @Override
     public synchronized int read() throws IOException {
+        if (!typing.isEmpty()) {
+            char k = typing.charAt(0);
+            typing = typing.substring(1);
+            return k;
+        }
         if (next >= cues.size()) {
             return -1;
         }
@@ -126,7 +138,8 @@ final class KeysOnCue extends InputStream {
         }
         searchFrom = at + c.cue().length();
         next++;
-        return c.key();
+        typing = c.keys().substring(1);
+        return c.keys().charAt(0);
     }
 
     @Override

@@ -19,7 +19,8 @@ import robosim.aria.Aria;
  * off obstacles; every cycle a user task logs the gripper's state ({@code ArGripper::logState}).
  * Keys: {@code u} or Page Up lifts the gripper, {@code d} or Page Down lowers it, {@code o} opens
  * the paddles, {@code c} closes them, {@code s} stops both ({@code gripperHalt}); Escape exits.
- * A robot without a gripper ends the program with ARIA's error.
+ * A robot without a gripper ends the program with ARIA's error. One line more than ARIA's: it makes
+ * the key handler ARIA's keydrive action makes for itself (RoboSim's keydrive makes none).
  */
 public final class GripperExample {
     private GripperExample() {
@@ -155,6 +156,12 @@ public final class GripperExample {
         ArActionJoydrive joydriveAction = new ArActionJoydrive("joydrive", 400, 15);
         robot.addAction(joydriveAction, 40);
         joydriveAction.setStopIfNoButtonPressed(false);
+        // the key handler ARIA's keydrive action makes for itself when there is none
+        if (Aria.getKeyHandler() == null) {
+            ArKeyHandler keyHandler = new ArKeyHandler();
+            Aria.setKeyHandler(keyHandler);
+            robot.attachKeyHandler(keyHandler);
+        }
         ArActionKeydrive keydriveAction = new ArActionKeydrive();
         robot.addAction(keydriveAction, 30);
 
