@@ -187,8 +187,9 @@ public class ArGripper {
             RobotState s = robot.currentState();
             if (s != null && s.step() > 0) {
                 type = s.get(GripperState.PART) != null ? Type.GENIO : Type.NOGRIPPER;
-                LOG.fine(() -> "gripper of robot " + robot.getName() + " queried: "
-                        + (type == Type.GENIO ? "using General IO" : "the robot has no gripper"));
+                // ARIA's packetHandler's lines (ArGripper.cpp)
+                ArLog.log(ArLog.Normal, type == Type.GENIO ? "Gripper:  querried, using General IO."
+                        : "Gripper:  querried, the robot has no gripper.");
             }
         }
         return type;
@@ -209,14 +210,22 @@ public class ArGripper {
         return g == null ? 0 : g.graspTime();
     }
 
-    /** @return the gripper's state as ARIA's {@code logState} words it, also logged at INFO */
+    /**
+     * Logs the gripper's state as ARIA's {@code logState} (ArGripper.cpp) does: through {@link ArLog}
+     * at {@link ArLog#Terse}.
+     *
+     * @return the line logged
+     */
     public String logState() {
         String text = stateLine();
-        LOG.info(text);
+        ArLog.log(ArLog.Terse, "%s", text);
         return text;
     }
 
     /**
+     * As in ARIA's {@code logState}, the paddles' word takes {@code _moving} when the lift moves
+     * (ARIA reads {@code isLiftMoving()} once for both).
+     *
      * @return the line {@link #logState} logs, for example
      *         {@code "Lift:           maxed  Grip:          closed  BreakBeam:      inner"}, without logging it
      */
@@ -234,7 +243,7 @@ public class ArGripper {
             case 1 -> "open";
             case 2 -> "closed";
             default -> "between";
-        } + (isGripMoving() ? "_moving" : "");
+        } + (moving ? "_moving" : "");
         String beams = switch (getBreakBeamState()) {
             case 1 -> "inner";
             case 2 -> "outter";

@@ -88,7 +88,8 @@ public final class PioneerLink extends ReleasedOnClose {
                     + LogLimiter.excerpt(c.identity().subclass()) + " '" + LogLimiter.excerpt(c.identity().name()) + "' at "
                     + environment()
                     + ", status every " + config.sipCycle() + " ms, conversion factors: " + factors.describe());
-            states = new SipToState(factors, hello.parameters().sonarUnits().size(), hello.parameters().sonarMaxRange());
+            states = new SipToState(factors, hello.parameters().sonarUnits().size(), hello.parameters().sonarMaxRange(),
+                    config.hasGripper());
             commands = new CommandToPackets(factors, environment());
             c.startPulses();
             Sip first = c.nextSip(options.connectTimeoutMs());

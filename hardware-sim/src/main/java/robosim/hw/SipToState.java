@@ -18,7 +18,7 @@ import robosim.protocol.TruePose;
  * DistConvFactor, then moved by each SIP's difference from the one before (the 15-bit counters
  * wrap, so a jump of more than 0x1000 units is a wrap); the heading times the AngleConvFactor;
  * the wheel velocities times the VelConvFactor; the parts of the state a SIP carries (the sonar
- * ring, the bumpers, the battery) are read by their {@link SipParts}. Laser packets are gathered into whole
+ * ring, the bumpers, the battery, the gripper's switches) are read by their {@link SipParts}. Laser packets are gathered into whole
  * scans, SIMSTAT packets give the true pose; the SIP's flags bit 0 says whether the motors are enabled
  * (ARIA's {@code areMotorsEnabled}). The odometry is the server's own: (0, 0, 0) where a
  * simulator put it at the connection, wherever a real Pioneer's counters stood. No sockets: the
@@ -48,10 +48,11 @@ final class SipToState {
      * @param factors     the robot's conversion factors
      * @param sonarCount  the sonar ring's size, from the robot's parameter file
      * @param sonarMaxRange what a sonar reads before its first reading, mm
+     * @param gripper     whether the server said the robot has a gripper (its CONFIG reply)
      */
-    SipToState(ConversionFactors factors, int sonarCount, double sonarMaxRange) {
+    SipToState(ConversionFactors factors, int sonarCount, double sonarMaxRange, boolean gripper) {
         this.factors = factors;
-        this.parts = new SipParts(new SipContext(factors, sonarCount, sonarMaxRange));
+        this.parts = new SipParts(new SipContext(factors, sonarCount, sonarMaxRange, gripper));
     }
 
     /**

@@ -49,7 +49,7 @@ class SipToStateTest {
 
     @Test
     void aSipIsReadInTheRobotsUnits() {
-        RobotState st = state(new SipToState(P3DX, 16, 5000),
+        RobotState st = state(new SipToState(P3DX, 16, 5000, false),
                 sip(1000, 200, 1024, 100, 300, 0x0009, 0x1F, new int[][] {{0, 500}, {3, 1000}}, 573));
         assertEquals(485, st.x(), 1e-9, "1000 units × 0.485");
         assertEquals(97, st.y(), 1e-9);
@@ -70,7 +70,7 @@ class SipToStateTest {
 
     @Test
     void thePositionFollowsThe15BitCountersAcrossTheirWrap() {
-        SipToState s = new SipToState(P3DX, 0, 5000);
+        SipToState s = new SipToState(P3DX, 0, 5000, false);
         state(s, sip(32760, 5, 0, 0, 0, 0, 0, new int[0][], 0));
         RobotState st = state(s, sip(10, 32766, 0, 0, 0, 0, 0, new int[0][], 0));
         assertEquals((32760 + 18) * 0.485, st.x(), 1e-6, "10 after 32760 is 18 units on");
@@ -79,19 +79,19 @@ class SipToStateTest {
 
     @Test
     void aHeadingPast180DegreesIsNormalised() {
-        RobotState st = state(new SipToState(P3DX, 0, 5000), sip(0, 0, 3000, 0, 0, 0, 0, new int[0][], 0));
+        RobotState st = state(new SipToState(P3DX, 0, 5000, false), sip(0, 0, 3000, 0, 0, 0, 0, new int[0][], 0));
         assertEquals(Math.toDegrees(3000 * 0.001534) - 360, st.th(), 1e-9);
     }
 
     @Test
     void withoutRotvelTheRotationComesFromTheWheelsAsAriaWorksItOut() {
-        RobotState st = state(new SipToState(P3DX, 0, 5000), sip(0, 0, 0, -100, 100, 0, 0, new int[0][], 0));
+        RobotState st = state(new SipToState(P3DX, 0, 5000, false), sip(0, 0, 0, -100, 100, 0, 0, new int[0][], 0));
         assertEquals(Math.toDegrees(100 * 0.0056), st.rotVel(), 1e-9);
     }
 
     @Test
     void sonarReadingsOfSeveralSipsMakeOneRingAndTheRingIsEmptyWhileTheSonarIsOff() {
-        SipToState s = new SipToState(P3DX, 4, 5000);
+        SipToState s = new SipToState(P3DX, 4, 5000, false);
         state(s, sip(0, 0, 0, 0, 0, 0, 0x1E, new int[][] {{0, 100}, {1, 200}}, 0));
         RobotState on = state(s, sip(0, 0, 0, 0, 0, 0, 0x1E, new int[][] {{2, 300}, {7, 900}}, 0));
         assertArrayEquals(new int[] {100, 200, 300, 5000}, on.get(SonarReading.PART).ranges(),
@@ -102,7 +102,7 @@ class SipToStateTest {
 
     @Test
     void aStallCountsOneCollisionUntilItEnds() {
-        SipToState s = new SipToState(P3DX, 0, 5000);
+        SipToState s = new SipToState(P3DX, 0, 5000, false);
         state(s, sip(0, 0, 0, 0, 0, 0x0100, 0, new int[0][], 0));
         RobotState still = state(s, sip(0, 0, 0, 0, 0, 0x0101, 0, new int[0][], 0));
         state(s, sip(0, 0, 0, 0, 0, 0, 0, new int[0][], 0));
@@ -114,7 +114,7 @@ class SipToStateTest {
 
     @Test
     void laserPacketsMakeAScanOnceTheLastPartHasCome() {
-        SipToState s = new SipToState(P3DX, 0, 5000);
+        SipToState s = new SipToState(P3DX, 0, 5000, false);
         // 0x61: total 4, first 0, 2 readings (range, reflectance, two spare bytes each), laser number, flags
         s.laser(LaserPacket.decode(new PioneerPacket(0x61, new byte[] {4, 0, 0, 0, 2,
                 (byte) 0xE8, 0x03, 0, 0, 0, (byte) 0xD0, 0x07, 0, 0, 0, 0, 0})));

@@ -68,6 +68,11 @@ public final class Commands {
     public static final int GRIPPER = 33;
     /** The argument of the gripper command before it (GRIP_PRESSURE, LIFT_CARRY), as ARIA's GRIPPERVAL. */
     public static final int GRIPPERVAL = 36;
+    /**
+     * Asks for gripper packets ({@link #GRIPPER_PACKET}): 0 none, 1 one, 2 one every cycle, as ARIA's
+     * GRIPPERPACREQUEST. The older simulator's laser took the same number for the field of view's end.
+     */
+    public static final int GRIPPERPACREQUEST = 37;
     /** Asks for IO packets. */
     public static final int IOREQUEST = 40;
     /** Sets whether bumping stalls the robot: 0 no, 1 front, 2 rear, 3 both. */
@@ -111,6 +116,8 @@ public final class Commands {
     public static final int LASER_EXTENDED_PACKET = 0x61;
     /** The simulator's status packet. */
     public static final int SIMSTAT_PACKET = 0x62;
+    /** The gripper's packet, the answer to GRIPPERPACREQUEST. */
+    public static final int GRIPPER_PACKET = 0xE0;
 
     private static final Map<Integer, String> NAMES = Map.ofEntries(
             Map.entry(PULSE, "PULSE"), Map.entry(OPEN, "OPEN"), Map.entry(CLOSE, "CLOSE"),
@@ -119,7 +126,8 @@ public final class Commands {
             Map.entry(SETRV, "SETRV"), Map.entry(VEL, "VEL"), Map.entry(HEAD, "HEAD"), Map.entry(DHEAD, "DHEAD"),
             Map.entry(SAY, "SAY"), Map.entry(CONFIG, "CONFIG"), Map.entry(ENCODER, "ENCODER"),
             Map.entry(RVEL, "RVEL"), Map.entry(SETRA, "SETRA"), Map.entry(SONAR, "SONAR"), Map.entry(STOP, "STOP"),
-            Map.entry(VEL2, "VEL2"), Map.entry(GRIPPER, "GRIPPER"), Map.entry(GRIPPERVAL, "GRIPPERVAL"), Map.entry(IOREQUEST, "IOREQUEST"),
+            Map.entry(VEL2, "VEL2"), Map.entry(GRIPPER, "GRIPPER"), Map.entry(GRIPPERVAL, "GRIPPERVAL"),
+            Map.entry(GRIPPERPACREQUEST, "GRIPPERPACREQUEST"), Map.entry(IOREQUEST, "IOREQUEST"),
             Map.entry(BUMPSTALL, "BUMPSTALL"), Map.entry(ESTOP, "ESTOP"), Map.entry(BATTERYINFO, "BATTERYINFO"),
             Map.entry(LATVEL, "LATVEL"), Map.entry(SIM_SET_POSE, "SIM_SET_POSE"), Map.entry(SIM_RESET, "SIM_RESET"),
             Map.entry(SIM_LRF_ENABLE, "SIM_LRF_ENABLE"), Map.entry(SIM_LRF_SET_FOV_START, "SIM_LRF_SET_FOV_START"),

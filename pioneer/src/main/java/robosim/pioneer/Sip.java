@@ -21,6 +21,9 @@ import java.util.List;
  * @param flags        bit 0 motors on, bits 1–4 sonar arrays on, bit 5 e-stop
  * @param compass      degrees / 2
  * @param sonar        the sonar readings this SIP carries
+ * @param anPort       ANPORT, two bytes: ARIA's {@code getAnalogPortSelected()}; a gripper on the
+ *                     general IO port puts its switch byte in the high byte (ARIA's ArGripper.cpp
+ *                     reads {@code getAnalogPortSelected() >> 8} for a GENIO gripper)
  * @param digIn        the digital inputs
  * @param digOut       the digital outputs
  * @param batteryX10   the battery in tenths of a volt, two bytes
@@ -32,7 +35,7 @@ import java.util.List;
  * @param stateOfCharge percent, 0 for none
  */
 public record Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int rightVel, int battery,
-                  int stallBump, int control, int flags, int compass, List<SonarReading> sonar,
+                  int stallBump, int control, int flags, int compass, List<SonarReading> sonar, int anPort,
                   int digIn, int digOut, int batteryX10, int chargeState, int rotVelX10, int faultFlags,
                   int latVel, int temperature, int stateOfCharge) {
 
@@ -61,6 +64,38 @@ public record Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int r
         sonar = List.copyOf(sonar);
     }
 
+    /**
+     * A SIP whose ANPORT is 0 (no gripper on the general IO port).
+     *
+     * @param moving        whether the ID is {@code 0x33}
+     * @param xPos          x
+     * @param yPos          y
+     * @param th            heading
+     * @param leftVel       left wheel
+     * @param rightVel      right wheel
+     * @param battery       decivolts
+     * @param stallBump     stall and bumper bits
+     * @param control       the heading setpoint
+     * @param flags         the flags
+     * @param compass       degrees / 2
+     * @param sonar         the sonar readings
+     * @param digIn         the digital inputs
+     * @param digOut        the digital outputs
+     * @param batteryX10    the battery in tenths of a volt
+     * @param chargeState   0 not charging
+     * @param rotVelX10     tenths of a degree per second
+     * @param faultFlags    the fault flags
+     * @param latVel        lateral velocity
+     * @param temperature   degrees Celsius
+     * @param stateOfCharge percent
+     */
+    public Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int rightVel, int battery, int stallBump,
+               int control, int flags, int compass, List<SonarReading> sonar, int digIn, int digOut, int batteryX10,
+               int chargeState, int rotVelX10, int faultFlags, int latVel, int temperature, int stateOfCharge) {
+        this(moving, xPos, yPos, th, leftVel, rightVel, battery, stallBump, control, flags, compass, sonar, 0, digIn,
+                digOut, batteryX10, chargeState, rotVelX10, faultFlags, latVel, temperature, stateOfCharge);
+    }
+
     /** @return the packet */
     public PioneerPacket toPacket() {
         PacketBuilder b = new PacketBuilder(moving ? Commands.SIP_MOVING : Commands.SIP_STOPPED)
@@ -69,7 +104,7 @@ public record Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int r
         for (SonarReading r : sonar) {
             b.u8(r.index()).u16(Math.min(r.range(), 0xffff));
         }
-        return b.u16(0).u8(0).u8(digIn).u8(digOut).u16(batteryX10).u8(chargeState).i16(rotVelX10)
+        return b.u16(anPort & 0xffff).u8(0).u8(digIn).u8(digOut).u16(batteryX10).u8(chargeState).i16(rotVelX10)
                 .u16(faultFlags).i16(latVel).u8(temperature).u8(stateOfCharge).build();
     }
 
@@ -101,10 +136,11 @@ public record Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int r
         for (int i = 0; i < n; i++) {
             sonar.add(new SonarReading(d.u8("sonar number"), d.u16("sonar range")));
         }
+        int anPort = 0;
         int digIn = 0;
         int digOut = 0;
         if (d.remaining() > 0) {
-            d.u16("ANPORT");
+            anPort = d.u16("ANPORT");
             d.u8("ANALOG");
             digIn = d.u8("DIGIN");
             digOut = d.u8("DIGOUT");
@@ -117,6 +153,6 @@ public record Sip(boolean moving, int xPos, int yPos, int th, int leftVel, int r
         int temp = d.remaining() > 0 ? d.i8("TEMP") : -127;
         int soc = d.remaining() > 0 ? d.u8("SOC") : 0;
         return new Sip(p.id() == Commands.SIP_MOVING, x, y, th, lvel, rvel, battery, stall, control, flags, compass,
-                sonar, digIn, digOut, battX10, charge, rotVel, faults, lat, temp, soc);
+                sonar, anPort, digIn, digOut, battX10, charge, rotVel, faults, lat, temp, soc);
     }
 }

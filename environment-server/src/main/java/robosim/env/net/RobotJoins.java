@@ -9,12 +9,14 @@ import robosim.geometry.Pose2D;
 import robosim.protocol.Bye;
 import robosim.protocol.LogLimiter;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RobotParameters;
 import robosim.protocol.Welcome;
 
 /**
  * A robot's hello, part of {@link SessionRules}: admitted or refused ({@link RobotAdmission}), and
  * once admitted given its body's parameters and welcomed with its state. Before the run starts a
- * robot's program brings its own parameters; after, a robot joins its body as it is (where it stood
+ * robot's program brings its own parameters (a gripper the world gives the body stays: see
+ * {@code keepingGripper}); after, a robot joins its body as it is (where it stood
  * still since it went, with its odometry), so its program must bring the parameters that body has:
  * a body does not change shape or limits during a run. A robot admitted while a step is open takes
  * part from the next step opened.
@@ -130,8 +132,10 @@ final class RobotJoins {
     /** Before the run: the program's parameters become the body's. @return why not, or null */
     private String useParameters(RobotHello hello) {
         try {
-            overriding(hello);
-            sim().useParameters(hello.name(), hello.parameters());
+            RobotParameters params = keepingGripper(hello.parameters(), sim().world().robots().stream()
+                    .anyMatch(r -> r.name().equals(hello.name()) && r.parameters().hasGripper()));
+            overriding(hello.name(), params);
+            sim().useParameters(hello.name(), params);
             return null;
         } catch (IllegalArgumentException e) {
             return e.getMessage();
@@ -140,7 +144,9 @@ final class RobotJoins {
 
     /** During the run: the program must bring its body's parameters. @return why not, or null */
     private String sameBody(RobotHello hello) {
-        String difference = ParameterDifference.first(sim().parameters(hello.name()), hello.parameters(), "its body");
+        RobotParameters body = sim().parameters(hello.name());
+        String difference = ParameterDifference.first(body, keepingGripper(hello.parameters(), body.hasGripper()),
+                "its body");
         if (difference == null) {
             return null;
         }
@@ -150,14 +156,27 @@ final class RobotJoins {
     }
 
     /** Says in one line when a robot program's parameters differ from its world file's, and that the program's win. */
-    private void overriding(RobotHello hello) {
-        sim().world().robots().stream().filter(r -> r.name().equals(hello.name())).findFirst().ifPresent(spec -> {
-            String difference = ParameterDifference.first(spec.parameters(), hello.parameters());
+    private void overriding(String name, RobotParameters params) {
+        sim().world().robots().stream().filter(r -> r.name().equals(name)).findFirst().ifPresent(spec -> {
+            String difference = ParameterDifference.first(spec.parameters(), params);
             if (difference != null) {
                 String file = spec.parameterFile() == null ? "" : " " + spec.parameterFile().getFileName();
-                LOG.info(() -> "robot " + hello.name() + ": its program's parameters differ from the world's file"
+                LOG.info(() -> "robot " + name + ": its program's parameters differ from the world's file"
                         + file + " (first: " + difference + "); the program's parameters win");
             }
         });
+    }
+
+    /**
+     * A gripper is the body's hardware, as on a Pioneer: an ARIA program learns of it by asking the
+     * robot (ArGripper.cpp's type query), not from its parameter file, so a body the world fits with
+     * a gripper keeps it whatever its program's parameters say.
+     *
+     * @param params  the program's parameters
+     * @param gripper whether the body has a gripper
+     * @return the parameters, with the gripper if the body has one
+     */
+    private static RobotParameters keepingGripper(RobotParameters params, boolean gripper) {
+        return gripper && !params.hasGripper() ? params.withGripper(true) : params;
     }
 }

@@ -18,6 +18,8 @@ public final class SipFields {
     public int battery;
     /** BATTX10, decivolts, two bytes. */
     public int batteryX10;
+    /** ANPORT, two bytes: a gripper's switches in the high byte, as ARIA reads a GENIO gripper. */
+    public int anPort;
     /** SOC, percent; 0 for none. */
     public int stateOfCharge;
     /** The sonar readings the SIP carries. */

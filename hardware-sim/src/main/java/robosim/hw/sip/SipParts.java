@@ -16,7 +16,8 @@ public final class SipParts {
     public static final List<Function<SipContext, SipPart>> ALL = List.of(
             SonarInSip::new,
             BumpersInSip::new,
-            BatteryInSip::new);
+            BatteryInSip::new,
+            GripperInSip::new);
 
     private final List<SipPart> parts = new ArrayList<>();
 

@@ -9,6 +9,7 @@ import org.junit.jupiter.api.Test;
 import robosim.params.ConversionFactors;
 import robosim.pioneer.Sip;
 import robosim.protocol.BatteryReading;
+import robosim.protocol.GripperState;
 import robosim.protocol.Bumpers;
 import robosim.protocol.RobotState;
 import robosim.protocol.SonarReading;
@@ -29,8 +30,8 @@ class SipPartsTest {
     private static StateParts roundTrip(SipParts writer, SipParts reader, RobotState state, boolean sonarOn) {
         SipFields f = new SipFields(sonarOn ? Sip.FLAG_SONARS : 0, 0, 130);
         writer.write(state, f);
-        Sip sip = new Sip(false, 0, 0, 0, 0, 0, f.battery, f.stallBump, 0, f.flags, 0, f.sonar, 0, 0, f.batteryX10, 0,
-                0, 0, 0, -127, f.stateOfCharge);
+        Sip sip = new Sip(false, 0, 0, 0, 0, 0, f.battery, f.stallBump, 0, f.flags, 0, f.sonar, f.anPort, 0, 0,
+                f.batteryX10, 0, 0, 0, 0, -127, f.stateOfCharge);
         return reader.read(Sip.decode(sip.toPacket()), StateParts.NONE);
     }
 
@@ -85,8 +86,25 @@ class SipPartsTest {
     }
 
     @Test
+    void theGrippersSwitchesTravelInAnportsHighByteAsAriaReadsAGenioGripper() {
+        // paddles closed on an object (both paddles triggered), lift at a limit, inner beam broken
+        int switches = GripperState.PADDLES_OPEN_CLEAR | GripperState.INNER_BEAM;
+        RobotState s = state().with(GripperState.PART, new GripperState(switches, 10, 0.6, 1, 3));
+        SipFields f = new SipFields(0, 0, 130);
+        parts(0).write(s, f);
+        assertEquals(switches << 8, f.anPort, "ANPORT: getAnalogPortSelected() >> 8 is the switch byte");
+        SipParts reader = new SipParts(new SipContext(P3DX, 0, 5000, true));
+        assertEquals(new GripperState(switches, 0, 1, 0, -1), roundTrip(parts(0), reader, s, false).get(GripperState.PART));
+        assertNull(roundTrip(parts(0), parts(0), s, false).get(GripperState.PART),
+                "a client whose server has no gripper reads none");
+        SipFields none = new SipFields(0, 0, 130);
+        parts(0).write(state(), none);
+        assertEquals(0, none.anPort, "no gripper: ANPORT 0");
+    }
+
+    @Test
     void theRegistryMakesOnePartOfEachKindForAConnection() {
-        assertEquals(List.of(SonarInSip.class, BumpersInSip.class, BatteryInSip.class),
+        assertEquals(List.of(SonarInSip.class, BumpersInSip.class, BatteryInSip.class, GripperInSip.class),
                 SipParts.ALL.stream().map(k -> k.apply(new SipContext(P3DX, 0, 0)).getClass()).toList());
     }
 }

@@ -9,6 +9,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import robosim.hw.AbstractRobot;
 import robosim.hw.RobotSensorResponse;
+import robosim.pioneer.GripperPacket;
 import robosim.pioneer.LaserPacket;
 import robosim.pioneer.PioneerPacket;
 import robosim.pioneer.SimStat;
@@ -22,7 +23,7 @@ import robosim.protocol.TruePose;
  * A world robot driven by an ARIA client: an ordinary robot client of the Environment, with its own
  * HardwareSimulator, whose program is the client's commands. Each step it sends what the client
  * asked since the last one ({@link PendingCommands}), yields, and answers with a status packet (and
- * the laser's packets, and SIMSTAT when asked). While a client is attached, each step waits until
+ * the gripper's and the laser's packets, and SIMSTAT, when asked). While a client is attached, each step waits until
  * its time has come in real time, since ARIA keeps wall-clock time; with none attached the robot
  * stands still and does not hold the run back. It stays in the run between clients; each new
  * client finds the odometry at (0, 0, 0), as on a Pioneer that was just switched on.
@@ -250,6 +251,7 @@ final class BridgeRobot extends AbstractRobot {
         PioneerSession session = a.session();
         session.send(a.sips().build(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()), a.handler().sonarOn()).toPacket());
         lastReportNanos = System.nanoTime();
+        sendGripper(a, s);
         for (LaserPacket p : a.laser().packets(s.get(LaserReading.PART).ranges())) {
             session.send(p.toPacket());
         }
@@ -288,10 +290,19 @@ final class BridgeRobot extends AbstractRobot {
         }
         a.session().send(a.sips().standing(s, a.frame(), Boolean.TRUE.equals(s.motorsEnabled()),
                 a.handler().sonarOn()).toPacket());
+        sendGripper(a, s);
         for (LaserPacket p : a.laser().packets(s.get(LaserReading.PART).ranges())) {
             a.session().send(p.toPacket());
         }
         return true;
+    }
+
+    /** The gripper packet the client asked for, after the status packet of the same state. */
+    private static void sendGripper(Attached a, RobotState s) {
+        GripperPacket g = a.handler().gripperReports().next(s);
+        if (g != null) {
+            a.session().send(g.toPacket());
+        }
     }
 
     /** @return ms between status packets: the world's step length, as the welcome gives it (the world file's before) */
@@ -316,7 +327,7 @@ final class BridgeRobot extends AbstractRobot {
         LaserScan laser = new LaserScan();
         CommandHandler handler = new CommandHandler(served.name(), served.parameters(), served.factors(), laser, frame,
                 new SessionEffects(session, simExit, frame));
-        Attached a = new Attached(session, handler, new SipBuilder(served.factors()), laser, frame);
+        Attached a = new Attached(session, handler, new SipBuilder(served.factors(), served.parameters().hasGripper()), laser, frame);
         String refusal = null;
         synchronized (lock) {
             if (done) {

@@ -22,11 +22,15 @@ import robosim.protocol.RobotParameters;
  */
 final class CommandHandler {
     /** Commands a Pioneer takes that RoboSim does not simulate, ignored after one log line. */
-    private static final Set<Integer> NOT_SIMULATED = Set.of(Commands.POLLING, Commands.ENCODER, Commands.GRIPPER,
+    private static final Set<Integer> NOT_SIMULATED = Set.of(Commands.POLLING, Commands.ENCODER,
             Commands.IOREQUEST, Commands.LATVEL, Commands.SIM_CTRL, 26, 30, 31, 58, 92, 113);
     /** The firmware version the CONFIG reply names. */
     static final String FIRMWARE = "RoboSim";
-    /** The laser commands of the older simulator, which ARIA's simulated laser still sends. */
+    /**
+     * The laser commands of the older simulator (SRISim), which ARIA's simulated laser still sends
+     * (ArSimulatedLaser.cpp, {@code internalConnect}: 36, 37, 38, then 35 2). 36 and 37 are also
+     * ARIA's GRIPPERVAL and GRIPPERPACREQUEST; see {@link #dispatch} for how the two are told apart.
+     */
     static final int OLD_LRF_ENABLE = 35;
     static final int OLD_LRF_START = 36;
     static final int OLD_LRF_END = 37;
@@ -71,8 +75,11 @@ final class CommandHandler {
     private final Effects effects;
     private final LaserScan laser;
     private final OdometryFrame frame;
+    private final GripperReports gripperReports;
     private final Set<Integer> loggedOnce = new HashSet<>();
     private volatile boolean sonarOn = true;
+    /** GRIP_PRESSURE or LIFT_CARRY, waiting for its GRIPPERVAL; 0 for none. */
+    private int gripperOpWaiting;
     private int transVelMax;
     private int rotVelMax;
     private int transAccel;
@@ -96,6 +103,7 @@ final class CommandHandler {
         this.factors = factors;
         this.laser = laser;
         this.effects = effects;
+        this.gripperReports = new GripperReports(params.hasGripper());
         transVelMax = (int) Math.round(params.maxVelocity());
         rotVelMax = (int) Math.round(params.maxRVelocity());
         transAccel = (int) Math.round(params.transAccel());
@@ -119,8 +127,13 @@ final class CommandHandler {
                 (int) Math.round(params.maxRVelocity()), (int) Math.round(params.maxVelocity()),
                 (int) Math.round(Math.max(params.rotAccel(), params.rotDecel())),
                 (int) Math.round(Math.max(params.transAccel(), params.transDecel())),
-                name, Math.min(sipCycleMs, 255), false, sonars > 0, sonars > 8, watchdogMs, rotVelMax, transVelMax,
+                name, Math.min(sipCycleMs, 255), params.hasGripper(), sonars > 0, sonars > 8, watchdogMs, rotVelMax, transVelMax,
                 rotAccel, rotDecel, transAccel, transDecel, 0, 0, FIRMWARE);
+    }
+
+    /** @return the gripper packets the client asked for */
+    GripperReports gripperReports() {
+        return gripperReports;
     }
 
     /** @return whether the sonar is on */
@@ -142,6 +155,15 @@ final class CommandHandler {
         }
     }
 
+    /**
+     * Carries out one command. 36 and 37 mean two things, as on MobileSim's successor, which takes
+     * them as the older simulator's laser commands unless told not to (and simulates no gripper).
+     * RoboSim tells them apart by what ARIA sends: 36 is GRIPPERVAL when it follows a GRIPPER
+     * GRIP_PRESSURE or LIFT_CARRY (ArGripper.cpp, {@code gripPressure} and {@code liftCarry}, send
+     * the two back to back), the laser's first angle otherwise; 37 is GRIPPERPACREQUEST with the
+     * arguments it takes (0, 1, 2), the laser's last angle with any other (ARIA's simulated laser
+     * sends the end of its field of view, 90 for a SICK LMS200).
+     */
     private void dispatch(PioneerPacket p, PacketData d) {
         int id = p.id();
         switch (id) {
@@ -197,8 +219,25 @@ final class CommandHandler {
                 laser.enable(d.intArgument("mode"));
                 effects.request(laser.command(params.laserMaxRange()));
             }
-            case Commands.SIM_LRF_SET_FOV_START, OLD_LRF_START -> laserSetting(id, laser.setStart(d.intArgument("degrees")));
-            case Commands.SIM_LRF_SET_FOV_END, OLD_LRF_END -> laserSetting(id, laser.setEnd(d.intArgument("degrees")));
+            case Commands.GRIPPER -> gripper(d.intArgument("gripper code"));
+            case OLD_LRF_START -> {
+                int v = d.intArgument("argument");
+                if (gripperOpWaiting != 0) {
+                    gripperValue(v);
+                } else {
+                    laserSetting(id, laser.setStart(v));
+                }
+            }
+            case OLD_LRF_END -> {
+                int v = d.intArgument("argument");
+                if (v >= 0 && v <= 2) {
+                    gripperReports.request(v);
+                } else {
+                    laserSetting(id, laser.setEnd(v));
+                }
+            }
+            case Commands.SIM_LRF_SET_FOV_START -> laserSetting(id, laser.setStart(d.intArgument("degrees")));
+            case Commands.SIM_LRF_SET_FOV_END -> laserSetting(id, laser.setEnd(d.intArgument("degrees")));
             case Commands.SIM_LRF_SET_RES, OLD_LRF_INCREMENT ->
                     laserSetting(id, laser.setResolution(d.intArgument("hundredths of a degree") / 100.0));
             case Commands.SIM_STAT -> effects.simStat(d.remaining() > 0 ? d.intArgument("mode") : 1);
@@ -206,6 +245,38 @@ final class CommandHandler {
             default -> once(id, "robot " + robot + ": " + (NOT_SIMULATED.contains(id)
                     ? "command " + id + " (" + Commands.name(id) + ") is not simulated; ignored"
                     : "unknown command " + id + "; ignored") + " (said once)");
+        }
+    }
+
+    /** GRIPPER: the robot's gripper operation, or the first half of one that takes a GRIPPERVAL. */
+    private void gripper(int op) {
+        gripperOpWaiting = 0;
+        if (!params.hasGripper()) {
+            once(Commands.GRIPPER, "robot " + robot + " has no gripper (its parameter file says no HasGripper);"
+                    + " GRIPPER ignored (said once)");
+            return;
+        }
+        if (op == Command.Gripper.GRIP_PRESSURE || op == Command.Gripper.LIFT_CARRY) {
+            gripperOpWaiting = op;
+            return;
+        }
+        try {
+            effects.request(new Command.Gripper(op));
+        } catch (IllegalArgumentException e) {
+            effects.log("notes on robot " + robot + "'s commands", () -> "robot " + robot + ": GRIPPER ignored: "
+                    + e.getMessage());
+        }
+    }
+
+    /** GRIPPERVAL: the argument of the GRIP_PRESSURE or LIFT_CARRY before it. */
+    private void gripperValue(int value) {
+        int op = gripperOpWaiting;
+        gripperOpWaiting = 0;
+        try {
+            effects.request(new Command.Gripper(op, value));
+        } catch (IllegalArgumentException e) {
+            effects.log("notes on robot " + robot + "'s commands", () -> "robot " + robot + ": GRIPPERVAL ignored: "
+                    + e.getMessage());
         }
     }
 

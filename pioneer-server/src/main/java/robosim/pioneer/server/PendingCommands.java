@@ -12,7 +12,8 @@ import robosim.protocol.Command;
  * setpoint of each kind between two of its cycles. So a client that streams commands while the run
  * waits for its other robots (or is paused) leaves a handful, not a pile, and they take effect at
  * the robot's next step in the order the client meant them: ENABLE 1 then VEL 200 moves the robot,
- * VEL 200 then STOP stops it. Each drive limit ({@link Command.SetDriveLimit}) is a kind of its own.
+ * VEL 200 then STOP stops it. Each drive limit ({@link Command.SetDriveLimit}) is a kind of its own, and so is each gripper
+ * operation ({@link Command.Gripper}'s code).
  * Safe to use from the client's thread and the robot's.
  */
 final class PendingCommands {
@@ -47,6 +48,9 @@ final class PendingCommands {
     }
 
     private static Object kind(Command c) {
+        if (c instanceof Command.Gripper g) {
+            return "gripper " + g.op(); // the paddles and the lift are commanded apart: LIFT_UP does not undo GRIP_OPEN
+        }
         return c instanceof Command.SetDriveLimit d ? d.limit() : c.getClass();
     }
 }
