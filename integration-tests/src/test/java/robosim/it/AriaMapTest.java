@@ -34,14 +34,15 @@ class AriaMapTest {
     /**
      * An 8 m by 6 m room. A forbidden line across the middle (x = 4000, y 1500 to 4500) stands
      * between the home and the goal; a forbidden area covers the way round its north end, so the
-     * route goes round its south end, 600 mm past it, at (4000, 900). AriaCoda's ArMap reads it
-     * the same (it refuses {@code NumPoints: 0}, so the map has no point header).
+     * route goes round its south end; a wall (x = 5500, y 0 to 4000) then stands between it and
+     * the goal, so the route goes north again, round the wall's end. AriaCoda's ArMap reads it the
+     * same (it refuses {@code NumPoints: 0}, so the map has no point header).
      */
     static final String ROOM = """
             2D-Map
             LineMinPos: 0 0
             LineMaxPos: 8000 6000
-            NumLines: 4
+            NumLines: 5
             Resolution: 20
             Cairn: RobotHome 1000 3000 0 "" ICON "start"
             Cairn: Goal 7000 3000 0.000000 "" ICON "east"
@@ -54,6 +55,7 @@ class AriaMapTest {
             8000 0 8000 6000
             8000 6000 0 6000
             0 6000 0 0
+            5500 0 5500 4000
             DATA
             """;
 
@@ -70,38 +72,70 @@ class AriaMapTest {
             RunReport report = run.await();
             String out = ran.out();
             assertEquals(0, ran.exit(), out);
-            assertTrue(out.contains("mapGoals: Map " + map + ": 4 lines, 0 points, 6 objects.\n"), out);
+            assertTrue(out.contains("mapGoals: Map " + map + ": 5 lines, 0 points, 6 objects.\n"), out);
             assertTrue(out.contains("mapGoals: Cairn: Goal 7000 3000 0.000000 \"\" ICON \"east\"\n"), out);
             assertTrue(out.contains("mapGoals: Cairn: GoalWithHeading 1000 1000 90.000000 \"a goal with a heading\""
                     + " ICON \"corner\"\n"), out);
             assertTrue(out.contains("mapGoals: Cairn: ForbiddenLine 0 0 0.000000 \"\" ICON \"fence\" 4000 1500 4000"
                     + " 4500\n"), out);
-            assertTrue(out.contains("mapGoals: Going to goal 'east' at 7000 3000 through 1 waypoints.\n"
-                    + "mapGoals: Going to 4000 900\n"), out);
+            // south round the fence's end, north along the wall, round its end, and on to the goal
+            assertTrue(out.contains("mapGoals: Going to goal 'east' at 7000 3000 through 8 waypoints.\n"
+                    + "mapGoals: Going to 3750 1050\nmapGoals: Going to 4250 950\nmapGoals: Going to 4950 1750\n"
+                    + "mapGoals: Going to 4950 4050\n"), out);
             assertTrue(out.contains("mapGoals: Going to 7000 3000\n"), out);
 
-            assertTrue(out.contains("mapGoals: Reached goal 'east': robot at 6990 2992.\n"), out);
 
             // lockstep: the same run each time, 21.5 s of simulated time, about 7.4 m driven
             RobotSummary robot = report.robots().get(0);
-            assertEquals(6989.5, robot.x(), 1, "x: " + robot);
-            assertEquals(2992.3, robot.y(), 1, "y: " + robot);
-            assertEquals(7360, robot.distance(), 5, "distance: " + robot);
             assertEquals(0, robot.collisions(), "collisions: " + robot);
-            assertTrue(report.steps() >= 205 && report.steps() <= 225, "steps: " + report.steps());
+            // lockstep: the same run each time, 39.4 s of simulated time, about 10.4 m driven
+            assertEquals(6990.3, robot.x(), 1, "x: " + robot);
+            assertEquals(3013.3, robot.y(), 1, "y: " + robot);
+            assertEquals(10441, robot.distance(), 5, "distance: " + robot);
+            assertEquals(394, report.steps(), 3, "steps: " + report.steps());
 
             List<ArPose> path = truePath(run);
             assertTrue(path.size() > 50, "steps seen: " + path.size());
             ArLineSegment fence = new ArLineSegment(4000, 1500, 4000, 4500);
+            ArLineSegment wall = new ArLineSegment(5500, 0, 5500, 4000);
             double closest = Double.MAX_VALUE;
+            double closestToWall = Double.MAX_VALUE;
             for (int i = 1; i < path.size(); i++) {
                 ArLineSegment step = new ArLineSegment(path.get(i - 1), path.get(i));
                 assertTrue(!step.intersects(fence), "the robot crossed the forbidden line at step " + i);
+                assertTrue(!step.intersects(wall), "the robot went through the wall at step " + i);
                 closest = Math.min(closest, path.get(i).findDistanceTo(new ArPose(4000, 1500)));
+                double perp = wall.getPerpSquaredDist(path.get(i));
+                closestToWall = Math.min(closestToWall, perp >= 0 ? Math.sqrt(perp)
+                        : Math.min(wall.getEndPoint1().findDistanceTo(path.get(i)),
+                        wall.getEndPoint2().findDistanceTo(path.get(i))));
                 assertTrue(path.get(i).getY() < 4800, "the robot went into the forbidden area: " + path.get(i));
             }
+            assertTrue(closestToWall > 450, "the robot passed " + closestToWall + " mm from the wall");
             // 600 mm planned; ArActionGoto cuts the corner as it turns for the next waypoint: 489 mm
             assertTrue(closest > 450, "the robot passed " + closest + " mm from the forbidden line's end");
+        }
+    }
+
+    @Test
+    void mapGoalsDrivesThroughTheShippedOfficesDoorToItsDesk() throws Exception {
+        Path office = LocalEnvironment.root().resolve("testLoadFiles/environment/office.map");
+        try (ThreadedRun run = new ThreadedRun(office, 1, 2000)) {
+            Future<Ran> r = run.robot(() -> AriaExamplesTest.run(MapGoals::main, "-map", office.toString(), "-goal",
+                    "desk", "p3dx_1", "127.0.0.1", String.valueOf(run.port())));
+            Ran ran = r.get(150, TimeUnit.SECONDS);
+            RunReport report = run.await();
+            String out = ran.out();
+            assertEquals(0, ran.exit(), out);
+            // from the home in the west room, through the door in the wall at x = 6000 (y 5400 to
+            // 6600), past the desk's points, to the goal
+            assertTrue(out.contains("mapGoals: Map " + office + ": 8 lines, 164 points, 4 objects.\n"), out);
+            assertTrue(out.contains("mapGoals: Going to 6050 6050\n"), out);
+            assertTrue(out.contains("mapGoals: Reached goal 'desk'"), out);
+            RobotSummary robot = report.robots().get(0);
+            assertEquals(0, robot.collisions(), "collisions: " + robot);
+            assertEquals(9500, robot.x(), 100, "x: " + robot);
+            assertEquals(5500, robot.y(), 100, "y: " + robot);
         }
     }
 
@@ -110,18 +144,19 @@ class AriaMapTest {
         Path map = Files.writeString(dir.resolve("room.map"), ROOM);
         try (PioneerRun run = new PioneerRun(WorldReader.read(map), false, code -> { })) {
             Ran ran = Background.supply("mapGoals", () -> AriaExamplesTest.run(MapGoals::main, "-map", map.toString(),
-                    "-remoteHost", "127.0.0.1", "-rrtp", String.valueOf(run.ports.portOf("p3dx_1"))))
+                    "-goal", "corner", "-remoteHost", "127.0.0.1", "-rrtp", String.valueOf(run.ports.portOf("p3dx_1"))))
                     .get(120, TimeUnit.SECONDS);
             String out = ran.out();
             assertEquals(0, ran.exit(), out);
             assertTrue(out.contains("mapGoals: Odometry starts at (0, 0, 0): taking the robot to be at home 'start'.\n"
-                    + "mapGoals: Going to goal 'east' at 7000 3000 through 1 waypoints.\nmapGoals: Going to 4000 900\n"),
+                    + "mapGoals: Going to goal 'corner' at 1000 1000 through 0 waypoints.\nmapGoals: Going to 1000 1000\n"),
                     out);
-            Matcher at = Pattern.compile("mapGoals: Reached goal 'east': robot at (-?\\d+) (-?\\d+)\\.").matcher(out);
+            Matcher at = Pattern.compile("mapGoals: Reached goal 'corner': robot at (-?\\d+) (-?\\d+)\\.").matcher(out);
             assertTrue(at.find(), out);
-            // the Pioneer port runs in real time, so not to the millimetre of the lockstep run
-            assertEquals(7000, Integer.parseInt(at.group(1)), 100, out);
-            assertEquals(3000, Integer.parseInt(at.group(2)), 100, out);
+            // the Pioneer port runs in real time, so not to the millimetre of a lockstep run; the
+            // goal, the map's GoalWithHeading, is found as a Goal, as ARIA's findMapObject does
+            assertEquals(1000, Integer.parseInt(at.group(1)), 100, out);
+            assertEquals(1000, Integer.parseInt(at.group(2)), 100, out);
         }
     }
 

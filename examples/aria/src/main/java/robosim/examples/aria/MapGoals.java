@@ -18,8 +18,8 @@ import robosim.aria.Aria;
  * for it; this one follows {@code gotoActionExample.cpp}'s shape): it reads the map given with
  * {@code -map FILE} through {@link ArMap}, lists its goals, docks, homes and forbidden lines and
  * areas, and drives to one goal ({@code -goal NAME}, else the map's first) with
- * {@link ArActionGoto}, through waypoints that keep {@value #CLEARANCE} mm clear of the forbidden
- * lines and areas ({@link MapRoute}).
+ * {@link ArActionGoto}, through waypoints that keep {@value #CLEARANCE} mm clear of its walls and
+ * points and of its forbidden lines and areas where the way allows ({@link MapRoute}).
  *
  * <p>Against a RoboSim Environment running the same map ({@code robosim env MAP.map}) the robot's
  * odometry is the map's frame, as it starts at the map's {@code RobotHome}; a robot whose odometry
@@ -27,8 +27,11 @@ import robosim.aria.Aria;
  * {@code RobotHome}, as a program without localization must assume ({@code ArRobot.moveTo}).
  */
 public final class MapGoals {
-    /** How far a detour keeps from a forbidden line's end, mm: a Pioneer's radius and as much again. */
-    static final double CLEARANCE = 600;
+    /**
+     * How far the route keeps the robot's centre from the map's walls, points and forbidden lines
+     * and areas where it can, mm: a Pioneer's radius and as much again.
+     */
+    static final double CLEARANCE = 500;
     /** How long the robot may take to reach the goal, ms, before the program gives up. */
     static final long TIMEOUT = 120_000;
 
@@ -93,7 +96,7 @@ public final class MapGoals {
         MapRoute planner = new MapRoute(map, CLEARANCE);
         List<ArPose> route = planner.plan(start, goal.getPose());
         if (route == null) {
-            ArLog.log(ArLog.Terse, "mapGoals: No route to goal '%s' keeps off the %d forbidden segments.",
+            ArLog.log(ArLog.Terse, "mapGoals: No route to goal '%s' keeps off the map's walls and its %d forbidden segments.",
                     goal.getName(), planner.forbidden().size());
             Aria.exit(4);
         }
