@@ -4,24 +4,16 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.logging.Logger;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Supplier;
-import robosim.hw.AbstractRobot;
-import robosim.hw.HardwareOptions;
-import robosim.hw.RobotRuntime;
-import robosim.hw.RunEnd;
-import robosim.hw.RuntimeChoices;
+import robosim.hw.RobotSensorResponse;
 import robosim.params.BumperParameters;
 import robosim.params.ConversionFactors;
 import robosim.params.RobotParameterFiles;
-import robosim.hw.RobotSensorResponse;
 import robosim.protocol.BatteryReading;
 import robosim.protocol.Command;
-import robosim.protocol.RobotKind;
-import robosim.protocol.RobotState;
 import robosim.protocol.RobotParameters;
+import robosim.protocol.RobotState;
 import robosim.protocol.SonarReading;
 
 /**
@@ -39,7 +31,7 @@ import robosim.protocol.SonarReading;
  * robot.disconnect();
  * }</pre>
  */
-public class ArRobot extends AbstractRobot {
+public class ArRobot extends ArRobotConnection {
     /** ARIA's default for {@link #isMoveDone(double)}, mm. */
     public static final double DEFAULT_MOVE_DONE = 40;
     /** ARIA's default for {@link #isHeadingDone(double)}, degrees. */
@@ -56,14 +48,10 @@ public class ArRobot extends AbstractRobot {
     private final RangeDevices rangeDevices = new RangeDevices();
     private volatile ArKeyHandler keyHandler;
     private volatile boolean keyHandlerUseExitNotShutdown = true;
-    private volatile ArDeviceConnection deviceConnection;
-    /** Runtimes made for Pioneer robot servers, for their names. */
-    private static final AtomicInteger PIONEER_RUNTIMES = new AtomicInteger();
     private final java.util.concurrent.ConcurrentSkipListMap<Integer, ArLaser> lasers =
             new java.util.concurrent.ConcurrentSkipListMap<>();
     private volatile long counter;
     private volatile boolean sonarEnabled = true;
-    private volatile boolean runningAsync;
     private volatile ArPose moveStart;
     private volatile double moveDistance;
     private volatile Double headingTarget;
@@ -86,8 +74,6 @@ public class ArRobot extends AbstractRobot {
     private volatile int odometryDelayMs;
     /** The absolute maxima, the negative velocity limit and the lateral limits. */
     private final Maxima maxima = new Maxima();
-    /** The connection's callbacks, times and waits. */
-    private final ConnectionEvents events = new ConnectionEvents();
     /** The robot's cycle's extras: warning time, counts of states per simulated second. */
     private final CycleStats cycleStats = new CycleStats();
     /** The robot's charge and IO, as far as a program sets them. */
@@ -100,15 +86,8 @@ public class ArRobot extends AbstractRobot {
     private volatile boolean forcedTryingToMove;
     private volatile WheelEncoders wheelEncoders = new WheelEncoders(1);
     private volatile ArPTZ ptz;
-    private static final Logger LOG = Logger.getLogger(ArRobot.class.getName());
     private volatile BumperParameters bumpers = BumperParameters.ARIA_DEFAULTS;
     private volatile boolean cycleStopped;
-    private volatile int sonarCycleMs;
-    /** Whether an ARIA connector connects the robot, which then logs ARIA's connection lines. */
-    private volatile boolean ariaConnectionLines;
-
-    /** Robots made without a name, for ARIA's default names: robot, robot2, robot3, ... */
-    private static final AtomicInteger UNNAMED = new AtomicInteger();
 
     /**
      * A robot as ARIA's {@code ArRobot robot;} makes one, named {@code robot} (the second such robot
@@ -128,11 +107,6 @@ public class ArRobot extends AbstractRobot {
      */
     public ArRobot(String name) {
         this(name, ArRobotConnector.DEFAULT_HOST, ArRobotConnector.DEFAULT_PORT, "p3dx");
-    }
-
-    private static String defaultName() {
-        int n = UNNAMED.incrementAndGet();
-        return n == 1 ? "robot" : "robot" + n;
     }
 
     /**
@@ -156,7 +130,7 @@ public class ArRobot extends AbstractRobot {
      *                   these are read from a parameter file's bumper keys
      */
     public ArRobot(String name, String host, int port, RobotParameters parameters) {
-        super(name, host, port, RobotKind.PIONEER.id(), parameters);
+        super(name, host, port, parameters);
         useParameters(parameters);
     }
 
@@ -179,396 +153,11 @@ public class ArRobot extends AbstractRobot {
         maxima.reset(parameters);
     }
 
-
-    /**
-     * Connects to the Environment, waiting (bounded) for its welcome, then for the stabilizing time
-     * ({@link #setStabilizingTime}), as ARIA's {@code ArRobot::blockingConnect} (ArRobot.cpp) does. On success the
-     * stabilizing callbacks run, then the connect callbacks ({@link #addConnectCB}); on failure the
-     * failed-connect callbacks ({@link #addFailedConnectCB}).
-     *
-     * @return true if connected; otherwise {@link #getConnectionError()} says why
-     */
-    public boolean blockingConnect() {
-        ArDeviceConnection through = deviceConnection;
-        if (through != null && !isConnected()) {
-            // an ARIA program's own connection: ARIA's lines, as through a connector
-            logConnectionAsAria();
-            usePioneerServer(getName(), through.host(), through.port());
-        }
-        if (!tryConnect(HardwareOptions.defaults())) {
-            failedConnect();
-            return false;
-        }
-        while (events.isStabilizing && super.isConnected()) {
-            sleepSimulated(getStepMs());
-        }
-        if (!isConnected()) {
-            events.isStabilizing = false;
-            failedConnect();
-            return false;
-        }
-        return true;
-    }
-
-    /**
-     * ARIA's {@code blockingConnect(tryHarderToConnect)}: as {@link #blockingConnect()}. Trying
-     * harder (closing a connection a crashed program left open) has no meaning for the Environment.
-     *
-     * @param tryHarderToConnect ARIA's flag; ignored
-     * @return whether the robot connected
-     */
-    public boolean blockingConnect(boolean tryHarderToConnect) {
-        return blockingConnect();
-    }
-
-    /**
-     * Gives the robot the connection it connects through, as an ARIA program that opens its own
-     * does: {@link #blockingConnect()} then drives the Pioneer robot server at its address.
-     *
-     * @param connection the connection, or null to connect to the robot's Environment as made
-     */
-    public void setDeviceConnection(ArDeviceConnection connection) {
-        deviceConnection = connection;
-    }
-
-    /** @return the connection given, or null */
-    public ArDeviceConnection getDeviceConnection() {
-        return deviceConnection;
-    }
-
-    /** Sends the robot to the Pioneer robot server at an address when it connects: a runtime of its own names it. */
-    void usePioneerServer(String name, String host, int port) {
-        setRuntime(RobotRuntime.create("pioneer-" + PIONEER_RUNTIMES.incrementAndGet(),
-                RuntimeChoices.fromSystemProperties().withPioneer(host + ":" + port)));
-        relocate(name, host, port, getParameters());
-    }
-
-    /**
-     * The original RoboSim's name for {@link #blockingConnect()}.
-     *
-     * @return whether the robot connected
-     */
-    public boolean blocking_connect() {
-        return blockingConnect();
-    }
-
-    /**
-     * ARIA's {@code ArRobot::asyncConnect} (ArRobot.cpp): refused (false) unless the robot's cycle was started with
-     * {@link #runAsync()} and the robot is not connected, as in ARIA. The connection itself is made
-     * in the calling thread, which becomes part of the robot's code as the lockstep requires, so this
-     * returns once it has succeeded or failed; as in ARIA, the callbacks and
-     * {@link #waitForConnectOrConnFail} tell which.
-     *
-     * @return whether the connection was attempted
-     */
-    public boolean asyncConnect() {
-        if (!runningAsync || isConnected()) {
-            return false;
-        }
-        blockingConnect();
-        return true;
-    }
-
-    /**
-     * The connection failed: ARIA's {@code ArRobot::failedConnect} (ArRobot.cpp; its log line, the
-     * callbacks, the waiters).
-     */
-    private void failedConnect() {
-        LOG.warning(() -> "robot " + getName() + ": Failed to connect to robot.");
-        events.failedConnect.invoke(getName());
-        events.failed();
-    }
-
-    /**
-     * Whether the robot is connected: as ARIA's, only once the connection has finished (the
-     * Environment welcomed the robot and it has stabilized, {@link #isStabilizing()}), and until it
-     * ends.
-     */
-    @Override
-    public boolean isConnected() {
-        return super.isConnected() && events.isLive();
-    }
-
-    /**
-     * Leaves the run, as ARIA's {@code ArRobot::disconnect} (ArRobot.cpp): if the robot was connected, the
-     * disconnect-normally callbacks run first ({@link #addDisconnectNormallyCB}), then the run-exit
-     * ones if the cycle was running ({@link #addRunExitCB}).
-     *
-     * @return true, as ARIA's answers when there is no connection to close or it closed
-     */
-    @Override
-    public boolean disconnect() {
-        if (events.claimEnd()) {
-            if (ariaConnectionLines) {
-                ArLog.log(ArLog.Terse, "Disconnecting from robot.");
-            } else {
-                LOG.info(() -> "robot " + getName() + ": Disconnecting from robot.");
-            }
-            events.disconnectNormally.invoke(getName());
-            super.disconnect();
-            loopExited();
-        } else {
-            events.isStabilizing = false;
-            super.disconnect();
-        }
-        return true;
-    }
-
-    /**
-     * ARIA's {@code ArRobot::dropConnection} (ArRobot.cpp): leaves the run as a lost connection does, with the
-     * disconnect-on-error callbacks ({@link #addDisconnectOnErrorCB}) instead of the normal ones;
-     * nothing when the robot is not connected.
-     *
-     * @param technicalReason why, for the log and {@link #getDropConnectionReason()}; null for ARIA's default
-     * @param userReason      why, for a user ({@link #getDropConnectionUserReason()}); null for the technical one
-     */
-    public void dropConnection(String technicalReason, String userReason) {
-        if (!isConnected() || !events.claimEnd()) {
-            return;
-        }
-        events.dropReason = technicalReason != null ? technicalReason
-                : "Lost connection to the microcontroller because of unknown error.";
-        events.dropUserReason = userReason != null ? userReason : events.dropReason;
-        LOG.warning(() -> "robot " + getName() + ": " + events.dropReason);
-        events.disconnectOnError.invoke(getName());
-        super.disconnect();
-        loopExited();
-    }
-
-    /** As {@link #dropConnection(String, String)} with ARIA's default reason. */
-    public void dropConnection() {
-        dropConnection(null, null);
-    }
-
-    /** @return why the connection was dropped (ARIA's technical reason); empty if it was not */
-    public String getDropConnectionReason() {
-        return events.dropReason;
-    }
-
-    /** @return why the connection was dropped, for a user; empty if it was not */
-    public String getDropConnectionUserReason() {
-        return events.dropUserReason;
-    }
-
-    /**
-     * Tells the end of the run once, when the program sees it (after a yield): the
-     * disconnect-on-error callbacks if the robot was dropped or lost ({@link RunEnd.Kind#isFailure()}),
-     * with its description as the drop reason, else the disconnect-normally ones; then the run-exit ones.
-     */
-    private void noticeEnd() {
-        if (super.isConnected() || !events.claimEnd()) {
-            return;
-        }
-        RunEnd end = getRunEnd();
-        if (end != null && end.kind().isFailure()) {
-            events.dropReason = end.describe();
-            events.dropUserReason = end.reason();
-            // the program's launcher, or its RunEnd, says so to the user: logged here only for detail
-            LOG.fine(() -> "robot " + getName() + ": " + events.dropReason);
-            events.disconnectOnError.invoke(getName());
-        } else {
-            events.disconnectNormally.invoke(getName());
-        }
-        loopExited();
-    }
-
-    /** The cycle stopped: the run-exit callbacks, once, if it was running (ARIA's sync loop's exit). */
-    private void loopExited() {
-        boolean was = runningAsync;
-        runningAsync = false;
-        if (was) {
-            events.runExit.invoke(getName());
-        }
-        events.runExited();
-    }
-
-    /**
-     * ARIA's connection steps, run when the Environment has welcomed the robot: the opened time,
-     * then stabilizing ({@link #addStabilizingCB}), finished at once when the stabilizing time is 0
-     * (ARIA's default), else by the cycle once it has passed; and the sonar cycle the parameter file
-     * gives ({@link #getSonarCycle()}).
-     */
-    @Override
-    protected void welcomed(RobotState initial) {
-        if (ariaConnectionLines) {
-            logConnected();
-        }
-        events.openedMs = initial.timeMs();
-        if (sonarCycleMs > 0) {
-            request(new Command.SetSonarCycle(sonarCycleMs));
-        }
-        if (runningAsync && super.isConnected()) {
-            keepAlive(true);
-        }
-        events.isStabilizing = true;
-        events.stabilizingStartMs = initial.timeMs();
-        events.stabilizing.invoke(getName());
-        if (events.stabilizingTimeMs == 0) {
-            finishedConnection();
-        }
-    }
-
-    /** An ARIA connector connects the robot: it logs ARIA's lines as it connects and disconnects. */
-    void logConnectionAsAria() {
-        ariaConnectionLines = true;
-    }
-
-    /**
-     * ARIA's lines once the robot's server has answered ({@code ArRobot::asyncConnectHandler} and
-     * {@code processParamFile}, ArRobot.cpp): who the robot is, from its parameters.
-     */
-    private void logConnected() {
-        ArLog.log(ArLog.Terse, "Connected to robot.");
-        ArLog.log(ArLog.Normal, "Name: %s", getRobotName());
-        ArLog.log(ArLog.Normal, "Type: %s", getRobotType());
-        ArLog.log(ArLog.Normal, "Subtype: %s", getRobotSubType());
-        ArLog.log(ArLog.Normal, "Robot Serial Number: %s", getRobotSerialNumber());
-    }
-
-    /**
-     * ARIA's {@code ArRobot::finishedConnection} (ArRobot.cpp): connected; the trip odometer restarts;
-     * the connect callbacks; the waiters.
-     */
-    private void finishedConnection() {
-        events.isStabilizing = false;
-        resetTripOdometer();
-        events.connected();
-        events.connect.invoke(getName());
-    }
-
     // ---- connection callbacks and waits ----
-
-    /** @param functor run when the robot has connected (after stabilizing), last in the list */
-    public void addConnectCB(Runnable functor) {
-        addConnectCB(functor, ArListPos.LAST);
-    }
-
-    /**
-     * Adds a connect callback, as ARIA's {@code addConnectCB} (ArRobot.cpp).
-     *
-     * @param functor  run in the connecting thread when the robot has connected
-     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}; another is ignored with a log line
-     */
-    public void addConnectCB(Runnable functor, int position) {
-        events.connect.add(functor, position);
-    }
-
-    /** @param functor a connect callback to remove */
-    public void remConnectCB(Runnable functor) {
-        events.connect.remove(functor);
-    }
-
-    /** @param functor run when {@link #blockingConnect()} fails, last in the list */
-    public void addFailedConnectCB(Runnable functor) {
-        addFailedConnectCB(functor, ArListPos.LAST);
-    }
-
-    /** @param functor run when a connection fails @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST} */
-    public void addFailedConnectCB(Runnable functor, int position) {
-        events.failedConnect.add(functor, position);
-    }
-
-    /** @param functor a failed-connect callback to remove */
-    public void remFailedConnectCB(Runnable functor) {
-        events.failedConnect.remove(functor);
-    }
-
-    /** @param functor run when the robot leaves normally, last in the list */
-    public void addDisconnectNormallyCB(Runnable functor) {
-        addDisconnectNormallyCB(functor, ArListPos.LAST);
-    }
-
-    /**
-     * @param functor  run when the robot leaves normally: {@link #disconnect()}, or the Environment
-     *                 ended the run (seen at the program's next yield)
-     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
-     */
-    public void addDisconnectNormallyCB(Runnable functor, int position) {
-        events.disconnectNormally.add(functor, position);
-    }
-
-    /** @param functor a disconnect-normally callback to remove */
-    public void remDisconnectNormallyCB(Runnable functor) {
-        events.disconnectNormally.remove(functor);
-    }
-
-    /** @param functor run when the connection is lost or dropped, last in the list */
-    public void addDisconnectOnErrorCB(Runnable functor) {
-        addDisconnectOnErrorCB(functor, ArListPos.LAST);
-    }
-
-    /**
-     * @param functor  run when the connection is lost, or the Environment drops the robot (seen at
-     *                 the program's next yield), or {@link #dropConnection} is called
-     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
-     */
-    public void addDisconnectOnErrorCB(Runnable functor, int position) {
-        events.disconnectOnError.add(functor, position);
-    }
-
-    /** @param functor a disconnect-on-error callback to remove */
-    public void remDisconnectOnErrorCB(Runnable functor) {
-        events.disconnectOnError.remove(functor);
-    }
-
-    /** @param functor run when the robot's cycle stops, last in the list */
-    public void addRunExitCB(Runnable functor) {
-        addRunExitCB(functor, ArListPos.LAST);
-    }
-
-    /**
-     * @param functor  run once when a cycle started by {@link #run()} or {@link #runAsync()} stops:
-     *                 {@link #stopRunning}, or the robot leaves the run
-     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
-     */
-    public void addRunExitCB(Runnable functor, int position) {
-        events.runExit.add(functor, position);
-    }
-
-    /** @param functor a run-exit callback to remove */
-    public void remRunExitCB(Runnable functor) {
-        events.runExit.remove(functor);
-    }
 
     /** @return the run-exit callbacks, in order (a copy) */
     public List<Runnable> getRunExitListCopy() {
         return events.runExit.copy();
-    }
-
-    /** @param functor run when the robot starts stabilizing after the Environment's welcome, last in the list */
-    public void addStabilizingCB(Runnable functor) {
-        addStabilizingCB(functor, ArListPos.LAST);
-    }
-
-    /**
-     * @param functor run when the robot starts stabilizing
-     * @param position {@link ArListPos#FIRST} or {@link ArListPos#LAST}
-     */
-    public void addStabilizingCB(Runnable functor, int position) {
-        events.stabilizing.add(functor, position);
-    }
-
-    /** @param functor a stabilizing callback to remove */
-    public void remStabilizingCB(Runnable functor) {
-        events.stabilizing.remove(functor);
-    }
-
-    /** @return whether the robot is stabilizing: welcomed, but its stabilizing time has not passed */
-    public boolean isStabilizing() {
-        return events.isStabilizing;
-    }
-
-    /**
-     * @param mSecs how long after the welcome the robot stabilizes before it counts as connected,
-     *              simulated ms; 0 or less means 0 (ARIA's default), as in ARIA
-     */
-    public void setStabilizingTime(int mSecs) {
-        events.stabilizingTimeMs = Math.max(0, mSecs);
-    }
-
-    /** @return the stabilizing time, ms */
-    public int getStabilizingTime() {
-        return events.stabilizingTimeMs;
     }
 
     /** The states ARIA's waits end in. */
@@ -585,118 +174,6 @@ public class ArRobot extends AbstractRobot {
         WAIT_INTR,
         /** The wait failed. */
         WAIT_FAIL
-    }
-
-    /** @return as {@link #waitForConnect(long)} with no time limit */
-    public WaitState waitForConnect() {
-        return waitForConnect(0);
-    }
-
-    /**
-     * Waits until another thread has connected the robot, as ARIA's {@code ArRobot::waitForConnect}
-     * (ArRobot.cpp); before a connection there is no simulated time, so the wait is in wall-clock time.
-     *
-     * @param msecs at most this many ms; 0 for no limit
-     * @return {@link WaitState#WAIT_CONNECTED} at once if connected, or once connected (or woken by
-     *         {@link #wakeAllConnWaitingThreads()}, as in ARIA); {@link WaitState#WAIT_TIMEDOUT};
-     *         {@link WaitState#WAIT_INTR} if interrupted
-     */
-    public WaitState waitForConnect(long msecs) {
-        if (isConnected()) {
-            return WaitState.WAIT_CONNECTED;
-        }
-        return switch (events.await(ConnectionEvents.Kind.CONN, this::isConnected, msecs)) {
-            case 0 -> WaitState.WAIT_CONNECTED;
-            case 1 -> WaitState.WAIT_TIMEDOUT;
-            default -> WaitState.WAIT_INTR;
-        };
-    }
-
-    /** @return as {@link #waitForConnectOrConnFail(long)} with no time limit */
-    public WaitState waitForConnectOrConnFail() {
-        return waitForConnectOrConnFail(0);
-    }
-
-    /**
-     * As {@link #waitForConnect(long)}, also ending when a connection fails.
-     *
-     * @param msecs at most this many wall-clock ms; 0 for no limit
-     * @return {@link WaitState#WAIT_CONNECTED}, {@link WaitState#WAIT_FAILED_CONN} (failed, or woken
-     *         while not connected), {@link WaitState#WAIT_TIMEDOUT} or {@link WaitState#WAIT_INTR}
-     */
-    public WaitState waitForConnectOrConnFail(long msecs) {
-        if (isConnected()) {
-            return WaitState.WAIT_CONNECTED;
-        }
-        return switch (events.await(ConnectionEvents.Kind.CONN_OR_FAIL, this::isConnected, msecs)) {
-            case 0 -> isConnected() ? WaitState.WAIT_CONNECTED : WaitState.WAIT_FAILED_CONN;
-            case 1 -> WaitState.WAIT_TIMEDOUT;
-            default -> WaitState.WAIT_INTR;
-        };
-    }
-
-    /** Wakes every thread in {@link #waitForConnect}, {@link #waitForConnectOrConnFail} and {@link #waitForRunExit}. */
-    public void wakeAllWaitingThreads() {
-        wakeAllConnWaitingThreads();
-        wakeAllRunExitWaitingThreads();
-    }
-
-    /** Wakes the threads in {@link #waitForConnect} and {@link #waitForConnectOrConnFail}. */
-    public void wakeAllConnWaitingThreads() {
-        events.wakeConn();
-        events.wakeConnOrFail();
-    }
-
-    /** Wakes the threads in {@link #waitForConnectOrConnFail}. */
-    public void wakeAllConnOrFailWaitingThreads() {
-        events.wakeConnOrFail();
-    }
-
-    /** Wakes the threads in {@link #waitForRunExit}. */
-    public void wakeAllRunExitWaitingThreads() {
-        events.wakeRunExit();
-    }
-
-    /** @return the simulated time the Environment welcomed the robot (0 before) */
-    public ArTime getConnectionOpenedTime() {
-        return timeAt(events.openedMs);
-    }
-
-    /** @return the simulated time of the latest state the Environment sent (each step's state is ARIA's packet) */
-    public ArTime getLastPacketTime() {
-        return timeAt(state().timeMs());
-    }
-
-    /** @return the simulated time of the latest odometry: the latest state's, as every state carries the pose */
-    public ArTime getLastOdometryTime() {
-        return timeAt(state().timeMs());
-    }
-
-    /**
-     * ARIA's {@code ArRobot::setConnectionTimeoutTime} (ArRobot.cpp), logged as ARIA logs it; 0 or less
-     * means 0. The value is answered by {@link #getConnectionTimeoutTime()}; the robot itself counts the
-     * Environment lost after the hardware's lost time ({@code robosim.hw.HardwareOptions}, 10 s of
-     * wall-clock silence by default), since simulated time stops when the Environment does.
-     *
-     * @param mSecs the timeout, ms
-     */
-    public void setConnectionTimeoutTime(int mSecs) {
-        LOG.info(() -> "robot " + getName() + ": ArRobot::setConnectionTimeoutTime: Setting timeout to "
-                + mSecs + " mSecs");
-        events.timeoutMs = Math.max(0, mSecs);
-    }
-
-    /** @return the connection timeout set, ms (ARIA's default 8000) */
-    public int getConnectionTimeoutTime() {
-        return events.timeoutMs;
-    }
-
-    /** @return an {@link ArTime} at a simulated time */
-    private static ArTime timeAt(long ms) {
-        ArTime t = new ArTime();
-        t.setSec(ms / 1000);
-        t.setMSec(ms % 1000);
-        return t;
     }
 
     /**
@@ -782,7 +259,7 @@ public class ArRobot extends AbstractRobot {
      * sleeps ({@link ArUtil#sleep}), so a loop that sleeps a step between calls runs a cycle a step.
      */
     public void loopOnce() {
-        if (!runningAsync && super.isConnected()) {
+        if (!runningAsync && linkConnected()) {
             programCycles = true;
         }
         underLock(() -> {
@@ -991,7 +468,7 @@ public class ArRobot extends AbstractRobot {
     public void runAsync() {
         cycleStopped = false;
         runningAsync = true;
-        if (super.isConnected()) {
+        if (linkConnected()) {
             keepAlive(true);
         }
     }
@@ -1043,7 +520,7 @@ public class ArRobot extends AbstractRobot {
     public WaitState waitForRunExit(long msecs) {
         long start = getSimTimeMs();
         long wakes = events.runExitEvents();
-        while (super.isConnected() && !cycleStopped && events.runExitEvents() == wakes) {
+        while (linkConnected() && !cycleStopped && events.runExitEvents() == wakes) {
             if (msecs > 0 && getSimTimeMs() - start >= msecs) {
                 return WaitState.WAIT_TIMEDOUT;
             }
@@ -2342,39 +1819,6 @@ public class ArRobot extends AbstractRobot {
     }
 
     /**
-     * @return the robot's name as the robot reports it (ARIA's {@code ArRobot::getRobotName}
-     *     (ArRobot.h)): its name in the world, or, through a Pioneer robot server, the name the server
-     *     gives it in its handshake
-     */
-    public String getRobotName() {
-        return getServerRobotName();
-    }
-
-    /**
-     * @return the robot's class from its parameters, for example {@code Pioneer} (ARIA's {@code
-     *     ArRobot::getRobotType} (ArRobot.h))
-     */
-    public String getRobotType() {
-        return getParameters().robotClass();
-    }
-
-    /**
-     * @return the robot's subclass from its parameters, for example {@code p3dx} (ARIA's {@code
-     *     ArRobot::getRobotSubType} (ArRobot.h))
-     */
-    public String getRobotSubType() {
-        return getParameters().subclass();
-    }
-
-    /**
-     * @return {@code SIM}: the serial number a simulated robot gives, as MobileSim's and RoboSim's
-     *     Pioneer port's CONFIG packets do (ARIA's {@code ArRobot::getRobotSerialNumber}, ArRobot.h)
-     */
-    public String getRobotSerialNumber() {
-        return "SIM";
-    }
-
-    /**
      * @return the robot's parameters, the values its parameter file gave (ARIA's {@code ArRobotParams}:
      *         size, speeds, accelerations, sonar units, laser mount)
      */
@@ -2390,7 +1834,7 @@ public class ArRobot extends AbstractRobot {
      * @param params the parameters
      */
     public void setRobotParams(RobotParameters params) {
-        if (super.isConnected()) {
+        if (linkConnected()) {
             LOG.warning(() -> "robot " + getName()
                     + ": setRobotParams: the robot is connected; its parameters are fixed");
             return;
@@ -2406,7 +1850,7 @@ public class ArRobot extends AbstractRobot {
      * @return false, with a log line, if the file cannot be read or the robot is connected
      */
     public boolean loadParamFile(String file) {
-        if (super.isConnected()) {
+        if (linkConnected()) {
             LOG.warning(() -> "robot " + getName() + ": loadParamFile(" + file
                     + "): the robot is connected; its parameters are fixed");
             return false;
@@ -2426,23 +1870,6 @@ public class ArRobot extends AbstractRobot {
                     + ": " + e.getMessage());
             return false;
         }
-    }
-
-    /**
-     * Renames the robot before it connects, as ARIA's {@code ArRobot::setName} (ArRobot.cpp); null gives
-     * ARIA's default name ({@code robot}, {@code robot2}, ...). Once connected the world knows it by its
-     * name, so the rename is refused with a log line.
-     *
-     * @param name the new name, or null
-     */
-    public void setName(String name) {
-        if (super.isConnected()) {
-            LOG.warning(() -> "robot " + getName() + ": setName(" + name
-                    + "): the robot is connected under its name; ignoring it");
-            return;
-        }
-        // the parameters stay, and with them the limits set
-        super.relocate(name != null ? name : defaultName(), getHost(), getPort(), getParameters());
     }
 
     /**
@@ -3356,7 +2783,7 @@ public class ArRobot extends AbstractRobot {
      */
     public void stopRunning(boolean doDisconnect) {
         cycleStopped = true;
-        if (super.isConnected()) {
+        if (linkConnected()) {
             keepAlive(false);
         }
         if (doDisconnect) {
@@ -3570,5 +2997,10 @@ public class ArRobot extends AbstractRobot {
     /** @param device a board @return whether it was added with {@link #addSonar} */
     public boolean hasSonar(ArRangeDevice device) {
         return sonarBoards.containsValue(device);
+    }
+
+    @Override
+    void restartTripOdometer() {
+        resetTripOdometer();
     }
 }
