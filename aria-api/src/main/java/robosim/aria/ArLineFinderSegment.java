@@ -1,14 +1,12 @@
 package robosim.aria;
 
 /**
- * A line found in a laser scan, as ARIA's {@code ArLineFinderSegment} (ArLineFinder.h): its end
- * points, its angle and length, how many scan points it covers (first and last by number) and their
- * average distance from it. ARIA's extends {@code ArLineSegment}; RoboSim's keeps the few line calls
- * it needs here, its crossings from {@link ArLineSegment}'s: {@link #getDistToLine} is ARIA's
- * (AriaCoda's): the distance from the infinite line through the end points.
+ * A line found in a laser scan, as ARIA's {@code ArLineFinderSegment} (ArLineFinder.h): an
+ * {@link ArLineSegment}, with its angle and length, how many scan points it covers (first and last
+ * by number) and their average distance from it. {@link #getDistToLine} is ARIA's (AriaCoda's): the
+ * distance from the infinite line through the end points.
  */
-public class ArLineFinderSegment {
-    private double x1, y1, x2, y2;
+public class ArLineFinderSegment extends ArLineSegment {
     private double lineAngle;
     private double length;
     private int numPoints;
@@ -47,7 +45,8 @@ public class ArLineFinderSegment {
 
     /** @param other a segment to copy */
     public ArLineFinderSegment(ArLineFinderSegment other) {
-        newEndPoints(other.x1, other.y1, other.x2, other.y2, other.numPoints, other.startPoint, other.endPoint);
+        newEndPoints(other.getX1(), other.getY1(), other.getX2(), other.getY2(), other.numPoints, other.startPoint,
+                other.endPoint);
         aveDistFromLine = other.aveDistFromLine;
     }
 
@@ -62,46 +61,19 @@ public class ArLineFinderSegment {
      */
     public final void newEndPoints(double x1, double y1, double x2, double y2, int numPoints, int startPoint,
             int endPoint) {
-        this.x1 = x1;
-        this.y1 = y1;
-        this.x2 = x2;
-        this.y2 = y2;
-        lineAngle = Math.toDegrees(Math.atan2(y2 - y1, x2 - x1));
-        length = Math.hypot(x2 - x1, y2 - y1);
+        newEndPoints(x1, y1, x2, y2);
         this.numPoints = numPoints;
         this.startPoint = startPoint;
         this.endPoint = endPoint;
         aveDistFromLine = 0;
     }
 
-    /** @return first end's x */
-    public double getX1() {
-        return x1;
-    }
-
-    /** @return first end's y */
-    public double getY1() {
-        return y1;
-    }
-
-    /** @return second end's x */
-    public double getX2() {
-        return x2;
-    }
-
-    /** @return second end's y */
-    public double getY2() {
-        return y2;
-    }
-
-    /** @return the first end */
-    public ArPose getEndPoint1() {
-        return new ArPose(x1, y1, 0);
-    }
-
-    /** @return the second end */
-    public ArPose getEndPoint2() {
-        return new ArPose(x2, y2, 0);
+    /** Moves the ends, keeping the points covered; the angle and length follow. */
+    @Override
+    public void newEndPoints(double x1, double y1, double x2, double y2) {
+        super.newEndPoints(x1, y1, x2, y2);
+        lineAngle = Math.toDegrees(Math.atan2(y2 - y1, x2 - x1));
+        length = Math.hypot(x2 - x1, y2 - y1);
     }
 
     /** @return its direction, first end to second, degrees */
@@ -139,59 +111,20 @@ public class ArLineFinderSegment {
         return aveDistFromLine;
     }
 
-    // ---- ARIA's ArLine: a x + b y = c through the two ends ----
-
-    double a() {
-        return y1 - y2;
-    }
-
-    double b() {
-        return x2 - x1;
-    }
-
-    double c() {
-        return x2 * y1 - y2 * x1;
-    }
-
-    /**
-     * Where two infinite lines a x + b y = c cross, as ARIA 2.x's {@code ArLine::intersects}.
-     * (AriaCoda's has {@code line.getA()} for {@code line.getB()} in x, a slip of its refactoring
-     * that puts the crossing off the lines; RoboSim keeps ARIA 2.x's.)
-     *
-     * @return the point, or null if they are parallel
-     */
-    static ArPose intersection(double a1, double b1, double c1, double a2, double b2, double c2) {
-        return ArLineSegment.crossing(a1, b1, c1, a2, b2, c2);
-    }
-
     /** @return where this segment's line crosses the other's, or null if parallel */
     ArPose lineIntersection(ArLineFinderSegment other) {
-        return intersection(a(), b(), c(), other.a(), other.b(), other.c());
+        return crossing(getA(), getB(), getC(), other.getA(), other.getB(), other.getC());
     }
 
     /** @return the foot of the perpendicular from a point to this segment's line, or null */
     ArPose perpPoint(ArPose pose) {
         // ARIA's makeLinePerp: (-b, a, a y - b x)
-        return intersection(a(), b(), c(), -b(), a(), a() * pose.getY() - b() * pose.getX());
-    }
-
-    /**
-     * @param pose a point
-     * @return its distance from this segment's (infinite) line, as AriaCoda's
-     *         {@code ArLineSegment::getDistToLine}; for a segment of no length, from the nearer end
-     */
-    public double getDistToLine(ArPose pose) {
-        ArPose perp = perpPoint(pose);
-        if (perp == null) {
-            return Math.min(ArMath.roundInt(getEndPoint1().findDistanceTo(pose)),
-                    ArMath.roundInt(getEndPoint2().findDistanceTo(pose)));
-        }
-        return perp.findDistanceTo(pose);
+        return crossing(getA(), getB(), getC(), -getB(), getA(), getA() * pose.getY() - getB() * pose.getX());
     }
 
     @Override
     public String toString() {
-        return String.format("(%.0f, %.0f)-(%.0f, %.0f) %d points [%d-%d]", x1, y1, x2, y2, numPoints, startPoint,
-                endPoint);
+        return String.format("(%.0f, %.0f)-(%.0f, %.0f) %d points [%d-%d]", getX1(), getY1(), getX2(), getY2(),
+                numPoints, startPoint, endPoint);
     }
 }

@@ -8,7 +8,7 @@ import java.util.Locale;
  * b = x2 − x1, c = x2·y1 − y2·x1). A map's lines ({@link ArMap#getLines()}) and a forbidden area's
  * sides ({@link ArMapObject#getFromToSegments()}) are segments. Distances in mm.
  */
-public final class ArLineSegment implements Comparable<ArLineSegment> {
+public class ArLineSegment implements Comparable<ArLineSegment> {
     /** Below this, ARIA's {@code ArLine::intersects} takes two lines for parallel. */
     private static final double PARALLEL = 1e-13;
 
