@@ -41,7 +41,7 @@ class AriaSimulatedLaserPacketsTest {
         LaserScan laser = new LaserScan();
         List<Command> requests = new ArrayList<>();
         CommandHandler h = new CommandHandler("r1", P3DX, SipBuilderTest.P3DX, laser, new OdometryFrame(),
-                new RecordingEffects(requests));
+                new RecordingEffects(requests, new ArrayList<>()));
         h.handle(Commands.comInt(36, -90));
         h.handle(Commands.comInt(37, 90));
         h.handle(Commands.comInt(38, 100));
@@ -74,41 +74,5 @@ class AriaSimulatedLaserPacketsTest {
 
     private static int u16(byte[] d, int at) {
         return (d[at] & 0xff) | (d[at + 1] & 0xff) << 8;
-    }
-
-    /** Effects that keep the requests and ignore the rest. */
-    private record RecordingEffects(List<Command> requests) implements CommandHandler.Effects {
-        @Override
-        public void request(Command c) {
-            requests.add(c);
-        }
-
-        @Override
-        public void reply(PioneerPacket p) {
-        }
-
-        @Override
-        public void resetOdometry() {
-        }
-
-        @Override
-        public void resetToStart() {
-        }
-
-        @Override
-        public void simStat(int mode) {
-        }
-
-        @Override
-        public void close(String reason) {
-        }
-
-        @Override
-        public void simExit(int code) {
-        }
-
-        @Override
-        public void log(String kind, java.util.function.Supplier<String> line) {
-        }
     }
 }

@@ -9,7 +9,6 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.pioneer.Commands;
 import robosim.pioneer.GripperPacket;
-import robosim.pioneer.PioneerPacket;
 import robosim.protocol.Command;
 import robosim.protocol.GripperState;
 import robosim.protocol.RobotParameters;
@@ -29,41 +28,7 @@ class CommandHandlerGripperTest {
 
     private CommandHandler handler(RobotParameters params) {
         return new CommandHandler("r1", params, SipBuilderTest.P3DX, laser, new OdometryFrame(),
-                new CommandHandler.Effects() {
-                    @Override
-                    public void request(Command c) {
-                        requests.add(c);
-                    }
-
-                    @Override
-                    public void reply(PioneerPacket p) {
-                    }
-
-                    @Override
-                    public void resetOdometry() {
-                    }
-
-                    @Override
-                    public void resetToStart() {
-                    }
-
-                    @Override
-                    public void simStat(int mode) {
-                    }
-
-                    @Override
-                    public void close(String reason) {
-                    }
-
-                    @Override
-                    public void simExit(int code) {
-                    }
-
-                    @Override
-                    public void log(String kind, java.util.function.Supplier<String> line) {
-                        log.add(line.get());
-                    }
-                });
+                new RecordingEffects(requests, log));
     }
 
     private static RobotState withGripper(int switches) {
