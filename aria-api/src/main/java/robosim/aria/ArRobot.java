@@ -73,6 +73,7 @@ public class ArRobot extends ArRobotMotion {
      */
     public ArRobot(String name, String host, int port, String paramFile) {
         this(name, host, port, RobotParameterFiles.load(paramFile));
+        parametersFrom(paramFile);
         this.bumpers = RobotParameterFiles.bumpers(paramFile);
         this.sonarCycleMs = RobotParameterFiles.sonarCycle(paramFile);
         this.wheelEncoders = new WheelEncoders(RobotParameterFiles.conversionFactors(paramFile).distConvFactor());

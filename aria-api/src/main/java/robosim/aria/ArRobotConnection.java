@@ -8,6 +8,7 @@ import robosim.hw.HardwareOptions;
 import robosim.hw.RobotRuntime;
 import robosim.hw.RunEnd;
 import robosim.hw.RuntimeChoices;
+import robosim.params.RobotParameterFiles;
 import robosim.protocol.Command;
 import robosim.protocol.RobotKind;
 import robosim.protocol.RobotParameters;
@@ -32,6 +33,8 @@ abstract class ArRobotConnection extends AbstractRobot {
     volatile int sonarCycleMs;
     /** Whether an ARIA connector connects the robot, which then logs ARIA's connection lines. */
     private volatile boolean ariaConnectionLines;
+    /** The parameter file the robot's parameters came from, for ARIA's connection lines; null if none. */
+    private volatile String parameterFile;
 
     /** Robots made without a name, for ARIA's default names: robot, robot2, robot3, ... */
     private static final AtomicInteger UNNAMED = new AtomicInteger();
@@ -297,6 +300,14 @@ abstract class ArRobotConnection extends AbstractRobot {
     }
 
     /**
+     * @param file the parameter file the robot's parameters were read from: a shipped name (ARIA's
+     *             default parameters for the type) or a path; null when they were given as a record
+     */
+    void parametersFrom(String file) {
+        parameterFile = file;
+    }
+
+    /**
      * ARIA's lines once the robot's server has answered ({@code ArRobot::asyncConnectHandler} and
      * {@code processParamFile}, ArRobot.cpp): who the robot is, from its parameters.
      */
@@ -305,6 +316,13 @@ abstract class ArRobotConnection extends AbstractRobot {
         ArLog.log(ArLog.Normal, "Name: %s", getRobotName());
         ArLog.log(ArLog.Normal, "Type: %s", getRobotType());
         ArLog.log(ArLog.Normal, "Subtype: %s", getRobotSubType());
+        String file = parameterFile;
+        if (file != null && RobotParameterFiles.shippedNames().contains(file)) {
+            // a shipped file is RoboSim's own parameters for the type, as ARIA's built-in defaults
+            ArLog.log(ArLog.Normal, "Using default parameters for a %s robot", getRobotSubType());
+        } else if (file != null) {
+            ArLog.log(ArLog.Normal, "Loaded robot parameters from %s", file);
+        }
         ArLog.log(ArLog.Normal, "Robot Serial Number: %s", getRobotSerialNumber());
     }
 

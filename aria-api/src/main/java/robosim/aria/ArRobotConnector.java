@@ -222,6 +222,11 @@ public class ArRobotConnector {
             }
             return false;
         }
+        if (remoteHost != null) {
+            ArLog.log(ArLog.Normal, "Connected to remote host %s through tcp.\n", remoteHost);
+        } else {
+            ArLog.log(ArLog.Normal, "Connecting to simulator through tcp.\n");
+        }
         which.usePioneerServer(which.getName(), host, remoteRobotTcpPort);
         usingSim = remoteHost == null || (remoteIsSim && !remoteIsNotSim);
         return true;

@@ -95,6 +95,7 @@ abstract class ArRobotDevices extends ArRobotCycle {
             return;
         }
         relocate(getName(), getHost(), getPort(), params);
+        parametersFrom(null);
     }
 
     /**
@@ -116,6 +117,7 @@ abstract class ArRobotDevices extends ArRobotCycle {
             int cycle = RobotParameterFiles.sonarCycle(file);
             ConversionFactors f = RobotParameterFiles.conversionFactors(file);
             relocate(getName(), getHost(), getPort(), p);
+            parametersFrom(file);
             bumpers = b;
             sonarCycleMs = cycle;
             wheelEncoders = new WheelEncoders(f.distConvFactor());

@@ -120,7 +120,9 @@ class AriaExamplesMoreTest {
             // may each come a loop late, and that loop prints the pose before again
             assertTrue(poses.get(0).startsWith("singleThreadExample: Pose=(0.00,0.00,0.00), Trans.  Vel=0.00"), ran.out());
             assertTrue(poses.stream().distinct().count() >= poses.size() - 2, "a new state each loop: " + ran.out());
-            assertTrue(poses.size() >= 20 && poses.size() <= 30, "a loop a SIP: " + poses.size());
+            // 30 steps, each a SIP, and the SIP the connection starts with; a loop the pacing makes
+            // late may see one more
+            assertTrue(poses.size() >= 20 && poses.size() <= 32, "a loop a SIP: " + poses.size());
         }
     }
 

@@ -123,6 +123,7 @@ class AriaExamplesTest {
                     "-rrtp", String.valueOf(run.ports.portOf("r1")))).get(90, TimeUnit.SECONDS);
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(ran.out().contains("Connnecting to robot using TCP connection to 127.0.0.1:"), ran.out());
+            assertTrue(ran.out().contains("Connected to remote host 127.0.0.1 through tcp.\n\n"), ran.out());
             // a Pioneer server's odometry starts where the robot does, as a real Pioneer's
             assertTrue(ran.out().contains("simpleConnect: Pose=(0.00,0.00,0.00), Trans.  Vel=0.00"), ran.out());
             assertTrue(ran.out().contains("simpleConnect: Exiting."), ran.out());
@@ -284,6 +285,7 @@ class AriaExamplesTest {
                     String.valueOf(run.ports.portOf("r2")))).get(90, TimeUnit.SECONDS);
             assertEquals(0, ran.exit(), ran.out());
             assertTrue(ran.out().contains("Connecting to second robot at 127.0.0.1:"), ran.out());
+            assertTrue(!ran.out().contains("through tcp"), "its own connections, not the connector's: " + ran.out());
             // each robot's own connection logs ARIA's lines, with the name the Pioneer server gives it
             assertTrue(ran.out().contains("Connected to robot.\nName: r1\nType: Pioneer\nSubtype: p3dx\n"), ran.out());
             assertTrue(ran.out().contains("Connected to robot.\nName: r2\n"), ran.out());
@@ -315,6 +317,7 @@ class AriaExamplesTest {
             assertTrue(ran.out().startsWith("Connecting robot r1 to the RoboSim Environment at 127.0.0.1:"), ran.out());
             // ARIA's lines as it connects and disconnects, as the C++ prints them over a Pioneer port
             assertTrue(ran.out().contains("Connected to robot.\nName: r1\nType: Pioneer\nSubtype: p3dx\n"
+                    + "Using default parameters for a p3dx robot\n"
                     + "Robot Serial Number: SIM\nConnHandler: Connected. Turning off sonar,\n"
                     + "ArRobotConnector: Connected to simulator, not connecting to additional hardware components.\n"
                     + "robotConnectionCallbacks: Connected.\nSleeping for 10 seconds...\n...requesting that the robot"
