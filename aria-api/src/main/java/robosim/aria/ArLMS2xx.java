@@ -289,7 +289,8 @@ public class ArLMS2xx extends ArLaser {
         setRawReadings(readings);
         if (scan.length > 0) {
             replaceCurrent(hits, pose, s.timeMs());
-            cumulativeRules.take(cumulativeBuffer(), readings, max, getMinDistBetweenCumulative(), pose, s.timeMs());
+            cumulativeRules.take(cumulativeBuffer(), readings, max, getMaxInsertDistCumulative(),
+                    getMinDistBetweenCumulative(), pose, s.timeMs());
         }
     }
 }

@@ -110,6 +110,7 @@ public abstract class ArLaser extends ArRangeDevice {
         this.absoluteMaxRange = maxRange;
         // ARIA's lasers keep current readings until the next scan replaces them
         setMaxSecondsToKeepCurrent(0);
+        setMaxInsertDistCumulative(LaserCumulative.DEFAULT_MAX_INSERT_DIST);
     }
 
     // ---- connection ----
@@ -313,16 +314,6 @@ public abstract class ArLaser extends ArRangeDevice {
     /** Counts the clean interval from the next scan (plus the offset), as ARIA's counts it from now. */
     public synchronized void resetLastCumulativeCleanTime() {
         cumulativeRules.restartCleanInterval();
-    }
-
-    /** @return how far from the laser a reading may be to enter the cumulative buffer, mm; 1 or less: any */
-    public synchronized double getMaxInsertDistCumulative() {
-        return cumulativeRules.maxInsertDist;
-    }
-
-    /** @param mm how far from the laser a reading may be to enter the cumulative buffer; 1 or less: any */
-    public synchronized void setMaxInsertDistCumulative(double mm) {
-        cumulativeRules.maxInsertDist = mm;
     }
 
     // ---- ports (a simulated laser has none) ----

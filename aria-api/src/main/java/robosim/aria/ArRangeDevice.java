@@ -483,7 +483,8 @@ public class ArRangeDevice {
     /**
      * @return ARIA's {@code getMaxInsertDistCumulative}: a reading farther than this from the robot
      *         goes into the current buffer only, not the cumulative one (for a device with a robot);
-     *         0 (ARIA's default): off
+     *         0 (ARIA's default): off. A laser measures it from the laser, 3000 mm by default, and
+     *         takes 1 or less for off
      */
     public synchronized double getMaxInsertDistCumulative() {
         return maxInsertDistCumulative;

@@ -24,7 +24,6 @@ final class LaserCumulative {
     /** ARIA's fixed margin: readings this close to a beam's end are never cleared by it, mm. */
     static final double CLEAN_KEEP_NEAR_END = 50;
 
-    double maxInsertDist = DEFAULT_MAX_INSERT_DIST;
     double cleanDist = DEFAULT_CLEAN_DIST;
     long cleanIntervalMs = DEFAULT_CLEAN_INTERVAL_MS;
     private Long lastCleanMs;
@@ -37,12 +36,13 @@ final class LaserCumulative {
      * @param cumulative the buffer
      * @param scan       the scan's readings, global positions set
      * @param maxRange   readings at or beyond it hit nothing, mm
+     * @param maxInsertDist how far from the laser a reading may be to go in, mm (1 or less: any)
      * @param minDist    the device's minimum distance between cumulative readings, mm (0 or less: none)
      * @param robot      the robot's pose when the scan was taken
      * @param timeMs     the scan's simulated time
      */
-    void take(ArRangeBuffer cumulative, List<ArSensorReading> scan, double maxRange, double minDist,
-              ArPose robot, long timeMs) {
+    void take(ArRangeBuffer cumulative, List<ArSensorReading> scan, double maxRange, double maxInsertDist,
+              double minDist, ArPose robot, long timeMs) {
         if (cumulative.getSize() == 0 || scan.isEmpty()) {
             return;
         }
