@@ -89,11 +89,6 @@ public class ArThread {
         }
     }
 
-    /** The thread's body: what {@link #create} runs; an {@link ArASyncTask}'s is its {@code runThread}. */
-    Runnable getFunc() {
-        return func;
-    }
-
     /** Asks the thread to stop: clears the running flag it polls. */
     public void stopRunning() {
         running = false;

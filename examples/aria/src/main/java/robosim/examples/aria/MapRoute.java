@@ -85,11 +85,17 @@ final class MapRoute {
         if (cells == null) {
             return null;
         }
+        // nearBefore[i]: the path's cells within the clearance before its i-th
+        int[] nearBefore = new int[cells.length + 1];
+        for (int i = 0; i < cells.length; i++) {
+            nearBefore[i + 1] = nearBefore[i] + (grid[cells[i]] == NEAR ? 1 : 0);
+        }
         List<ArPose> route = new ArrayList<>();
         int at = 0;
         while (at < cells.length - 1) {
             int next = at + 1;
-            while (next + 1 < cells.length && clear(cells, at, next + 1)) {
+            while (next + 1 < cells.length
+                    && clear(cells[at], cells[next + 1], nearBefore[next + 2] - nearBefore[at])) {
                 next++;
             }
             if (next < cells.length - 1) {
@@ -159,15 +165,11 @@ final class MapRoute {
 
     /**
      * Whether the straight leg between two cells of the path is as clear as the path between them:
-     * it meets nothing, and no more cells within the clearance than the path does.
+     * it meets nothing, and crosses no more cells within the clearance than the path does.
      */
-    private boolean clear(int[] cells, int from, int to) {
-        int nearOnPath = 0;
-        for (int i = from; i <= to; i++) {
-            nearOnPath += grid[cells[i]] == NEAR ? 1 : 0;
-        }
+    private boolean clear(int from, int to, int nearOnPath) {
         int[] near = {0};
-        boolean open = walk(cells[from] % width, cells[from] / width, cells[to] % width, cells[to] / width, c -> {
+        boolean open = walk(from % width, from / width, to % width, to / width, c -> {
             near[0] += grid[c] == NEAR ? 1 : 0;
             return grid[c] != BLOCKED;
         });
